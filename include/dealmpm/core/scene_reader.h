@@ -1,0 +1,111 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <string>
+#include <vector>
+
+namespace dealmpm
+{
+  using namespace dealii;
+
+  /**
+   * Reads typed, range-checked values out of a parsed ParameterHandler. Every
+   * failure becomes an InputError of one line naming the scene file, the full
+   * entry path and what was expected, so that bad input never gets past
+   * set-up.
+   */
+  class SceneReader
+  {
+  public:
+    SceneReader(ParameterHandler &prm, const std::string &file_name);
+
+    /** Enter a subsection; pair with leave(). */
+    void
+    enter(const std::string &section);
+    void
+    leave();
+
+    std::string
+    get(const std::string &entry) const;
+    bool
+    get_bool(const std::string &entry) const;
+    double
+    get_double(const std::string &entry) const;
+    double
+    get_positive(const std::string &entry) const;
+    double
+    get_nonnegative(const std::string &entry) const;
+    /** A value in the open interval (lower, upper). */
+    double
+    get_in_open_range(const std::string &entry,
+                      const double       lower,
+                      const double       upper) const;
+    long
+    get_integer(const std::string &entry) const;
+    std::vector<double>
+    get_doubles(const std::string &entry) const;
+
+    /** Exactly dim comma-separated numbers. */
+    template <int dim>
+    Point<dim>
+    get_point(const std::string &entry) const;
+
+    template <int dim>
+    Tensor<1, dim>
+    get_vector(const std::string &entry) const
+    {
+      return get_point<dim>(entry);
+    }
+
+    /** Throw an InputError about this entry. */
+    [[noreturn]] void
+    fail(const std::string &entry, const std::string &expected) const;
+
+    const std::string &
+    file_name() const
+    {
+      return file;
+    }
+
+    ParameterHandler &
+    handler() const
+    {
+      return prm;
+    }
+
+    /** "Section/Subsection/entry" for messages. */
+    std::string
+    path_of(const std::string &entry) const;
+
+  private:
+    ParameterHandler &       prm;
+    std::string              file;
+    std::vector<std::string> sections;
+  };
+
+  /** RAII guard for SceneReader::enter/leave. */
+  class SectionScope
+  {
+  public:
+    SectionScope(SceneReader &reader, const std::string &section)
+      : reader(reader)
+    {
+      reader.enter(section);
+    }
+    ~SectionScope()
+    {
+      reader.leave();
+    }
+
+  private:
+    SceneReader &reader;
+  };
+
+  /** "x, y" or "x, y, z" with dim entries, for default values. */
+  template <int dim>
+  std::string
+  repeat_value(const std::string &value);
+} // namespace dealmpm

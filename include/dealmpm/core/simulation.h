@@ -1,0 +1,186 @@
+#pragma once
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+
+#include <dealmpm/core/statistics.h>
+#include <dealmpm/effects/effect.h>
+#include <dealmpm/grid/background_grid.h>
+#include <dealmpm/grid/boundary_conditions.h>
+#include <dealmpm/grid/nodal_fields.h>
+#include <dealmpm/io/particle_output.h>
+#include <dealmpm/materials/material.h>
+#include <dealmpm/particles/body.h>
+#include <dealmpm/particles/particle_set.h>
+#include <dealmpm/transfer/stencil.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace dealmpm
+{
+  /** The size of a scene, read before everything else is declared. */
+  struct SceneShape
+  {
+    unsigned int dim         = 2;
+    unsigned int n_bodies    = 1;
+    unsigned int n_materials = 1;
+  };
+
+  /** Time stepping, transfer and output settings of a run. */
+  struct RunSettings
+  {
+    double       end_time      = 1;
+    bool         cfl_time_step = true;
+    double       fixed_time_step = 1e-3;
+    double       cfl_number    = 0.5;
+    unsigned int max_steps     = 0; ///< 0: no limit
+    double       flip_fraction = 1; ///< 1 FLIP, 0 PIC
+    double       relative_mass_threshold = 1e-9;
+    bool         stop_when_particles_leave = false;
+
+    std::string  output_directory = "output";
+    double       output_interval  = 0.1;
+    bool         write_particles  = true;
+    bool         write_grid       = false;
+    bool         write_particle_csv = false;
+    double       progress_interval  = 5;
+    bool         verbose            = true;
+  };
+
+  /**
+   * One MPM run: owns the grid, particles, materials and effects and runs
+   * the explicit USL loop with output. Construction reads and checks every
+   * parameter and builds the initial state; it throws InputError and writes
+   * nothing on bad input.
+   */
+  template <int dim>
+  class Simulation
+  {
+  public:
+    /** Declare every entry of a scene of this shape. */
+    static void
+    declare_parameters(ParameterHandler &prm, const SceneShape &shape);
+
+    Simulation(ParameterHandler &prm,
+               const std::string &scene_file,
+               const SceneShape & shape,
+               const MPI_Comm     comm);
+
+    /** The whole run: output at t = 0, every interval and at the end, a
+     * progress line, the timing table. */
+    void
+    run();
+
+    /** One USL step of size dt. */
+    void
+    advance(const double dt);
+
+    /** The CFL time step of the current state (or the fixed one). */
+    double
+    time_step() const;
+
+    Statistics
+    statistics() const;
+
+    double
+    time() const
+    {
+      return current_time;
+    }
+    unsigned int
+    step_number() const
+    {
+      return step;
+    }
+    const RunSettings &
+    settings() const
+    {
+      return run_settings;
+    }
+    ParticleSet<dim> &
+    particle_set()
+    {
+      return *particles;
+    }
+    const BackgroundGrid<dim> &
+    background_grid() const
+    {
+      return grid;
+    }
+    const NodalFields<dim> &
+    nodal_fields() const
+    {
+      return fields;
+    }
+    /** Particles removed because they left the grid (all ranks). */
+    double
+    n_lost_particles() const
+    {
+      return lost_particles;
+    }
+    TimerOutput &
+    timer()
+    {
+      return computing_timer;
+    }
+
+  private:
+    void
+    read_run_settings(SceneReader &reader);
+    void
+    read_materials(SceneReader &reader, const SceneShape &shape);
+    void
+    read_effects(SceneReader &reader);
+    void
+    create_particles(SceneReader &reader, const SceneShape &shape);
+    void
+    relocate_particles();
+    void
+    write_output();
+
+    MPI_Comm            comm;
+    ConditionalOStream  pcout;
+    std::string         scene_file;
+    RunSettings         run_settings;
+    BackgroundGrid<dim> grid;
+    BoundaryConditions<dim> boundary_conditions;
+    std::vector<std::unique_ptr<Material<dim>>> materials;
+    std::vector<std::string>                   material_models;
+    std::vector<std::unique_ptr<Effect<dim>>>  effects;
+    std::vector<std::string>                   effect_names;
+    std::vector<Body<dim>>                     bodies;
+    std::unique_ptr<ParticleSet<dim>>          particles;
+    NodalFields<dim>                           fields;
+    Stencil<dim>                               stencil;
+    std::vector<Tensor<2, dim>>                velocity_gradient;
+    double                                     mass_threshold = 0;
+    mutable TimerOutput                        computing_timer;
+
+    double       current_time = 0;
+    unsigned int step         = 0;
+    double       max_signal_rate = 0; ///< of the last stress update
+    double       lost_particles  = 0;
+    std::vector<std::pair<types::particle_index, Point<dim>>> lost_this_step;
+
+    unsigned int output_counter = 0;
+    std::string  last_output;
+    ParticleOutput<dim> particle_output;
+    PvdSeries    particle_series, grid_series;
+  };
+
+  /** Read Dimension, Number of bodies and Number of materials (pass one of
+   * two over the scene file, overrides applied). */
+  SceneShape
+  read_scene_shape(const std::string &file, const std::vector<std::string> &overrides);
+
+  /** Apply "Section/Entry=value" overrides; throws InputError. */
+  void
+  apply_overrides(ParameterHandler &prm, const std::vector<std::string> &overrides);
+
+  /** The dealmpm program (argument parsing, both passes, the run, error
+   * reporting); examples call it after registering their own models. */
+  int
+  run_program(int argc, char **argv);
+} // namespace dealmpm

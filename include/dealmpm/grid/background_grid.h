@@ -1,0 +1,108 @@
+#pragma once
+
+#include <deal.II/base/bounding_box.h>
+#include <deal.II/base/partitioner.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/affine_constraints.h>
+
+#include <dealmpm/core/scene_reader.h>
+
+#include <array>
+#include <memory>
+#include <vector>
+
+namespace dealmpm
+{
+  using namespace dealii;
+
+  /**
+   * What the per-step kernels need of one locally owned cell, computed once
+   * per mesh: its vertices, the inverse Jacobian when the cell is affine, its
+   * size for the CFL limit, and its "effective nodes": the vertex DoFs with
+   * hanging nodes replaced by their masters, so that every kernel sees
+   * continuous shape functions that sum to one without special cases.
+   */
+  template <int dim>
+  struct GridCell
+  {
+    static constexpr unsigned int n_vertices = 1u << dim;
+
+    typename Triangulation<dim>::active_cell_iterator cell;
+    std::array<Point<dim>, n_vertices>                vertices;
+    bool                                              affine = true;
+    /** d(xi)/dx of the map from the unit cell; exact for affine cells. */
+    Tensor<2, dim> inverse_jacobian;
+    double         h       = 0; ///< shortest edge
+    double         measure = 0;
+
+    unsigned int first_node = 0; ///< into BackgroundGrid::cell_nodes
+    unsigned int n_nodes    = 0;
+    /** Into BackgroundGrid::cell_node_weights (n_nodes x n_vertices), or
+     * numbers::invalid_unsigned_int when no vertex is constrained (then the
+     * effective nodes are the vertices, in order). */
+    unsigned int first_weight = numbers::invalid_unsigned_int;
+
+    /** Position of unit-cell point xi (the Q1 map). */
+    Point<dim>
+    real_point(const Point<dim> &xi) const;
+
+    /** Unit-cell coordinates of x: exact for affine cells, Newton's method
+     * on the Q1 map otherwise. May lie outside [0,1]^dim. */
+    Point<dim>
+    reference_point(const Point<dim> &x) const;
+
+    /** d(xi)/dx at xi (the inverse Jacobian of the Q1 map). */
+    Tensor<2, dim>
+    inverse_jacobian_at(const Point<dim> &xi) const;
+  };
+
+  /**
+   * The background grid: a distributed triangulation (a subdivided rectangle
+   * or a Gmsh mesh, optionally refined), FE_Q(1) nodes, hanging-node
+   * constraints, the layout of nodal vectors, and the per-cell data of the
+   * locally owned cells.
+   */
+  template <int dim>
+  class BackgroundGrid
+  {
+  public:
+    explicit BackgroundGrid(const MPI_Comm comm);
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /** Read the "Grid" section, build and refine the mesh, set up nodes.
+     * The reader must be at the top level. */
+    void
+    create(SceneReader &reader);
+
+    /** (Re)build DoFs, constraints and the cell data after mesh changes. */
+    void
+    setup();
+
+    MPI_Comm                                  comm;
+    parallel::distributed::Triangulation<dim> triangulation;
+    FE_Q<dim>                                 fe;
+    DoFHandler<dim>                           dof_handler;
+    AffineConstraints<double>                 hanging_node_constraints;
+    std::shared_ptr<const Utilities::MPI::Partitioner> partitioner;
+    /** MappingCartesian when every cell is an axis-aligned box (the particle
+     * sort is about 2.5x cheaper), MappingQ1 otherwise. */
+    std::unique_ptr<Mapping<dim>> mapping;
+    bool                          cartesian = true;
+    BoundingBox<dim>              bounding_box;
+
+    /** Locally owned active cells, in the order every kernel visits them. */
+    std::vector<GridCell<dim>> cells;
+    /** Local (owned + ghost) indices of the effective nodes of all cells. */
+    std::vector<unsigned int> cell_nodes;
+    std::vector<double>       cell_node_weights;
+
+  private:
+    void
+    refine_box(SceneReader &reader);
+  };
+} // namespace dealmpm

@@ -1,0 +1,61 @@
+#pragma once
+
+#include <deal.II/base/tensor.h>
+
+#include <dealmpm/grid/background_grid.h>
+#include <dealmpm/grid/nodal_fields.h>
+
+#include <map>
+#include <vector>
+
+namespace dealmpm
+{
+  enum class BoundaryKind
+  {
+    free,
+    no_slip, ///< all velocity components zero
+    slip     ///< normal velocity zero, tangential free
+  };
+
+  /**
+   * Velocity conditions on grid nodes by boundary id, applied to the nodal
+   * velocity v* of each step. A node on two slip faces at a corner loses both
+   * normal components; a node on any no-slip face is fixed.
+   */
+  template <int dim>
+  class BoundaryConditions
+  {
+  public:
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /** Read "Grid/Boundary conditions". */
+    static std::map<types::boundary_id, BoundaryKind>
+    read(SceneReader &reader);
+
+    void
+    setup(const BackgroundGrid<dim> &                        grid,
+          const std::map<types::boundary_id, BoundaryKind> &kinds);
+
+    /** Project v* of the constrained locally owned nodes, and change the
+     * velocity increment v* - v by the same amount. */
+    void
+    apply(std::array<NodalVector, dim> &velocity,
+          std::array<NodalVector, dim> &velocity_increment) const;
+
+    std::size_t
+    n_constrained_nodes() const
+    {
+      return nodes.size();
+    }
+
+  private:
+    struct Node
+    {
+      unsigned int                       local_index;
+      unsigned int                       n_normals = 0;
+      std::array<Tensor<1, dim>, dim>    normals; ///< orthonormal
+    };
+    std::vector<Node> nodes;
+  };
+} // namespace dealmpm

@@ -1,0 +1,21 @@
+#pragma once
+
+#include <dealmpm/grid/boundary_conditions.h>
+#include <dealmpm/grid/nodal_fields.h>
+
+namespace dealmpm
+{
+  /**
+   * The explicit grid update on the locally owned nodes: on active nodes
+   * (mass above @p mass_threshold) v = p / m and v* = v + dt f / m; boundary
+   * conditions act on v*; the increment v* - v is stored so that FLIP stays
+   * consistent with the constrained velocity. Inactive nodes get zero. Ghost
+   * values are updated for G2P.
+   */
+  template <int dim>
+  void
+  update_nodal_velocity(NodalFields<dim> &              fields,
+                        const double                    dt,
+                        const double                    mass_threshold,
+                        const BoundaryConditions<dim> &boundary_conditions);
+} // namespace dealmpm

@@ -1,0 +1,43 @@
+#pragma once
+
+#include <deal.II/lac/la_parallel_vector.h>
+
+#include <array>
+
+namespace dealmpm
+{
+  using namespace dealii;
+
+  using NodalVector = LinearAlgebra::distributed::Vector<double>;
+
+  /**
+   * The grid state of one step, one distributed vector per scalar field over
+   * the FE_Q(1) nodes (owned + ghost entries). P2G adds into mass, momentum
+   * and force, compress() sums across ranks; the grid update turns them into
+   * the end-of-step velocity v* and the velocity increment v* - v that G2P
+   * reads. Hanging nodes never receive anything (the kernels only see
+   * effective nodes).
+   */
+  template <int dim>
+  struct NodalFields
+  {
+    NodalVector                  mass;
+    std::array<NodalVector, dim> momentum;
+    std::array<NodalVector, dim> force;
+    std::array<NodalVector, dim> velocity;           ///< v* after the update
+    std::array<NodalVector, dim> velocity_increment; ///< v* - v
+
+    void
+    reinit(const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner)
+    {
+      mass.reinit(partitioner);
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          momentum[d].reinit(partitioner);
+          force[d].reinit(partitioner);
+          velocity[d].reinit(partitioner);
+          velocity_increment[d].reinit(partitioner);
+        }
+    }
+  };
+} // namespace dealmpm

@@ -1,0 +1,95 @@
+#pragma once
+
+#include <deal.II/base/array_view.h>
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
+
+#include <dealmpm/core/registry.h>
+#include <dealmpm/particles/property_layout.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace dealmpm
+{
+  using namespace dealii;
+
+  /**
+   * A constitutive model: advances the Cauchy stress of one material point
+   * over a step, gives the wave speed for the CFL limit and the stored energy
+   * for the statistics. Models that need history (plastic strain, damage)
+   * list their internal variables; the particle property layout grows by
+   * them only when the model is used in a scene. In 2D the state is plane
+   * strain.
+   */
+  template <int dim>
+  class Material
+  {
+  public:
+    virtual ~Material() = default;
+
+    /** Per-particle internal variables, named for output. */
+    virtual std::vector<FieldDescription>
+    internal_variables() const
+    {
+      return {};
+    }
+
+    /** Initial values of the internal variables. */
+    virtual void
+    initialize_internal_variables(ArrayView<double> /*internal*/) const
+    {}
+
+    /**
+     * Advance the stress over dt. L is the velocity gradient of the step, F
+     * the already updated deformation gradient.
+     */
+    virtual void
+    update_stress(const Tensor<2, dim> &    L,
+                  const Tensor<2, dim> &    F,
+                  const double              dt,
+                  SymmetricTensor<2, dim> & stress,
+                  ArrayView<double>         internal) const = 0;
+
+    /** Dilatational (P-)wave speed at the current state. */
+    virtual double
+    wave_speed(const Tensor<2, dim> &F) const = 0;
+
+    /** Stored energy per unit reference volume. */
+    virtual double
+    strain_energy_density(const Tensor<2, dim> &         F,
+                          const SymmetricTensor<2, dim> &stress,
+                          ArrayView<const double>        internal) const = 0;
+
+    /** Reference mass density, set from the scene's material section. */
+    double density = 0;
+  };
+
+  /**
+   * The table of material models. Built-in models are registered on first
+   * use; user code adds its own with material_registry<dim>().add(...).
+   * Each model reads its parameters from a subsection named after it inside
+   * the scene's "Material N" section.
+   */
+  template <int dim>
+  Registry<Material<dim>> &
+  material_registry();
+
+  /** Lame constants from Young's modulus and Poisson's ratio. */
+  struct LameParameters
+  {
+    double lambda;
+    double mu;
+  };
+
+  /** Declare "Young's modulus" and "Poisson's ratio" in the current section. */
+  void
+  declare_elastic_constants(ParameterHandler &prm,
+                            const double      youngs_modulus,
+                            const double      poissons_ratio);
+
+  /** Read and check (E > 0, -1 < nu < 0.5) the entries declared above. */
+  LameParameters
+  read_elastic_constants(SceneReader &reader);
+} // namespace dealmpm

@@ -1,0 +1,38 @@
+#pragma once
+
+#include <dealmpm/materials/material.h>
+
+namespace dealmpm
+{
+  /**
+   * Compressible neo-Hookean solid (the model of the manufactured solutions):
+   * sigma = mu / J (B - I) + lambda ln(J) / J I, stored energy
+   * W = mu / 2 (tr C - 3) - mu ln J + lambda / 2 (ln J)^2. Parameters:
+   * Young's modulus and Poisson's ratio (small-strain values).
+   */
+  template <int dim>
+  class NeoHookean : public Material<dim>
+  {
+  public:
+    explicit NeoHookean(const LameParameters &lame);
+
+    void
+    update_stress(const Tensor<2, dim> &   L,
+                  const Tensor<2, dim> &   F,
+                  const double             dt,
+                  SymmetricTensor<2, dim> &stress,
+                  ArrayView<double>        internal) const override;
+
+    /** From the tangent moduli at the current J: stiffer in compression. */
+    double
+    wave_speed(const Tensor<2, dim> &F) const override;
+
+    double
+    strain_energy_density(const Tensor<2, dim> &         F,
+                          const SymmetricTensor<2, dim> &stress,
+                          ArrayView<const double>        internal) const override;
+
+  private:
+    LameParameters lame;
+  };
+} // namespace dealmpm

@@ -1,0 +1,111 @@
+#pragma once
+
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/particles/particle_handler.h>
+
+#include <dealmpm/particles/property_layout.h>
+
+#include <memory>
+#include <vector>
+
+namespace dealmpm
+{
+  using namespace dealii;
+
+  /** Offsets of the fields every particle has. */
+  struct CoreFields
+  {
+    unsigned int mass;
+    unsigned int initial_volume;
+    unsigned int velocity;
+    unsigned int displacement;
+    unsigned int deformation_gradient; ///< dim x dim, row-major
+    unsigned int stress;               ///< symmetric, deal.II's unrolled order
+    unsigned int body;
+    unsigned int material;
+  };
+
+  /**
+   * The material points: deal.II's ParticleHandler (positions, cells, ids,
+   * MPI ownership) with a property layout of core fields and the internal
+   * variables of the material models in use.
+   */
+  template <int dim>
+  class ParticleSet
+  {
+  public:
+    /**
+     * @p internal_variables: per material index, the model's internal
+     * variables; models that share a name share storage.
+     */
+    ParticleSet(const Triangulation<dim> &                          tria,
+                const Mapping<dim> &                                mapping,
+                const std::vector<std::string> &                    model_names,
+                const std::vector<std::vector<FieldDescription>> &internal_variables);
+
+    PropertyLayout                   layout;
+    CoreFields                       fields;
+    /** Offset of each material's internal variables (per material index). */
+    std::vector<unsigned int>        internal_offset;
+    std::vector<unsigned int>        n_internal;
+    Particles::ParticleHandler<dim>  handler;
+  };
+
+  /** Read and write small tensors from a particle's property array. */
+  template <int dim>
+  inline Tensor<1, dim>
+  read_vector(const double *p)
+  {
+    Tensor<1, dim> t;
+    for (unsigned int d = 0; d < dim; ++d)
+      t[d] = p[d];
+    return t;
+  }
+
+  template <int dim>
+  inline void
+  write_vector(double *p, const Tensor<1, dim> &t)
+  {
+    for (unsigned int d = 0; d < dim; ++d)
+      p[d] = t[d];
+  }
+
+  template <int dim>
+  inline Tensor<2, dim>
+  read_tensor(const double *p)
+  {
+    Tensor<2, dim> t;
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = 0; j < dim; ++j)
+        t[i][j] = p[i * dim + j];
+    return t;
+  }
+
+  template <int dim>
+  inline void
+  write_tensor(double *p, const Tensor<2, dim> &t)
+  {
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = 0; j < dim; ++j)
+        p[i * dim + j] = t[i][j];
+  }
+
+  template <int dim>
+  inline SymmetricTensor<2, dim>
+  read_symmetric(const double *p)
+  {
+    SymmetricTensor<2, dim> t;
+    for (unsigned int i = 0; i < SymmetricTensor<2, dim>::n_independent_components; ++i)
+      t.access_raw_entry(i) = p[i];
+    return t;
+  }
+
+  template <int dim>
+  inline void
+  write_symmetric(double *p, const SymmetricTensor<2, dim> &t)
+  {
+    for (unsigned int i = 0; i < SymmetricTensor<2, dim>::n_independent_components; ++i)
+      p[i] = t.access_raw_entry(i);
+  }
+} // namespace dealmpm

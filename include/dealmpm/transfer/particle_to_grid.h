@@ -1,0 +1,22 @@
+#pragma once
+
+#include <dealmpm/grid/background_grid.h>
+#include <dealmpm/grid/nodal_fields.h>
+#include <dealmpm/particles/particle_set.h>
+#include <dealmpm/transfer/stencil.h>
+
+namespace dealmpm
+{
+  /**
+   * P2G: nodal mass, momentum and internal force
+   * f_int = -sum_p V_p sigma_p grad N (V_p = J_p V_p0), summed over ranks.
+   * External forces are the effects' business (gravity acts on the nodal
+   * mass directly, which is the same sum).
+   */
+  template <int dim>
+  void
+  particle_to_grid(const BackgroundGrid<dim> &grid,
+                   const ParticleSet<dim> &   particles,
+                   const Stencil<dim> &       stencil,
+                   NodalFields<dim> &         fields);
+} // namespace dealmpm

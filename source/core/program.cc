@@ -1,0 +1,209 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+
+#include <dealmpm/core/errors.h>
+#include <dealmpm/core/simulation.h>
+
+#include <fstream>
+#include <iostream>
+#include <regex>
+
+namespace dealmpm
+{
+  namespace
+  {
+    /** deal.II's multi-line exception text as one line: the part after
+     * "Additional information:" with whitespace collapsed. */
+    std::string
+    one_line(const std::exception &e)
+    {
+      std::string       text   = e.what();
+      const std::string marker = "Additional information:";
+      const auto        pos    = text.find(marker);
+      if (pos != std::string::npos)
+        text = text.substr(pos + marker.size());
+      const auto dashes = text.find("-----");
+      if (dashes != std::string::npos)
+        text = text.substr(0, dashes);
+      text = std::regex_replace(text, std::regex("\\s+"), " ");
+      return Utilities::trim(text);
+    }
+
+    void
+    parse_file(ParameterHandler &prm, const std::string &file, const bool skip_undefined)
+    {
+      if (!std::ifstream(file))
+        throw InputError(file + ": cannot open the scene file");
+      try
+        {
+          prm.parse_input(file, "", skip_undefined, /*assert_mandatory_entries_are_found=*/false);
+        }
+      catch (const std::exception &e)
+        {
+          throw InputError(file + ": " + one_line(e));
+        }
+    }
+
+    const char *usage =
+      "usage: dealmpm [options] scene.prm\n"
+      "       mpirun -np N dealmpm [options] scene.prm\n"
+      "\n"
+      "Runs an explicit Material Point Method scene described by a deal.II\n"
+      "parameter file. Output (ParaView .pvd/.pvtu/.vtu, statistics.csv) goes\n"
+      "to the folder 'Output/Directory'.\n"
+      "\n"
+      "options:\n"
+      "  -h, --help              this text\n"
+      "  --print-parameters      every entry with its default and documentation\n"
+      "                          (for the scene's Dimension and numbers of bodies\n"
+      "                          and materials when a scene is given)\n"
+      "  -s 'Section/Entry=value'  override an entry (repeatable), e.g.\n"
+      "                          -s 'Grid/Cells=40, 40' -s 'Time/End time=0.5'\n"
+      "\n"
+      "exit codes: 0 done, 1 bad command line, 2 bad scene input,\n"
+      "            3 run stopped (instability, particles lost), 4 internal error\n";
+
+    template <int dim>
+    void
+    run_scene(const std::string &             file,
+              const std::vector<std::string> &overrides,
+              const SceneShape &              shape)
+    {
+      ParameterHandler prm;
+      Simulation<dim>::declare_parameters(prm, shape);
+      parse_file(prm, file, false);
+      apply_overrides(prm, overrides);
+      Simulation<dim> simulation(prm, file, shape, MPI_COMM_WORLD);
+      simulation.run();
+    }
+  } // namespace
+
+  void
+  apply_overrides(ParameterHandler &prm, const std::vector<std::string> &overrides)
+  {
+    for (const auto &item : overrides)
+      {
+        const auto equal = item.find('=');
+        if (equal == std::string::npos)
+          throw InputError("command line: -s '" + item + "': expected 'Section/Entry=value'");
+        const auto path = Utilities::split_string_list(item.substr(0, equal), '/');
+        const std::string value = Utilities::trim(item.substr(equal + 1));
+        for (unsigned int i = 0; i + 1 < path.size(); ++i)
+          prm.enter_subsection(path[i]);
+        try
+          {
+            prm.set(path.back(), value);
+          }
+        catch (const std::exception &e)
+          {
+            for (unsigned int i = 0; i + 1 < path.size(); ++i)
+              prm.leave_subsection();
+            throw InputError("command line: -s '" + item + "': " + one_line(e));
+          }
+        for (unsigned int i = 0; i + 1 < path.size(); ++i)
+          prm.leave_subsection();
+      }
+  }
+
+  SceneShape
+  read_scene_shape(const std::string &file, const std::vector<std::string> &overrides)
+  {
+    ParameterHandler prm;
+    prm.declare_entry("Dimension", "2", Patterns::Integer(2, 3));
+    prm.declare_entry("Number of bodies", "1", Patterns::Integer(1, 10000));
+    prm.declare_entry("Number of materials", "1", Patterns::Integer(1, 10000));
+    if (!file.empty())
+      parse_file(prm, file, true);
+    std::vector<std::string> top_level;
+    for (const auto &item : overrides)
+      for (const std::string name : {"Dimension", "Number of bodies", "Number of materials"})
+        if (item.rfind(name + "=", 0) == 0 || item.rfind(name + " =", 0) == 0)
+          top_level.push_back(item);
+    apply_overrides(prm, top_level);
+    SceneShape shape;
+    shape.dim         = prm.get_integer("Dimension");
+    shape.n_bodies    = prm.get_integer("Number of bodies");
+    shape.n_materials = prm.get_integer("Number of materials");
+    return shape;
+  }
+
+  int
+  run_program(int argc, char **argv)
+  {
+    Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+    const bool               root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+    std::string              file;
+    std::vector<std::string> overrides;
+    bool                     print_parameters = false;
+    for (int i = 1; i < argc; ++i)
+      {
+        const std::string arg = argv[i];
+        if (arg == "-h" || arg == "--help")
+          {
+            if (root)
+              std::cout << usage;
+            return 0;
+          }
+        else if (arg == "--print-parameters")
+          print_parameters = true;
+        else if (arg == "-s" && i + 1 < argc)
+          overrides.push_back(argv[++i]);
+        else if (arg.rfind("-", 0) == 0 || !file.empty())
+          {
+            if (root)
+              std::cerr << "dealmpm: unknown option or second scene file '" << arg
+                        << "'\n\n" << usage;
+            return 1;
+          }
+        else
+          file = arg;
+      }
+    if (file.empty() && !print_parameters)
+      {
+        if (root)
+          std::cerr << "dealmpm: no scene file given\n\n" << usage;
+        return 1;
+      }
+
+    try
+      {
+        const SceneShape shape = read_scene_shape(file, overrides);
+        if (print_parameters)
+          {
+            ParameterHandler prm;
+            if (shape.dim == 2)
+              Simulation<2>::declare_parameters(prm, shape);
+            else
+              Simulation<3>::declare_parameters(prm, shape);
+            if (!file.empty())
+              parse_file(prm, file, false);
+            apply_overrides(prm, overrides);
+            if (root)
+              prm.print_parameters(std::cout, ParameterHandler::Text);
+            return 0;
+          }
+        if (shape.dim == 2)
+          run_scene<2>(file, overrides, shape);
+        else
+          run_scene<3>(file, overrides, shape);
+      }
+    catch (const InputError &e)
+      {
+        if (root)
+          std::cerr << "dealmpm: error: " << e.what() << std::endl;
+        return 2;
+      }
+    catch (const RunError &e)
+      {
+        if (root)
+          std::cerr << "dealmpm: stopped: " << e.what() << std::endl;
+        return 3;
+      }
+    catch (const std::exception &e)
+      {
+        std::cerr << "dealmpm: internal error: " << one_line(e) << std::endl;
+        return 4;
+      }
+    return 0;
+  }
+} // namespace dealmpm

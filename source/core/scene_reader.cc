@@ -1,0 +1,175 @@
+#include <deal.II/base/utilities.h>
+
+#include <dealmpm/core/errors.h>
+#include <dealmpm/core/scene_reader.h>
+
+#include <cmath>
+
+namespace dealmpm
+{
+  SceneReader::SceneReader(ParameterHandler &prm, const std::string &file_name)
+    : prm(prm)
+    , file(file_name)
+  {}
+
+  void
+  SceneReader::enter(const std::string &section)
+  {
+    prm.enter_subsection(section);
+    sections.push_back(section);
+  }
+
+  void
+  SceneReader::leave()
+  {
+    prm.leave_subsection();
+    sections.pop_back();
+  }
+
+  std::string
+  SceneReader::path_of(const std::string &entry) const
+  {
+    std::string path;
+    for (const auto &s : sections)
+      path += s + "/";
+    return path + entry;
+  }
+
+  void
+  SceneReader::fail(const std::string &entry, const std::string &expected) const
+  {
+    throw InputError(file + ": entry '" + path_of(entry) + "' = '" +
+                     prm.get(entry) + "': expected " + expected);
+  }
+
+  std::string
+  SceneReader::get(const std::string &entry) const
+  {
+    return Utilities::trim(prm.get(entry));
+  }
+
+  bool
+  SceneReader::get_bool(const std::string &entry) const
+  {
+    return prm.get_bool(entry);
+  }
+
+  double
+  SceneReader::get_double(const std::string &entry) const
+  {
+    const std::string text = get(entry);
+    try
+      {
+        const double value = Utilities::string_to_double(text);
+        if (!std::isfinite(value))
+          fail(entry, "a finite number");
+        return value;
+      }
+    catch (const InputError &)
+      {
+        throw;
+      }
+    catch (...)
+      {
+        fail(entry, "a number");
+      }
+  }
+
+  double
+  SceneReader::get_positive(const std::string &entry) const
+  {
+    const double value = get_double(entry);
+    if (!(value > 0))
+      fail(entry, "a positive number");
+    return value;
+  }
+
+  double
+  SceneReader::get_nonnegative(const std::string &entry) const
+  {
+    const double value = get_double(entry);
+    if (!(value >= 0))
+      fail(entry, "a number >= 0");
+    return value;
+  }
+
+  double
+  SceneReader::get_in_open_range(const std::string &entry,
+                                 const double       lower,
+                                 const double       upper) const
+  {
+    const double value = get_double(entry);
+    if (!(value > lower && value < upper))
+      fail(entry,
+           "a number strictly between " + Utilities::to_string(lower) +
+             " and " + Utilities::to_string(upper));
+    return value;
+  }
+
+  long
+  SceneReader::get_integer(const std::string &entry) const
+  {
+    try
+      {
+        return Utilities::string_to_int(get(entry));
+      }
+    catch (...)
+      {
+        fail(entry, "an integer");
+      }
+  }
+
+  std::vector<double>
+  SceneReader::get_doubles(const std::string &entry) const
+  {
+    std::vector<double> values;
+    for (const auto &item : Utilities::split_string_list(get(entry), ','))
+      {
+        try
+          {
+            values.push_back(Utilities::string_to_double(item));
+          }
+        catch (...)
+          {
+            fail(entry, "a comma-separated list of numbers");
+          }
+        if (!std::isfinite(values.back()))
+          fail(entry, "finite numbers");
+      }
+    return values;
+  }
+
+  template <int dim>
+  Point<dim>
+  SceneReader::get_point(const std::string &entry) const
+  {
+    const std::vector<double> values = get_doubles(entry);
+    if (values.size() != dim)
+      fail(entry,
+           std::to_string(dim) + " comma-separated numbers (Dimension = " +
+             std::to_string(dim) + ")");
+    Point<dim> p;
+    for (unsigned int d = 0; d < dim; ++d)
+      p[d] = values[d];
+    return p;
+  }
+
+  template <int dim>
+  std::string
+  repeat_value(const std::string &value)
+  {
+    std::string text = value;
+    for (unsigned int d = 1; d < dim; ++d)
+      text += ", " + value;
+    return text;
+  }
+
+  template Point<2>
+  SceneReader::get_point<2>(const std::string &) const;
+  template Point<3>
+  SceneReader::get_point<3>(const std::string &) const;
+  template std::string
+  repeat_value<2>(const std::string &);
+  template std::string
+  repeat_value<3>(const std::string &);
+} // namespace dealmpm

@@ -1,0 +1,128 @@
+#include <dealmpm/effects/effect.h>
+
+#include <cmath>
+
+namespace dealmpm
+{
+  namespace
+  {
+    /** Uniform body force g per unit mass: f_i += m_i g, which equals
+     * sum_p N_ip m_p g. */
+    template <int dim>
+    class Gravity : public Effect<dim>
+    {
+    public:
+      explicit Gravity(const Tensor<1, dim> &g)
+        : g(g)
+      {}
+
+      void
+      add_nodal_forces(NodalFields<dim> &fields) const override
+      {
+        const unsigned int n    = fields.mass.locally_owned_size();
+        const double *     mass = fields.mass.begin();
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            double *force = fields.force[d].begin();
+            for (unsigned int i = 0; i < n; ++i)
+              force[i] += mass[i] * g[d];
+          }
+      }
+
+      double
+      potential_energy(const double mass, const Point<dim> &x) const override
+      {
+        return -mass * (g * x);
+      }
+
+    private:
+      Tensor<1, dim> g;
+    };
+
+    /**
+     * Cundall's local non-viscous damping on the grid: each nodal force
+     * component is reduced by alpha |f| against the direction of motion. It
+     * drives a scene to its static state without changing that state.
+     */
+    template <int dim>
+    class LocalDamping : public Effect<dim>
+    {
+    public:
+      explicit LocalDamping(const double alpha)
+        : alpha(alpha)
+      {}
+
+      void
+      adjust_nodal_forces(NodalFields<dim> &fields) const override
+      {
+        const unsigned int n = fields.mass.locally_owned_size();
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            double *      force    = fields.force[d].begin();
+            const double *momentum = fields.momentum[d].begin();
+            for (unsigned int i = 0; i < n; ++i)
+              if (momentum[i] != 0.)
+                force[i] -= alpha * std::abs(force[i]) *
+                            (momentum[i] > 0. ? 1. : -1.);
+          }
+      }
+
+    private:
+      double alpha;
+    };
+  } // namespace
+
+  std::string
+  section_title(const std::string &name)
+  {
+    std::string title = name;
+    if (!title.empty())
+      title[0] = std::toupper(title[0]);
+    return title;
+  }
+
+  template <int dim>
+  Registry<Effect<dim>> &
+  effect_registry()
+  {
+    static Registry<Effect<dim>> registry = [] {
+      Registry<Effect<dim>> r;
+      r.add(
+        "gravity",
+        "uniform body force (section Gravity: Acceleration).",
+        [](ParameterHandler &prm) {
+          prm.declare_entry("Acceleration",
+                            dim == 2 ? "0, -9.81" : "0, 0, -9.81",
+                            Patterns::Anything(),
+                            "Gravitational acceleration vector (m/s^2).");
+        },
+        [](SceneReader &reader) -> std::unique_ptr<Effect<dim>> {
+          return std::make_unique<Gravity<dim>>(
+            reader.get_vector<dim>("Acceleration"));
+        });
+      r.add(
+        "local damping",
+        "Cundall's local damping of nodal forces, for quasi-static "
+        "settling (section Local damping: Coefficient).",
+        [](ParameterHandler &prm) {
+          prm.declare_entry("Coefficient",
+                            "0.05",
+                            Patterns::Anything(),
+                            "Damping coefficient alpha, 0 <= alpha < 1.");
+        },
+        [](SceneReader &reader) -> std::unique_ptr<Effect<dim>> {
+          const double alpha = reader.get_double("Coefficient");
+          if (!(alpha >= 0. && alpha < 1.))
+            reader.fail("Coefficient", "a number in [0, 1)");
+          return std::make_unique<LocalDamping<dim>>(alpha);
+        });
+      return r;
+    }();
+    return registry;
+  }
+
+  template Registry<Effect<2>> &
+  effect_registry<2>();
+  template Registry<Effect<3>> &
+  effect_registry<3>();
+} // namespace dealmpm

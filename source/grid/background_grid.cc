@@ -1,0 +1,291 @@
+#include <deal.II/base/geometry_info.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/mapping_cartesian.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/grid_tools.h>
+
+#include <dealmpm/core/errors.h>
+#include <dealmpm/grid/background_grid.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+
+namespace dealmpm
+{
+  template <int dim>
+  BackgroundGrid<dim>::BackgroundGrid(const MPI_Comm comm)
+    : comm(comm)
+    , triangulation(comm,
+                    typename Triangulation<dim>::MeshSmoothing(
+                      Triangulation<dim>::smoothing_on_refinement |
+                      Triangulation<dim>::smoothing_on_coarsening))
+    , fe(1)
+    , dof_handler(triangulation)
+  {}
+
+  template <int dim>
+  void
+  BackgroundGrid<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Grid");
+    prm.declare_entry("Type",
+                      "rectangle",
+                      Patterns::Selection("rectangle|mesh file"),
+                      "'rectangle': a box from Lower corner to Upper corner "
+                      "split into Cells; boundary ids 0/1 at x min/max, 2/3 at "
+                      "y min/max, 4/5 at z min/max. 'mesh file': a Gmsh .msh "
+                      "file (quadrilaterals or hexahedra) whose physical "
+                      "boundary tags become boundary ids.");
+    prm.declare_entry("Lower corner",
+                      repeat_value<dim>("0"),
+                      Patterns::Anything(),
+                      "Rectangle: lower corner, one number per dimension.");
+    prm.declare_entry("Upper corner",
+                      repeat_value<dim>("1"),
+                      Patterns::Anything(),
+                      "Rectangle: upper corner, one number per dimension.");
+    prm.declare_entry("Cells",
+                      repeat_value<dim>("10"),
+                      Patterns::Anything(),
+                      "Rectangle: cells per direction, one positive integer "
+                      "per dimension.");
+    prm.declare_entry("Mesh file",
+                      "",
+                      Patterns::Anything(),
+                      "Mesh file: path of the Gmsh .msh file, relative to the "
+                      "scene file's folder or absolute.");
+    prm.declare_entry("Global refinements",
+                      "0",
+                      Patterns::Integer(0, 12),
+                      "Times every cell is split in 2 per direction.");
+    prm.enter_subsection("Local refinement");
+    prm.declare_entry("Levels",
+                      "0",
+                      Patterns::Integer(0, 8),
+                      "Extra refinements of the cells whose centre lies in "
+                      "the box below (hanging nodes are handled).");
+    prm.declare_entry("Lower corner", repeat_value<dim>("0"), Patterns::Anything(), "Box lower corner.");
+    prm.declare_entry("Upper corner", repeat_value<dim>("0"), Patterns::Anything(), "Box upper corner.");
+    prm.leave_subsection();
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  void
+  BackgroundGrid<dim>::create(SceneReader &reader)
+  {
+    SectionScope grid(reader, "Grid");
+    if (reader.get("Type") == "rectangle")
+      {
+        const Point<dim>          lower = reader.get_point<dim>("Lower corner");
+        const Point<dim>          upper = reader.get_point<dim>("Upper corner");
+        const std::vector<double> cells = reader.get_doubles("Cells");
+        if (cells.size() != dim)
+          reader.fail("Cells", std::to_string(dim) + " positive integers");
+        std::vector<unsigned int> repetitions;
+        for (const double c : cells)
+          {
+            if (!(c >= 1 && c == static_cast<unsigned int>(c)))
+              reader.fail("Cells", "positive integers (at least one cell per direction)");
+            repetitions.push_back(static_cast<unsigned int>(c));
+          }
+        for (unsigned int d = 0; d < dim; ++d)
+          if (!(upper[d] > lower[d]))
+            reader.fail("Upper corner", "each coordinate larger than Lower corner's");
+        GridGenerator::subdivided_hyper_rectangle(
+          triangulation, repetitions, lower, upper, /*colorize=*/true);
+      }
+    else
+      {
+        std::string file = reader.get("Mesh file");
+        const std::filesystem::path scene_folder =
+          std::filesystem::path(reader.file_name()).parent_path();
+        if (!file.empty() && std::filesystem::path(file).is_relative() &&
+            !scene_folder.empty())
+          file = (scene_folder / file).string();
+        std::ifstream in(file);
+        if (file.empty() || !in)
+          reader.fail("Mesh file", "a readable Gmsh .msh file");
+        GridIn<dim> grid_in;
+        grid_in.attach_triangulation(triangulation);
+        try
+          {
+            grid_in.read_msh(in);
+          }
+        catch (const std::exception &e)
+          {
+            reader.fail("Mesh file",
+                        "a Gmsh .msh mesh of quadrilaterals/hexahedra (reading "
+                        "failed)");
+          }
+      }
+    const long global_refinements = reader.get_integer("Global refinements");
+    triangulation.refine_global(global_refinements);
+    refine_box(reader);
+    setup();
+  }
+
+  template <int dim>
+  void
+  BackgroundGrid<dim>::refine_box(SceneReader &reader)
+  {
+    SectionScope local(reader, "Local refinement");
+    const long levels = reader.get_integer("Levels");
+    if (levels == 0)
+      return;
+    const Point<dim> lower = reader.get_point<dim>("Lower corner");
+    const Point<dim> upper = reader.get_point<dim>("Upper corner");
+    const BoundingBox<dim> box({lower, upper});
+    for (long level = 0; level < levels; ++level)
+      {
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (cell->is_locally_owned() && box.point_inside(cell->center()))
+            cell->set_refine_flag();
+        triangulation.execute_coarsening_and_refinement();
+      }
+  }
+
+  template <int dim>
+  void
+  BackgroundGrid<dim>::setup()
+  {
+    dof_handler.distribute_dofs(fe);
+    const IndexSet owned    = dof_handler.locally_owned_dofs();
+    const IndexSet relevant = DoFTools::extract_locally_relevant_dofs(dof_handler);
+    partitioner =
+      std::make_shared<Utilities::MPI::Partitioner>(owned, relevant, comm);
+
+    hanging_node_constraints.clear();
+    hanging_node_constraints.reinit(relevant);
+    DoFTools::make_hanging_node_constraints(dof_handler, hanging_node_constraints);
+    hanging_node_constraints.close();
+
+    cells.clear();
+    cell_nodes.clear();
+    cell_node_weights.clear();
+    constexpr unsigned int n_vertices = GridCell<dim>::n_vertices;
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    bool all_boxes = true;
+    Point<dim> lower, upper;
+    bool       first = true;
+    for (const auto &dof_cell : dof_handler.active_cell_iterators())
+      {
+        if (!dof_cell->is_locally_owned())
+          continue;
+        GridCell<dim> c;
+        c.cell = dof_cell;
+        for (unsigned int v = 0; v < n_vertices; ++v)
+          c.vertices[v] = dof_cell->vertex(v);
+        c.h       = dof_cell->minimum_vertex_distance();
+        c.measure = dof_cell->measure();
+
+        // Affine when x(xi) is linear: each vertex = v0 + sum of the edge
+        // vectors along its set bits.
+        Tensor<2, dim> J;
+        for (unsigned int d = 0; d < dim; ++d)
+          for (unsigned int e = 0; e < dim; ++e)
+            J[e][d] = c.vertices[1u << d][e] - c.vertices[0][e];
+        bool affine = true, box = true;
+        for (unsigned int v = 0; v < n_vertices; ++v)
+          {
+            Point<dim> expected = c.vertices[0];
+            for (unsigned int d = 0; d < dim; ++d)
+              if ((v >> d) & 1u)
+                for (unsigned int e = 0; e < dim; ++e)
+                  expected[e] += J[e][d];
+            if (expected.distance(c.vertices[v]) > 1e-12 * c.h)
+              affine = false;
+          }
+        for (unsigned int d = 0; d < dim; ++d)
+          for (unsigned int e = 0; e < dim; ++e)
+            if (d != e && std::abs(J[e][d]) > 1e-12 * c.h)
+              box = false;
+        all_boxes = all_boxes && affine && box;
+        c.affine           = affine;
+        c.inverse_jacobian = invert(J);
+        if (!affine)
+          {
+            Point<dim> centre;
+            for (unsigned int d = 0; d < dim; ++d)
+              centre[d] = 0.5;
+            c.affine           = false;
+            c.inverse_jacobian = c.inverse_jacobian_at(centre);
+          }
+
+        // Effective nodes: vertex DoFs with constrained ones replaced by their
+        // masters, weighted.
+        dof_cell->get_dof_indices(dofs);
+        bool constrained = false;
+        for (const auto dof : dofs)
+          constrained = constrained || hanging_node_constraints.is_constrained(dof);
+        c.first_node = cell_nodes.size();
+        if (!constrained)
+          {
+            for (const auto dof : dofs)
+              cell_nodes.push_back(partitioner->global_to_local(dof));
+            c.n_nodes = n_vertices;
+          }
+        else
+          {
+            std::vector<types::global_dof_index> nodes;
+            std::vector<std::array<double, n_vertices>> weights;
+            const auto add = [&](const types::global_dof_index node,
+                                 const unsigned int v,
+                                 const double w) {
+              const auto it = std::find(nodes.begin(), nodes.end(), node);
+              const std::size_t k = it - nodes.begin();
+              if (it == nodes.end())
+                {
+                  nodes.push_back(node);
+                  weights.emplace_back();
+                  weights.back().fill(0.);
+                }
+              weights[k][v] += w;
+            };
+            for (unsigned int v = 0; v < n_vertices; ++v)
+              if (hanging_node_constraints.is_constrained(dofs[v]))
+                for (const auto &entry :
+                     *hanging_node_constraints.get_constraint_entries(dofs[v]))
+                  add(entry.first, v, entry.second);
+              else
+                add(dofs[v], v, 1.);
+            c.n_nodes      = nodes.size();
+            c.first_weight = cell_node_weights.size();
+            for (unsigned int k = 0; k < nodes.size(); ++k)
+              {
+                cell_nodes.push_back(partitioner->global_to_local(nodes[k]));
+                for (unsigned int v = 0; v < n_vertices; ++v)
+                  cell_node_weights.push_back(weights[k][v]);
+              }
+          }
+
+        for (unsigned int v = 0; v < n_vertices; ++v)
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              lower[d] = first ? c.vertices[v][d] : std::min(lower[d], c.vertices[v][d]);
+              upper[d] = first ? c.vertices[v][d] : std::max(upper[d], c.vertices[v][d]);
+              first    = false;
+            }
+        cells.push_back(c);
+      }
+
+    cartesian = Utilities::MPI::min(all_boxes ? 1 : 0, comm) == 1;
+    if (cartesian)
+      mapping = std::make_unique<MappingCartesian<dim>>();
+    else
+      mapping = std::make_unique<MappingQ1<dim>>();
+
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        lower[d] = Utilities::MPI::min(first ? 1e300 : lower[d], comm);
+        upper[d] = Utilities::MPI::max(first ? -1e300 : upper[d], comm);
+      }
+    bounding_box = BoundingBox<dim>({lower, upper});
+  }
+
+  template class BackgroundGrid<2>;
+  template class BackgroundGrid<3>;
+} // namespace dealmpm

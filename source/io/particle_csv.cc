@@ -1,0 +1,57 @@
+#include <deal.II/base/mpi.h>
+
+#include <dealmpm/io/particle_csv.h>
+
+#include <algorithm>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+namespace dealmpm
+{
+  template <int dim>
+  void
+  write_particle_csv(const ParticleSet<dim> &particles,
+                     const std::string &     path,
+                     const MPI_Comm          comm)
+  {
+    const CoreFields &f = particles.fields;
+    std::vector<std::pair<types::particle_index, std::string>> rows;
+    for (const auto &p : particles.handler)
+      {
+        const auto         props = p.get_properties();
+        std::ostringstream line;
+        line << std::setprecision(12) << p.get_id();
+        for (unsigned int d = 0; d < dim; ++d)
+          line << ',' << p.get_location()[d];
+        for (unsigned int d = 0; d < dim; ++d)
+          line << ',' << props[f.velocity + d];
+        for (unsigned int d = 0; d < dim; ++d)
+          line << ',' << props[f.displacement + d];
+        line << ',' << determinant(read_tensor<dim>(&props[f.deformation_gradient]))
+             << ',' << props[f.body];
+        rows.emplace_back(p.get_id(), line.str());
+      }
+    const auto gathered = Utilities::MPI::gather(comm, rows, 0);
+    if (Utilities::MPI::this_mpi_process(comm) != 0)
+      return;
+    std::vector<std::pair<types::particle_index, std::string>> all;
+    for (const auto &part : gathered)
+      all.insert(all.end(), part.begin(), part.end());
+    std::sort(all.begin(), all.end());
+    std::ofstream out(path);
+    const char *axes[] = {"x", "y", "z"};
+    out << "id";
+    for (const std::string prefix : {"", "v", "u"})
+      for (unsigned int d = 0; d < dim; ++d)
+        out << ',' << prefix << axes[d];
+    out << ",J,body\n";
+    for (const auto &row : all)
+      out << row.second << '\n';
+  }
+
+  template void
+  write_particle_csv(const ParticleSet<2> &, const std::string &, MPI_Comm);
+  template void
+  write_particle_csv(const ParticleSet<3> &, const std::string &, MPI_Comm);
+} // namespace dealmpm

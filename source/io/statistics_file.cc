@@ -1,0 +1,42 @@
+#include <dealmpm/io/statistics_file.h>
+
+#include <iomanip>
+
+namespace dealmpm
+{
+  StatisticsFile::StatisticsFile(const std::string &path,
+                                 const unsigned int dim,
+                                 const bool         writer)
+    : dim(dim)
+  {
+    if (!writer)
+      return;
+    out.open(path);
+    out << "step,time,dt,n_particles,mass,momentum_x,momentum_y";
+    if (dim == 3)
+      out << ",momentum_z";
+    out << ",kinetic_energy,strain_energy,gravitational_energy,total_energy,"
+           "lost_particles,wall_time\n";
+    out << std::setprecision(16);
+  }
+
+  void
+  StatisticsFile::write_row(const unsigned int step,
+                            const double       time,
+                            const double       dt,
+                            const Statistics & s,
+                            const double       n_lost_particles,
+                            const double       wall_time)
+  {
+    if (!out.is_open())
+      return;
+    out << step << ',' << time << ',' << dt << ',' << s.n_particles << ','
+        << s.mass;
+    for (unsigned int d = 0; d < dim; ++d)
+      out << ',' << s.momentum[d];
+    out << ',' << s.kinetic_energy << ',' << s.strain_energy << ','
+        << s.gravitational_energy << ',' << s.total_energy() << ','
+        << n_lost_particles << ',' << wall_time << '\n'
+        << std::flush;
+  }
+} // namespace dealmpm

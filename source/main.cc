@@ -1,0 +1,7 @@
+#include <dealmpm/core/simulation.h>
+
+int
+main(int argc, char **argv)
+{
+  return dealmpm::run_program(argc, argv);
+}

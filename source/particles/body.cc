@@ -1,0 +1,306 @@
+#include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/grid_tools_cache.h>
+#include <deal.II/fe/mapping_q1.h>
+
+#include <dealmpm/core/errors.h>
+#include <dealmpm/particles/body.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+
+namespace dealmpm
+{
+  namespace
+  {
+    template <int dim>
+    class BoxShape : public Shape<dim>
+    {
+    public:
+      BoxShape(const Point<dim> &lower, const Point<dim> &upper)
+        : box({lower, upper})
+      {}
+      bool
+      contains(const Point<dim> &p) const override
+      {
+        return box.point_inside(p);
+      }
+      BoundingBox<dim>
+      bounding_box() const override
+      {
+        return box;
+      }
+
+    private:
+      BoundingBox<dim> box;
+    };
+
+    template <int dim>
+    class BallShape : public Shape<dim>
+    {
+    public:
+      BallShape(const Point<dim> &center, const double radius)
+        : center(center)
+        , radius(radius)
+      {}
+      bool
+      contains(const Point<dim> &p) const override
+      {
+        return p.distance(center) <= radius;
+      }
+      BoundingBox<dim>
+      bounding_box() const override
+      {
+        Point<dim> lower = center, upper = center;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            lower[d] -= radius;
+            upper[d] += radius;
+          }
+        return BoundingBox<dim>({lower, upper});
+      }
+
+    private:
+      Point<dim> center;
+      double     radius;
+    };
+
+    /** 3D: a circular cylinder along a coordinate axis, centred at center. */
+    template <int dim>
+    class CylinderShape : public Shape<dim>
+    {
+    public:
+      CylinderShape(const Point<dim> &center,
+                    const double      radius,
+                    const unsigned int axis,
+                    const double      height)
+        : center(center)
+        , radius(radius)
+        , axis(axis)
+        , height(height)
+      {}
+      bool
+      contains(const Point<dim> &p) const override
+      {
+        Tensor<1, dim> r = p - center;
+        const double   along = r[axis];
+        r[axis]              = 0;
+        return std::abs(along) <= 0.5 * height && r.norm() <= radius;
+      }
+      BoundingBox<dim>
+      bounding_box() const override
+      {
+        Point<dim> lower = center, upper = center;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            const double half = (d == axis) ? 0.5 * height : radius;
+            lower[d] -= half;
+            upper[d] += half;
+          }
+        return BoundingBox<dim>({lower, upper});
+      }
+
+    private:
+      Point<dim>   center;
+      double       radius;
+      unsigned int axis;
+      double       height;
+    };
+
+    /** The cells of a mesh file (any cell shape Gmsh and deal.II agree on). */
+    template <int dim>
+    class MeshShape : public Shape<dim>
+    {
+    public:
+      explicit MeshShape(std::istream &in)
+      {
+        GridIn<dim> grid_in;
+        grid_in.attach_triangulation(tria);
+        grid_in.read_msh(in);
+        cache = std::make_unique<GridTools::Cache<dim>>(tria, mapping);
+        box   = GridTools::compute_bounding_box(tria);
+      }
+      bool
+      contains(const Point<dim> &p) const override
+      {
+        if (!box.point_inside(p))
+          return false;
+        try
+          {
+            const auto found = GridTools::find_active_cell_around_point(*cache, p);
+            return found.first.state() == IteratorState::valid;
+          }
+        catch (...)
+          {
+            return false;
+          }
+      }
+      BoundingBox<dim>
+      bounding_box() const override
+      {
+        return box;
+      }
+
+    private:
+      Triangulation<dim>                     tria;
+      MappingQ1<dim>                         mapping;
+      std::unique_ptr<GridTools::Cache<dim>> cache;
+      BoundingBox<dim>                       box;
+    };
+  } // namespace
+
+  template <int dim>
+  void
+  Body<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Shape",
+                      "box",
+                      Patterns::Selection("box|ball|cylinder|mesh"),
+                      "'box' (Lower corner, Upper corner), 'ball' (a disk in "
+                      "2D: Center, Radius), 'cylinder' (3D: Center, Radius, "
+                      "Axis, Height), 'mesh' (the cells of Mesh file).");
+    prm.declare_entry("Lower corner", repeat_value<dim>("0"), Patterns::Anything(), "Box: lower corner.");
+    prm.declare_entry("Upper corner", repeat_value<dim>("1"), Patterns::Anything(), "Box: upper corner.");
+    prm.declare_entry("Center", repeat_value<dim>("0"), Patterns::Anything(), "Ball, cylinder: centre.");
+    prm.declare_entry("Radius", "0.5", Patterns::Anything(), "Ball, cylinder: radius.");
+    prm.declare_entry("Axis", "z", Patterns::Selection("x|y|z"), "Cylinder: axis direction.");
+    prm.declare_entry("Height", "1", Patterns::Anything(), "Cylinder: length along the axis.");
+    prm.declare_entry("Mesh file", "", Patterns::Anything(), "Mesh: Gmsh .msh file whose cells the body fills (relative to the scene file's folder or absolute).");
+    prm.declare_entry("Particles per cell", "2", Patterns::Integer(1, 10),
+                      "Particles per background cell and direction (n: n^dim per cell).");
+    prm.declare_entry("Material", "1", Patterns::Integer(1), "Number N of the 'Material N' section.");
+    prm.declare_entry("Velocity", repeat_value<dim>("0"), Patterns::Anything(), "Initial velocity (m/s).");
+  }
+
+  template <int dim>
+  Body<dim>
+  Body<dim>::read(SceneReader &reader, const unsigned int n_materials)
+  {
+    Body<dim>         body;
+    const std::string shape = reader.get("Shape");
+    if (shape == "box")
+      {
+        const Point<dim> lower = reader.get_point<dim>("Lower corner");
+        const Point<dim> upper = reader.get_point<dim>("Upper corner");
+        for (unsigned int d = 0; d < dim; ++d)
+          if (!(upper[d] > lower[d]))
+            reader.fail("Upper corner", "each coordinate larger than Lower corner's");
+        body.shape = std::make_unique<BoxShape<dim>>(lower, upper);
+      }
+    else if (shape == "ball")
+      body.shape = std::make_unique<BallShape<dim>>(reader.get_point<dim>("Center"),
+                                                    reader.get_positive("Radius"));
+    else if (shape == "cylinder")
+      {
+        if (dim != 3)
+          reader.fail("Shape", "box, ball or mesh in 2D (a 2D disk is 'ball')");
+        const std::string axis = reader.get("Axis");
+        body.shape             = std::make_unique<CylinderShape<dim>>(
+          reader.get_point<dim>("Center"),
+          reader.get_positive("Radius"),
+          axis == "x" ? 0 : (axis == "y" ? 1 : 2),
+          reader.get_positive("Height"));
+      }
+    else
+      {
+        std::string file = reader.get("Mesh file");
+        const std::filesystem::path folder =
+          std::filesystem::path(reader.file_name()).parent_path();
+        if (!file.empty() && std::filesystem::path(file).is_relative() && !folder.empty())
+          file = (folder / file).string();
+        std::ifstream in(file);
+        if (file.empty() || !in)
+          reader.fail("Mesh file", "a readable Gmsh .msh file");
+        try
+          {
+            body.shape = std::make_unique<MeshShape<dim>>(in);
+          }
+        catch (const std::exception &)
+          {
+            reader.fail("Mesh file", "a Gmsh .msh mesh deal.II can read");
+          }
+      }
+    body.particles_per_direction = reader.get_integer("Particles per cell");
+    const long material          = reader.get_integer("Material");
+    if (material < 1 || material > static_cast<long>(n_materials))
+      reader.fail("Material",
+                  "a material number from 1 to Number of materials (" +
+                    std::to_string(n_materials) + ")");
+    body.material = material - 1;
+    body.velocity = reader.get_vector<dim>("Velocity");
+    return body;
+  }
+
+  template <int dim>
+  std::size_t
+  generate_particles(const Body<dim> &          body,
+                     const unsigned int         body_index,
+                     const double               density,
+                     const BackgroundGrid<dim> &grid,
+                     ParticleSet<dim> &         particles,
+                     const std::vector<double> &initial_internal_variables)
+  {
+    const unsigned int n = body.particles_per_direction;
+    unsigned int       per_cell = 1;
+    for (unsigned int d = 0; d < dim; ++d)
+      per_cell *= n;
+    const double n_cells = grid.triangulation.n_global_active_cells();
+    if ((body_index + 1.) * n_cells * per_cell >
+        double(std::numeric_limits<types::particle_index>::max()))
+      throw InputError("too many particles for 32-bit particle ids: use fewer "
+                       "cells, particles per cell or bodies");
+
+    const CoreFields &  f = particles.fields;
+    std::vector<double> properties(particles.layout.size(), 0.);
+    const BoundingBox<dim> shape_box = body.shape->bounding_box();
+    std::size_t            created   = 0;
+    for (const GridCell<dim> &c : grid.cells)
+      {
+        const BoundingBox<dim> cell_box(
+          std::vector<Point<dim>>(c.vertices.begin(), c.vertices.end()));
+        if (cell_box.get_neighbor_type(shape_box) == NeighborType::not_neighbors)
+          continue;
+        const double volume = c.measure / per_cell;
+        for (unsigned int k = 0; k < per_cell; ++k)
+          {
+            Point<dim>   xi;
+            unsigned int rest = k;
+            for (unsigned int d = 0; d < dim; ++d, rest /= n)
+              xi[d] = (rest % n + 0.5) / n;
+            const Point<dim> x = c.real_point(xi);
+            if (!body.shape->contains(x))
+              continue;
+            std::fill(properties.begin(), properties.end(), 0.);
+            properties[f.mass]           = density * volume;
+            properties[f.initial_volume] = volume;
+            write_vector<dim>(&properties[f.velocity], body.velocity);
+            write_tensor<dim>(&properties[f.deformation_gradient],
+                              unit_symmetric_tensor<dim>());
+            properties[f.body]     = body_index;
+            properties[f.material] = body.material;
+            std::copy(initial_internal_variables.begin(),
+                      initial_internal_variables.end(),
+                      properties.begin() +
+                        particles.internal_offset[body.material]);
+            const types::particle_index id =
+              (body_index * grid.triangulation.n_global_active_cells() +
+               c.cell->global_active_cell_index()) *
+                per_cell +
+              k;
+            particles.handler.insert_particle(
+              x, xi, id, c.cell, make_array_view(properties));
+            ++created;
+          }
+      }
+    return created;
+  }
+
+  template struct Body<2>;
+  template struct Body<3>;
+  template std::size_t
+  generate_particles(const Body<2> &, unsigned int, double, const BackgroundGrid<2> &, ParticleSet<2> &, const std::vector<double> &);
+  template std::size_t
+  generate_particles(const Body<3> &, unsigned int, double, const BackgroundGrid<3> &, ParticleSet<3> &, const std::vector<double> &);
+} // namespace dealmpm

@@ -1,0 +1,63 @@
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <dealmpm/particles/particle_set.h>
+
+#include <map>
+
+namespace dealmpm
+{
+  namespace
+  {
+    template <int dim>
+    PropertyLayout
+    core_layout(CoreFields &fields)
+    {
+      PropertyLayout layout;
+      fields.mass                 = layout.add("mass", 1);
+      fields.initial_volume       = layout.add("initial_volume", 1);
+      fields.velocity             = layout.add("velocity", dim);
+      fields.displacement         = layout.add("displacement", dim);
+      fields.deformation_gradient = layout.add("deformation_gradient", dim * dim);
+      fields.stress =
+        layout.add("stress", SymmetricTensor<2, dim>::n_independent_components);
+      fields.body     = layout.add("body", 1);
+      fields.material = layout.add("material", 1);
+      return layout;
+    }
+  } // namespace
+
+  template <int dim>
+  ParticleSet<dim>::ParticleSet(
+    const Triangulation<dim> &                          tria,
+    const Mapping<dim> &                                mapping,
+    const std::vector<std::string> &                    model_names,
+    const std::vector<std::vector<FieldDescription>> &internal_variables)
+    : layout(core_layout<dim>(fields))
+  {
+    // One block of internal variables per model in use, shared by the
+    // materials of that model.
+    std::map<std::string, unsigned int> block_of_model;
+    for (unsigned int m = 0; m < internal_variables.size(); ++m)
+      {
+        unsigned int n = 0;
+        for (const auto &f : internal_variables[m])
+          n += f.n_components;
+        n_internal.push_back(n);
+        const auto it = block_of_model.find(model_names[m]);
+        if (it != block_of_model.end())
+          {
+            internal_offset.push_back(it->second);
+            continue;
+          }
+        unsigned int first = layout.size();
+        for (const auto &f : internal_variables[m])
+          layout.add(f.name, f.n_components);
+        block_of_model[model_names[m]] = first;
+        internal_offset.push_back(first);
+      }
+    handler.initialize(tria, mapping, layout.size());
+  }
+
+  template class ParticleSet<2>;
+  template class ParticleSet<3>;
+} // namespace dealmpm

@@ -1,0 +1,94 @@
+#include <dealmpm/transfer/stencil.h>
+
+namespace dealmpm
+{
+  template <int dim>
+  void
+  compute_linear_stencil(const BackgroundGrid<dim> &grid,
+                         const ParticleSet<dim> &   particles,
+                         Stencil<dim> &             stencil)
+  {
+    constexpr unsigned int n_vertices = GridCell<dim>::n_vertices;
+    const std::size_t      n_local = particles.handler.n_locally_owned_particles();
+    stencil.begin.resize(n_local + 1);
+    // Unconstrained cells need n_vertices entries per particle; cells with
+    // hanging nodes a few more, so grow on demand.
+    const auto ensure = [&](const std::size_t size) {
+      if (size > stencil.node.size())
+        {
+          const std::size_t capacity =
+            std::max(size, n_local * n_vertices) * 5 / 4;
+          stencil.node.resize(capacity);
+          stencil.N.resize(capacity);
+          stencil.grad_N.resize(capacity);
+        }
+    };
+    ensure(n_local * n_vertices);
+
+    std::size_t k = 0, e = 0;
+    double      N[n_vertices];
+    Tensor<1, dim> grad_xi[n_vertices];
+    for (const GridCell<dim> &c : grid.cells)
+      {
+        const auto range = particles.handler.particles_in_cell(c.cell);
+        if (range.begin() == range.end())
+          continue;
+        const unsigned int *nodes = &grid.cell_nodes[c.first_node];
+        for (const auto &p : range)
+          {
+            const Point<dim> xi = p.get_reference_location();
+            for (unsigned int v = 0; v < n_vertices; ++v)
+              {
+                double value = 1;
+                for (unsigned int d = 0; d < dim; ++d)
+                  {
+                    const bool upper = (v >> d) & 1u;
+                    value *= upper ? xi[d] : 1. - xi[d];
+                    double g = upper ? 1. : -1.;
+                    for (unsigned int b = 0; b < dim; ++b)
+                      if (b != d)
+                        g *= ((v >> b) & 1u) ? xi[b] : 1. - xi[b];
+                    grad_xi[v][d] = g;
+                  }
+                N[v] = value;
+              }
+            const Tensor<2, dim> K =
+              c.affine ? c.inverse_jacobian : c.inverse_jacobian_at(xi);
+            stencil.begin[k] = e;
+            ensure(e + c.n_nodes);
+            if (c.first_weight == numbers::invalid_unsigned_int)
+              for (unsigned int v = 0; v < n_vertices; ++v, ++e)
+                {
+                  stencil.node[e]   = nodes[v];
+                  stencil.N[e]      = N[v];
+                  stencil.grad_N[e] = grad_xi[v] * K; // K^T grad_xi
+                }
+            else
+              {
+                const double *W = &grid.cell_node_weights[c.first_weight];
+                for (unsigned int n = 0; n < c.n_nodes; ++n, ++e)
+                  {
+                    double         value = 0;
+                    Tensor<1, dim> grad;
+                    for (unsigned int v = 0; v < n_vertices; ++v)
+                      {
+                        value += W[n * n_vertices + v] * N[v];
+                        grad += W[n * n_vertices + v] * grad_xi[v];
+                      }
+                    stencil.node[e]   = nodes[n];
+                    stencil.N[e]      = value;
+                    stencil.grad_N[e] = grad * K;
+                  }
+              }
+            ++k;
+          }
+      }
+    stencil.begin[k] = e;
+    AssertThrow(k == n_local, ExcInternalError());
+  }
+
+  template void
+  compute_linear_stencil(const BackgroundGrid<2> &, const ParticleSet<2> &, Stencil<2> &);
+  template void
+  compute_linear_stencil(const BackgroundGrid<3> &, const ParticleSet<3> &, Stencil<3> &);
+} // namespace dealmpm
