@@ -73,8 +73,22 @@ namespace dealmpm
       Simulation<dim>::declare_parameters(prm, shape);
       parse_file(prm, file, false);
       apply_overrides(prm, overrides);
-      Simulation<dim> simulation(prm, file, shape, MPI_COMM_WORLD);
-      simulation.run();
+      // Let the simulation (and its MPI-aware timer) die before an error
+      // leaves this function.
+      std::exception_ptr error;
+      {
+        Simulation<dim> simulation(prm, file, shape, MPI_COMM_WORLD);
+        try
+          {
+            simulation.run();
+          }
+        catch (...)
+          {
+            error = std::current_exception();
+          }
+      }
+      if (error)
+        std::rethrow_exception(error);
     }
   } // namespace
 

@@ -143,7 +143,6 @@ namespace dealmpm
     , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
     , scene_file(scene_file)
     , grid(comm)
-    , computing_timer(comm, pcout, TimerOutput::never, TimerOutput::wall_times)
   {
     SceneReader reader(prm, scene_file);
     read_run_settings(reader);
@@ -156,6 +155,8 @@ namespace dealmpm
 
     const ParticleCheck<dim> check = check_particles(grid, materials, *particles);
     max_signal_rate = Utilities::MPI::max(check.max_signal_rate, comm);
+    computing_timer =
+      std::make_unique<TimerOutput>(comm, pcout, TimerOutput::never, TimerOutput::wall_times);
   }
 
   template <int dim>
@@ -303,36 +304,36 @@ namespace dealmpm
   Simulation<dim>::advance(const double dt)
   {
     {
-      TimerOutput::Scope t(computing_timer, "stencil");
+      TimerOutput::Scope t(*computing_timer, "stencil");
       compute_linear_stencil(grid, *particles, stencil);
     }
     {
-      TimerOutput::Scope t(computing_timer, "P2G");
+      TimerOutput::Scope t(*computing_timer, "P2G");
       particle_to_grid(grid, *particles, stencil, fields);
     }
     for (unsigned int e = 0; e < effects.size(); ++e)
       {
-        TimerOutput::Scope t(computing_timer, "effect: " + effect_names[e]);
+        TimerOutput::Scope t(*computing_timer, "effect: " + effect_names[e]);
         effects[e]->add_nodal_forces(fields);
       }
     for (unsigned int e = 0; e < effects.size(); ++e)
       {
-        TimerOutput::Scope t(computing_timer, "effect: " + effect_names[e]);
+        TimerOutput::Scope t(*computing_timer, "effect: " + effect_names[e]);
         effects[e]->adjust_nodal_forces(fields);
       }
     {
-      TimerOutput::Scope t(computing_timer, "grid update");
+      TimerOutput::Scope t(*computing_timer, "grid update");
       update_nodal_velocity(fields, dt, mass_threshold, boundary_conditions);
     }
     bool left_cell;
     {
-      TimerOutput::Scope t(computing_timer, "G2P");
+      TimerOutput::Scope t(*computing_timer, "G2P");
       left_cell = grid_to_particle(grid, stencil, fields, dt, run_settings.flip_fraction,
                                    *particles, velocity_gradient);
     }
     ParticleCheck<dim> check;
     {
-      TimerOutput::Scope t(computing_timer, "stress update");
+      TimerOutput::Scope t(*computing_timer, "stress update");
       check = update_stresses(grid, materials, velocity_gradient, dt, *particles);
     }
     max_signal_rate = Utilities::MPI::max(check.max_signal_rate, comm);
@@ -351,7 +352,7 @@ namespace dealmpm
     ++step;
     if (Utilities::MPI::logical_or(left_cell, comm))
       {
-        TimerOutput::Scope t(computing_timer, "relocate");
+        TimerOutput::Scope t(*computing_timer, "relocate");
         relocate_particles();
       }
   }
@@ -384,7 +385,7 @@ namespace dealmpm
   void
   Simulation<dim>::write_output()
   {
-    TimerOutput::Scope t(computing_timer, "output");
+    TimerOutput::Scope t(*computing_timer, "output");
     const std::string &dir    = run_settings.output_directory;
     const bool         writer = Utilities::MPI::this_mpi_process(comm) == 0;
     if (run_settings.write_particles)
@@ -469,7 +470,7 @@ namespace dealmpm
 
     if (s.verbose)
       {
-        computing_timer.print_summary();
+        computing_timer->print_summary();
         const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
         const double rate = stepping_time > 0 ? particle_steps / stepping_time : 0;
         pcout << "dealmpm: " << step << " steps to t = " << current_time << ", "

@@ -11,15 +11,18 @@ namespace dealmpm
 
   template <int dim>
   void
-  LinearElastic<dim>::update_stress(const Tensor<2, dim> &L,
-                                    const Tensor<2, dim> &,
+  LinearElastic<dim>::update_stress(const Tensor<2, dim> &   L,
+                                    const Tensor<2, dim> &   F,
                                     const double             dt,
                                     SymmetricTensor<2, dim> &stress,
-                                    ArrayView<double>) const
+                                    ArrayView<double>        internal) const
   {
     const SymmetricTensor<2, dim> D = symmetrize(L);
-    stress += dt * (2. * lame.mu * D +
-                    lame.lambda * trace(D) * unit_symmetric_tensor<dim>());
+    const SymmetricTensor<2, dim> increment =
+      dt * (2. * lame.mu * D +
+            lame.lambda * trace(D) * unit_symmetric_tensor<dim>());
+    internal[0] += dt * determinant(F) * ((stress + 0.5 * increment) * D);
+    stress += increment;
   }
 
   template <int dim>
@@ -33,20 +36,11 @@ namespace dealmpm
 
   template <int dim>
   double
-  LinearElastic<dim>::strain_energy_density(
-    const Tensor<2, dim> &,
-    const SymmetricTensor<2, dim> &stress,
-    ArrayView<const double>) const
+  LinearElastic<dim>::strain_energy_density(const Tensor<2, dim> &,
+                                            const SymmetricTensor<2, dim> &,
+                                            ArrayView<const double> internal) const
   {
-    // Invert sigma = 2 mu eps + lambda tr(eps) I; in 2D (plane strain) the
-    // trace runs over the in-plane components, which is what dim gives.
-    const double trace_strain =
-      trace(stress) / (2. * lame.mu + dim * lame.lambda);
-    const SymmetricTensor<2, dim> strain =
-      (stress - lame.lambda * trace_strain * unit_symmetric_tensor<dim>()) /
-      (2. * lame.mu);
-    return lame.mu * (strain * strain) +
-           0.5 * lame.lambda * trace_strain * trace_strain;
+    return internal[0];
   }
 
   template class LinearElastic<2>;

@@ -123,7 +123,7 @@ namespace dealmpm
     TimerOutput &
     timer()
     {
-      return computing_timer;
+      return *computing_timer;
     }
 
   private:
@@ -156,7 +156,9 @@ namespace dealmpm
     Stencil<dim>                               stencil;
     std::vector<Tensor<2, dim>>                velocity_gradient;
     double                                     mass_threshold = 0;
-    mutable TimerOutput                        computing_timer;
+    /** Made last in the constructor: a TimerOutput destroyed while an
+     * input error propagates prints a warning about MPI. */
+    std::unique_ptr<TimerOutput>               computing_timer;
 
     double       current_time = 0;
     unsigned int step         = 0;

@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# One command for everything on Debian 12 (root or sudo, apt reachable):
+#   ./build.sh        install what is missing, build, run the default scene
+#   ./build.sh test   install what is missing, build, run the whole test suite
+# Both are idempotent: a second call only rebuilds what changed.
+set -euo pipefail
+cd "$(dirname "$0")"
+mode=${1:-run}
+case "$mode" in run|test) ;; *) echo "usage: ./build.sh [run|test]" >&2; exit 1 ;; esac
+
+packages="cmake g++ make libdeal.ii-dev libeigen3-dev libgtest-dev openmpi-bin libopenmpi-dev ccache python3"
+missing=""
+for p in $packages; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
+done
+if [ -n "$missing" ]; then
+  echo "build.sh: installing$missing"
+  sudo=""; [ "$(id -u)" = 0 ] || sudo="sudo"
+  $sudo apt-get update -q
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends $missing
+fi
+
+jobs=$(nproc 2>/dev/null || echo 2)
+[ -f build/CMakeCache.txt ] || cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+cmake --build build -j "$jobs"
+
+# Open MPI refuses to start as root unless told; ordinary users need nothing.
+if [ "$(id -u)" = 0 ]; then
+  export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+fi
+
+if [ "$mode" = run ]; then
+  ./build/dealmpm prm/colliding_disks.prm
+  echo "build.sh: open output/colliding_disks/particles.pvd in ParaView"
+else
+  cd build && ctest --output-on-failure -j "$jobs"
+fi

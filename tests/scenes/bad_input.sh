@@ -1,0 +1,46 @@
+#!/usr/bin/env bash
+# Bad input: one line on stderr naming the file/entry and what was expected,
+# exit code 2 (1 for a bad command line), and nothing written.
+set -uo pipefail
+dealmpm=$1 scene=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+failures=0
+
+expect() { # expected_code regex args...
+  local code=$1 regex=$2; shift 2
+  "$dealmpm" "$@" > out.txt 2> err.txt
+  local got=$?
+  local lines; lines=$(wc -l < err.txt)
+  if [ "$got" != "$code" ] || ! grep -Eq "$regex" err.txt || { [ "$code" = 2 ] && [ "$lines" != 1 ]; } || [ -e output ]; then
+    echo "FAIL: dealmpm $* -> exit $got (expected $code), stderr:"; cat err.txt
+    [ -e output ] && echo "  and it wrote output/"
+    failures=$((failures + 1))
+  else
+    echo "ok: $(head -c 200 err.txt | head -1)"
+  fi
+  rm -rf output
+}
+
+s=(-s "Output/Directory=output")
+expect 2 "cannot open the scene file" missing.prm
+printf 'set Dimension = 2\nset Frobnicate = 3\n' > unknown.prm
+expect 2 "unknown.prm.*Frobnicate" unknown.prm
+printf 'set Dimension = 2\nsubsection Time\n  set End time = soon\nend\n' > malformed.prm
+expect 2 "malformed.prm.*Time/End time.*expected a number" malformed.prm
+expect 2 "Material 1/Density.*expected a positive number" "$scene" "${s[@]}" -s "Material 1/Density=-1000"
+expect 2 "Poisson's ratio.*strictly between -1 and 0.5" "$scene" "${s[@]}" -s "Material 1/linear elastic/Poisson's ratio=0.5"
+expect 2 "Time/Time step.*expected a positive number" "$scene" "${s[@]}" -s "Time/Time step=0"
+expect 2 "Time/Time step.*expected a positive number" "$scene" "${s[@]}" -s "Time/Time step=-1e-3"
+expect 2 "Grid/Cells.*expected positive integers" "$scene" "${s[@]}" -s "Grid/Cells=0, 20"
+expect 2 "Grid/Cells.*expected 2 positive integers" "$scene" "${s[@]}" -s "Grid/Cells=20"
+expect 2 "Body 1/Shape.*inside the grid" "$scene" "${s[@]}" -s "Body 1/Center=3, 3"
+expect 2 "Grid/Mesh file.*readable Gmsh" "$scene" "${s[@]}" -s "Grid/Type=mesh file" -s "Grid/Mesh file=nowhere.msh"
+expect 2 "Body 1/Material.*material number from 1 to" "$scene" "${s[@]}" -s "Body 1/Material=3"
+expect 2 "Effects.*comma-separated list of" "$scene" "${s[@]}" -s "Effects=gravity, antigravity"
+expect 2 "command line: -s 'Grid/Colour=red'" "$scene" "${s[@]}" -s "Grid/Colour=red"
+expect 1 "unknown option" "$scene" --frobnicate
+
+if [ $failures -gt 0 ]; then echo "$failures bad-input case(s) failed"; exit 1; fi
+echo "all bad-input cases passed"

@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# Runs that cannot go on stop with the step, the particle and the reason
+# (exit 3) and leave their last good output; particles that leave the grid
+# are removed and counted, or stop the run, as the scene says.
+set -uo pipefail
+dealmpm=$1 scene=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+
+# An absurd time step blows up: stop with step, particle id and location.
+"$dealmpm" "$scene" -s "Output/Directory=unstable" -s "Time/Time step=0.5" \
+  -s "Time/End time=100" -s "Output/Interval=0.5" > out.txt 2> err.txt
+code=$?
+[ $code = 3 ] || fail "unstable run: exit $code, expected 3"
+grep -Eq "stopped: step [0-9]+ \(t = .*\): particle [0-9]+ at \(.*\): " err.txt \
+  || { fail "unstable run: message"; cat err.txt; }
+[ -s unstable/particles.pvd ] && [ -s unstable/statistics.csv ] \
+  || fail "unstable run: last good output missing"
+grep -q "particles_00000.pvtu" unstable/particles.pvd || fail "pvd lacks the first output"
+
+# Disks flying out of a grid with free boundaries.
+flying=(-s "Body 1/Velocity=-2, 0" -s "Body 2/Velocity=2, 0" -s "Time/End time=0.3"
+        -s "Output/Write particles=false")
+"$dealmpm" "$scene" "${flying[@]}" -s "Output/Directory=removed" > out.txt 2> err.txt
+code=$?
+[ $code = 0 ] || fail "remove policy: exit $code"
+grep -q "warning: step .* particle(s) left the grid (first: id" out.txt || fail "remove policy: no warning"
+lost=$(tail -1 removed/statistics.csv | awk -F, '{print $(NF-1)}')
+particles=$(tail -1 removed/statistics.csv | awk -F, '{print $4}')
+[ "$lost" != 0 ] && [ "$((lost + particles))" = 416 ] || fail "remove policy: lost $lost + left $particles != 416"
+
+"$dealmpm" "$scene" "${flying[@]}" -s "Output/Directory=stopped" \
+  -s "MPM/Particles leaving the grid=stop" > out.txt 2> err.txt
+code=$?
+[ $code = 3 ] || fail "stop policy: exit $code, expected 3"
+grep -q "left the grid (first: id [0-9]* at (" err.txt || fail "stop policy: message"
+
+if [ $failures -gt 0 ]; then echo "$failures case(s) failed"; exit 1; fi
+echo "all run-stop cases passed"

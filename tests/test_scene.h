@@ -1,0 +1,46 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <dealmpm/core/simulation.h>
+
+#include <memory>
+#include <random>
+#include <string>
+
+namespace dealmpm::test
+{
+  /** A Simulation from scene text, quiet (no progress line, no output). */
+  template <int dim>
+  std::unique_ptr<Simulation<dim>>
+  make_simulation(const std::string &text,
+                  const unsigned int n_bodies    = 1,
+                  const unsigned int n_materials = 1)
+  {
+    SceneShape shape;
+    shape.dim         = dim;
+    shape.n_bodies    = n_bodies;
+    shape.n_materials = n_materials;
+    ParameterHandler prm;
+    Simulation<dim>::declare_parameters(prm, shape);
+    prm.parse_input_from_string(text);
+    return std::make_unique<Simulation<dim>>(prm, "test.prm", shape, MPI_COMM_WORLD);
+  }
+
+  /** Move every particle to a random point of its cell. */
+  template <int dim>
+  void
+  scatter_particles_in_cells(Simulation<dim> &simulation, std::mt19937 &rng)
+  {
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (const auto &c : simulation.background_grid().cells)
+      for (auto &p : simulation.particle_set().handler.particles_in_cell(c.cell))
+        {
+          Point<dim> xi;
+          for (unsigned int d = 0; d < dim; ++d)
+            xi[d] = unit(rng);
+          p.set_reference_location(xi);
+          p.set_location(c.real_point(xi));
+        }
+  }
+} // namespace dealmpm::test
