@@ -22,9 +22,12 @@ namespace dealmpm
       const auto        pos    = text.find(marker);
       if (pos != std::string::npos)
         text = text.substr(pos + marker.size());
-      const auto dashes = text.find("-----");
-      if (dashes != std::string::npos)
-        text = text.substr(0, dashes);
+      for (const char *end : {"Stacktrace:", "-----"})
+        {
+          const auto cut = text.find(end);
+          if (cut != std::string::npos)
+            text = text.substr(0, cut);
+        }
       text = std::regex_replace(text, std::regex("\\s+"), " ");
       return Utilities::trim(text);
     }

@@ -41,6 +41,9 @@ expect 2 "Body 1/Material.*material number from 1 to" "$scene" "${s[@]}" -s "Bod
 expect 2 "Effects.*comma-separated list of" "$scene" "${s[@]}" -s "Effects=gravity, antigravity"
 expect 2 "command line: -s 'Grid/Colour=red'" "$scene" "${s[@]}" -s "Grid/Colour=red"
 expect 1 "unknown option" "$scene" --frobnicate
+# A model only the example registers: plain dealmpm names the entry and the models it knows.
+expect 2 "custom_material.prm: Line <[0-9]+> .*Saint Venant-Kirchhoff for the entry named Model does not match.*linear elastic\|neo-Hookean" \
+  "$(dirname "$scene")/../examples/custom_material.prm"
 
 if [ $failures -gt 0 ]; then echo "$failures bad-input case(s) failed"; exit 1; fi
 echo "all bad-input cases passed"
