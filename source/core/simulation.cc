@@ -1,4 +1,5 @@
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
 
 #include <dealmpm/core/errors.h>
 #include <dealmpm/core/simulation.h>
@@ -112,7 +113,8 @@ namespace dealmpm
                       "FLIP fraction for 'blend', in [0, 1].");
     prm.declare_entry("Nodal mass threshold", "1e-9", Patterns::Anything(),
                       "Nodes with mass below this fraction of the mean particle "
-                      "mass are inactive (no velocity), >= 0.");
+                      "mass are inactive (no velocity), in [0, 1e-3]: a guard "
+                      "against division by round-off, not a physical cut-off.");
     prm.declare_entry("Particles leaving the grid", "remove", Patterns::Selection("remove|stop"),
                       "'remove': drop them with a warning and count them in the "
                       "statistics; 'stop': end the run with a message.");
@@ -181,6 +183,10 @@ namespace dealmpm
       if (!(s.flip_fraction >= 0 && s.flip_fraction <= 1))
         reader.fail("Blend factor", "a number in [0, 1]");
       s.relative_mass_threshold   = reader.get_nonnegative("Nodal mass threshold");
+      if (s.relative_mass_threshold > 1e-3)
+        reader.fail("Nodal mass threshold",
+                    "a number in [0, 1e-3]: particles still use the nodes below it, "
+                    "which then have no velocity");
       s.stop_when_particles_leave = reader.get("Particles leaving the grid") == "stop";
     }
     {
@@ -408,6 +414,7 @@ namespace dealmpm
         write_particle_csv(*particles, name.str(), comm);
       }
     ++output_counter;
+    last_output_time = current_time;
   }
 
   template <int dim>
@@ -425,7 +432,8 @@ namespace dealmpm
     Statistics initial = statistics();
     if (s.verbose)
       pcout << "dealmpm: " << dim << "D, " << grid.triangulation.n_global_active_cells()
-            << " cells, " << grid.dof_handler.n_dofs() << " nodes, " << initial.n_particles
+            << " cells, " << grid.dof_handler.n_dofs() << " nodes, "
+            << static_cast<unsigned long>(initial.n_particles)
             << " particles, " << Utilities::MPI::n_mpi_processes(comm) << " rank(s); output in "
             << s.output_directory << "/" << std::endl;
     write_output();
@@ -449,7 +457,7 @@ namespace dealmpm
         catch (const RunError &error)
           {
             throw RunError(std::string(error.what()) + ". The last good output (t = " +
-                           std::to_string(current_time) + " or earlier) is in " +
+                           std::to_string(last_output_time) + ") is in " +
                            s.output_directory + "/");
           }
         stepping_time += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -476,6 +484,9 @@ namespace dealmpm
         pcout << "dealmpm: " << step << " steps to t = " << current_time << ", "
               << std::setprecision(4) << rate / 1e6 << " M particle-steps/s on " << n_ranks
               << " rank(s) (" << rate / 1e6 / n_ranks << " M per core)";
+        Utilities::System::MemoryStats memory;
+        Utilities::System::get_memory_stats(memory);
+        pcout << ", peak memory " << memory.VmHWM / 1024 << " MB on rank 0";
         if (lost_particles > 0)
           pcout << ", " << lost_particles << " particle(s) left the grid";
         pcout << std::endl;

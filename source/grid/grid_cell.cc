@@ -58,12 +58,12 @@ namespace dealmpm
   Point<dim>
   GridCell<dim>::reference_point(const Point<dim> &x) const
   {
+    if (affine)
+      return Point<dim>(inverse_jacobian * (x - vertices[0]));
     Point<dim> xi;
     for (unsigned int d = 0; d < dim; ++d)
       xi[d] = 0.5;
     xi += inverse_jacobian_at(xi) * (x - real_point(xi));
-    if (affine)
-      return xi;
     // Newton on the Q1 map; converges in a few steps for convex cells.
     for (unsigned int it = 0; it < 20; ++it)
       {

@@ -8,24 +8,21 @@ namespace dealmpm
   {
     /** Signal rate of one particle, or record why its state is unusable. */
     template <int dim, typename Accessor>
-    void
-    inspect(const Accessor &          p,
-            const Material<dim> &     material,
-            const CoreFields &        f,
-            const double              h,
-            ParticleCheck<dim> &      check)
+    inline void
+    inspect(const Accessor &               p,
+            const Tensor<1, dim> &         v,
+            const Tensor<2, dim> &         F,
+            const SymmetricTensor<2, dim> &stress,
+            const Material<dim> &          material,
+            const double                   h,
+            ParticleCheck<dim> &           check)
     {
-      const auto           props = p.get_properties();
-      const Tensor<1, dim> v     = read_vector<dim>(&props[f.velocity]);
-      const Tensor<2, dim> F = read_tensor<dim>(&props[f.deformation_gradient]);
-      const double         J = determinant(F);
-      double               sum = J + v.norm_square();
+      const double J   = determinant(F);
+      double       sum = J + v.norm_square();
+      for (unsigned int i = 0; i < SymmetricTensor<2, dim>::n_independent_components; ++i)
+        sum += stress.access_raw_entry(i);
       for (unsigned int d = 0; d < dim; ++d)
         sum += p.get_location()[d];
-      for (unsigned int i = 0;
-           i < SymmetricTensor<2, dim>::n_independent_components;
-           ++i)
-        sum += props[f.stress + i];
       const char *reason = nullptr;
       if (!std::isfinite(sum))
         reason = "non-finite position, velocity, deformation gradient or stress";
@@ -75,7 +72,13 @@ namespace dealmpm
             ArrayView<double>(&props[0] + particles.internal_offset[m],
                               particles.n_internal[m]));
           write_symmetric<dim>(&props[f.stress], stress);
-          inspect(p, material, f, c.h, check);
+          inspect(p,
+                  read_vector<dim>(&props[f.velocity]),
+                  read_tensor<dim>(&props[f.deformation_gradient]),
+                  stress,
+                  material,
+                  c.h,
+                  check);
           ++k;
         }
     return check;
@@ -91,11 +94,16 @@ namespace dealmpm
     const CoreFields & f = particles.fields;
     for (const GridCell<dim> &c : grid.cells)
       for (const auto &p : particles.handler.particles_in_cell(c.cell))
-        inspect(p,
-                *materials[static_cast<unsigned int>(p.get_properties()[f.material])],
-                f,
-                c.h,
-                check);
+        {
+          const auto props = p.get_properties();
+          inspect(p,
+                  read_vector<dim>(&props[f.velocity]),
+                  read_tensor<dim>(&props[f.deformation_gradient]),
+                  read_symmetric<dim>(&props[f.stress]),
+                  *materials[static_cast<unsigned int>(props[f.material])],
+                  c.h,
+                  check);
+        }
     return check;
   }
 

@@ -167,6 +167,7 @@ namespace dealmpm
     std::vector<std::pair<types::particle_index, Point<dim>>> lost_this_step;
 
     unsigned int output_counter = 0;
+    double       last_output_time = 0;
     std::string  last_output;
     ParticleOutput<dim> particle_output;
     PvdSeries    particle_series, grid_series;

@@ -37,8 +37,8 @@ namespace dealmpm
     setup(const BackgroundGrid<dim> &                        grid,
           const std::map<types::boundary_id, BoundaryKind> &kinds);
 
-    /** Project v* of the constrained locally owned nodes, and change the
-     * velocity increment v* - v by the same amount. */
+    /** Project v* and the velocity increment of the constrained locally
+     * owned nodes. */
     void
     apply(std::array<NodalVector, dim> &velocity,
           std::array<NodalVector, dim> &velocity_increment) const;

@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Speed of the explicit step on the elastic column (USL, linear shape
+# functions, 2^dim particles per cell, 200 steps, no output), one rank:
+# particle-steps per second per core, and memory per particle as the growth
+# of peak resident memory between sizes divided by the growth in particles.
+#   benchmarks/run_benchmarks.sh [path/to/dealmpm]
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+dealmpm=${1:-$here/../build/dealmpm}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+echo "| dim | cells | particles | M particle-steps/s/core | peak MB | bytes/particle (marginal) |"
+echo "|---|---|---|---|---|---|"
+run() { # dim cells
+  local dim=$1 cells=$2
+  "$dealmpm" "$here/elastic_column_${dim}d.prm" -s "Grid/Cells=$cells" \
+    -s "Output/Directory=$work/out" > "$work/log" 2>&1
+  local particles rate mb
+  particles=$(grep -o '[0-9]* particles,' "$work/log" | grep -o '[0-9]*')
+  rate=$(grep -o '([0-9.e+-]* M per core)' "$work/log" | grep -o '[0-9.e+-]*' | head -1)
+  mb=$(grep -o 'peak memory [0-9]* MB' "$work/log" | grep -o '[0-9]*')
+  local marginal="-"
+  if [ -n "${previous_particles:-}" ]; then
+    marginal=$(( (mb - previous_mb) * 1048576 / (particles - previous_particles) ))
+  fi
+  echo "| ${dim}D | $cells | $particles | $rate | $mb | $marginal |"
+  previous_particles=$particles previous_mb=$mb
+}
+previous_particles=""
+for cells in "32, 144" "64, 288" "128, 576" "256, 1152"; do run 2 "$cells"; done
+previous_particles=""
+for cells in "8, 8, 36" "16, 16, 72" "24, 24, 108"; do run 3 "$cells"; done
