@@ -331,17 +331,14 @@ namespace dealmpm
       TimerOutput::Scope t(*computing_timer, "grid update");
       update_nodal_velocity(fields, dt, mass_threshold, boundary_conditions);
     }
-    bool left_cell;
+    bool              left_cell;
+    StressUpdate<dim> stress_update(materials, *particles, dt);
     {
-      TimerOutput::Scope t(*computing_timer, "G2P");
+      TimerOutput::Scope t(*computing_timer, "G2P and stress update");
       left_cell = grid_to_particle(grid, stencil, fields, dt, run_settings.flip_fraction,
-                                   *particles, velocity_gradient);
+                                   *particles, stress_update);
     }
-    ParticleCheck<dim> check;
-    {
-      TimerOutput::Scope t(*computing_timer, "stress update");
-      check = update_stresses(grid, materials, velocity_gradient, dt, *particles);
-    }
+    const ParticleCheck<dim> &check = stress_update.check;
     max_signal_rate = Utilities::MPI::max(check.max_signal_rate, comm);
     const std::string failure = first_message(
       check.failed ? "particle " + std::to_string(check.particle) + " at " +

@@ -154,7 +154,6 @@ namespace dealmpm
     std::unique_ptr<ParticleSet<dim>>          particles;
     NodalFields<dim>                           fields;
     Stencil<dim>                               stencil;
-    std::vector<Tensor<2, dim>>                velocity_gradient;
     double                                     mass_threshold = 0;
     /** Made last in the constructor: a TimerOutput destroyed while an
      * input error propagates prints a warning about MPI. */

@@ -4,6 +4,7 @@
 #include <dealmpm/materials/material.h>
 #include <dealmpm/particles/particle_set.h>
 
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -23,19 +24,92 @@ namespace dealmpm
     types::particle_index particle        = 0;
     Point<dim>            location;
     std::string           reason;
+
+    /** Fold one particle into the check. */
+    template <typename Accessor>
+    void
+    inspect(const Accessor &               p,
+            const Tensor<1, dim> &         v,
+            const Tensor<2, dim> &         F,
+            const SymmetricTensor<2, dim> &stress,
+            const Material<dim> &          material,
+            const double                   h)
+    {
+      const double J   = determinant(F);
+      double       sum = J + v.norm_square();
+      for (unsigned int i = 0; i < SymmetricTensor<2, dim>::n_independent_components; ++i)
+        sum += stress.access_raw_entry(i);
+      for (unsigned int d = 0; d < dim; ++d)
+        sum += p.get_location()[d];
+      if (!std::isfinite(sum))
+        fail(p, "non-finite position, velocity, deformation gradient or stress");
+      else if (!(J > 0.))
+        fail(p, "deformation gradient with J <= 0 (the particle turned inside out: "
+                "time step too large, or cell crossing and tiny nodal masses; try a "
+                "smaller CFL number)");
+      else
+        max_signal_rate = std::max(max_signal_rate, (material.wave_speed(F) + v.norm()) / h);
+    }
+
+  private:
+    template <typename Accessor>
+    void
+    fail(const Accessor &p, const char *why)
+    {
+      if (failed)
+        return;
+      failed   = true;
+      particle = p.get_id();
+      location = p.get_location();
+      reason   = why;
+    }
   };
 
-  /** Stress update of every local particle with its material, using the
-   * velocity gradients of G2P (same particle order). */
+  /**
+   * The stress update of one particle with its material, from the velocity
+   * gradient and the updated F of G2P; folds the particle into a
+   * ParticleCheck. Passed to grid_to_particle() so it runs in the same sweep.
+   */
   template <int dim>
-  ParticleCheck<dim>
-  update_stresses(const BackgroundGrid<dim> &                        grid,
-                  const std::vector<std::unique_ptr<Material<dim>>> &materials,
-                  const std::vector<Tensor<2, dim>> &velocity_gradient,
-                  const double                       dt,
-                  ParticleSet<dim> &                 particles);
+  class StressUpdate
+  {
+  public:
+    StressUpdate(const std::vector<std::unique_ptr<Material<dim>>> &materials,
+                 const ParticleSet<dim> &                           particles,
+                 const double                                       dt)
+      : materials(materials)
+      , particles(particles)
+      , dt(dt)
+    {}
 
-  /** The same checks without a stress update (for the first time step). */
+    template <typename Accessor>
+    void
+    operator()(const Accessor &         p,
+               const ArrayView<double> &props,
+               const Tensor<2, dim> &   L,
+               const Tensor<2, dim> &   F,
+               const GridCell<dim> &    cell)
+    {
+      const CoreFields &      f        = particles.fields;
+      const unsigned int      m        = static_cast<unsigned int>(props[f.material]);
+      const Material<dim> &   material = *materials[m];
+      SymmetricTensor<2, dim> stress   = read_symmetric<dim>(&props[f.stress]);
+      material.update_stress(L, F, dt, stress,
+                             ArrayView<double>(props.data() + particles.internal_offset[m],
+                                               particles.n_internal[m]));
+      write_symmetric<dim>(&props[f.stress], stress);
+      check.inspect(p, read_vector<dim>(&props[f.velocity]), F, stress, material, cell.h);
+    }
+
+    ParticleCheck<dim> check;
+
+  private:
+    const std::vector<std::unique_ptr<Material<dim>>> &materials;
+    const ParticleSet<dim> &                           particles;
+    double                                             dt;
+  };
+
+  /** The checks without a stress update (for the first time step). */
   template <int dim>
   ParticleCheck<dim>
   check_particles(const BackgroundGrid<dim> &                        grid,

@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# The files a user opens: particles.pvd over .pvtu/.vtu with the named fields,
+# grid.pvd, statistics.csv with its columns, the particle CSV, the progress
+# line and the timing table.
+set -uo pipefail
+dealmpm=$1 scene=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+
+"$dealmpm" "$scene" -s "Output/Directory=out" -s "Time/End time=0.1" -s "Output/Interval=0.05" \
+  -s "Output/Write grid=true" -s "Output/Particle CSV=true" -s "Output/Progress interval=1e-9" \
+  > log.txt 2> err.txt || fail "exit code $?"
+for f in particles.pvd grid.pvd particles_00000.pvtu particles_00002.pvtu particles_00002.0.vtu \
+         grid_00002.pvtu grid_00002.0.vtu statistics.csv particles_00002.csv; do
+  [ -s "out/$f" ] || fail "missing out/$f"
+done
+[ "$(grep -c 'DataSet' out/particles.pvd)" = 3 ] || fail "particles.pvd should list 3 outputs"
+for field in id body material velocity displacement stress J volume mass stress_work; do
+  grep -q "Name=\"$field\"" out/particles_00002.0.vtu || fail "particle field $field missing"
+done
+for field in nodal_mass nodal_velocity_x level mpi_rank; do
+  grep -q "Name=\"$field\"" out/grid_00002.0.vtu || fail "grid field $field missing"
+done
+header="step,time,dt,n_particles,mass,momentum_x,momentum_y,kinetic_energy,strain_energy,gravitational_energy,total_energy,lost_particles,wall_time"
+[ "$(head -1 out/statistics.csv)" = "$header" ] || fail "statistics header: $(head -1 out/statistics.csv)"
+[ "$(wc -l < out/statistics.csv)" = 4 ] || fail "statistics.csv should have 3 rows"
+[ "$(head -1 out/particles_00002.csv)" = "id,x,y,vx,vy,ux,uy,J,body" ] || fail "particle CSV header"
+[ "$(wc -l < out/particles_00002.csv)" = 417 ] || fail "particle CSV should have 416 rows"
+grep -Eq "^step +[0-9]+ +t = .* dt = .*% +ETA [0-9]+:[0-9]{2}:[0-9]{2}" log.txt || fail "no progress line"
+grep -q "G2P and stress update" log.txt || fail "no timing table"
+grep -q "M particle-steps/s" log.txt || fail "no speed line"
+
+if [ $failures -gt 0 ]; then echo "$failures output check(s) failed"; cat log.txt; exit 1; fi
+echo "all output checks passed"
