@@ -8,7 +8,7 @@ cd "$(dirname "$0")"
 mode=${1:-run}
 case "$mode" in run|test) ;; *) echo "usage: ./build.sh [run|test]" >&2; exit 1 ;; esac
 
-packages="cmake g++ make libdeal.ii-dev libeigen3-dev libgtest-dev openmpi-bin libopenmpi-dev ccache python3"
+packages="cmake g++ make libdeal.ii-dev libeigen3-dev libgtest-dev openmpi-bin libopenmpi-dev ccache python3 clang-format"
 missing=""
 for p in $packages; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
@@ -21,6 +21,8 @@ if [ -n "$missing" ]; then
 fi
 
 jobs=$(nproc 2>/dev/null || echo 2)
+# ccache hits across clones of the project (CI builds a fresh clone).
+export CCACHE_BASEDIR="$PWD"
 [ -f build/CMakeCache.txt ] || cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j "$jobs"
 

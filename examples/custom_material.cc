@@ -10,7 +10,8 @@ using namespace dealmpm;
 
 namespace
 {
-  /** S = lambda tr(E) I + 2 mu E with E = (F^T F - I) / 2; sigma = F S F^T / J. */
+  /** S = lambda tr(E) I + 2 mu E with E = (F^T F - I) / 2; sigma = F S F^T / J.
+   */
   template <int dim>
   class SaintVenantKirchhoff : public Material<dim>
   {
@@ -21,13 +22,14 @@ namespace
 
     void
     update_stress(const Tensor<2, dim> &,
-                  const Tensor<2, dim> &   F,
+                  const Tensor<2, dim> &F,
                   const double,
                   SymmetricTensor<2, dim> &stress,
                   ArrayView<double>) const override
     {
       const SymmetricTensor<2, dim> S = second_piola_kirchhoff(F);
-      stress = symmetrize(F * Tensor<2, dim>(S) * transpose(F)) / determinant(F);
+      stress =
+        symmetrize(F * Tensor<2, dim>(S) * transpose(F)) / determinant(F);
     }
 
     double
@@ -49,14 +51,16 @@ namespace
     static SymmetricTensor<2, dim>
     green_lagrange(const Tensor<2, dim> &F)
     {
-      return 0.5 * (symmetrize(transpose(F) * F) - unit_symmetric_tensor<dim>());
+      return 0.5 *
+             (symmetrize(transpose(F) * F) - unit_symmetric_tensor<dim>());
     }
 
     SymmetricTensor<2, dim>
     second_piola_kirchhoff(const Tensor<2, dim> &F) const
     {
       const SymmetricTensor<2, dim> E = green_lagrange(F);
-      return lame.lambda * trace(E) * unit_symmetric_tensor<dim>() + 2 * lame.mu * E;
+      return lame.lambda * trace(E) * unit_symmetric_tensor<dim>() +
+             2 * lame.mu * E;
     }
 
     LameParameters lame;
@@ -72,7 +76,8 @@ namespace
       "registered by examples/custom_material.cc.",
       [](ParameterHandler &prm) { declare_elastic_constants(prm, 1e3, 0.3); },
       [](SceneReader &reader) -> std::unique_ptr<Material<dim>> {
-        return std::make_unique<SaintVenantKirchhoff<dim>>(read_elastic_constants(reader));
+        return std::make_unique<SaintVenantKirchhoff<dim>>(
+          read_elastic_constants(reader));
       });
   }
 } // namespace

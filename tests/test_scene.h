@@ -24,7 +24,10 @@ namespace dealmpm::test
     ParameterHandler prm;
     Simulation<dim>::declare_parameters(prm, shape);
     prm.parse_input_from_string(text);
-    return std::make_unique<Simulation<dim>>(prm, "test.prm", shape, MPI_COMM_WORLD);
+    return std::make_unique<Simulation<dim>>(prm,
+                                             "test.prm",
+                                             shape,
+                                             MPI_COMM_WORLD);
   }
 
   /** Move every particle to a random point of its cell. */
@@ -34,7 +37,8 @@ namespace dealmpm::test
   {
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     for (const auto &c : simulation.background_grid().cells)
-      for (auto &p : simulation.particle_set().handler.particles_in_cell(c.cell))
+      for (auto &p :
+           simulation.particle_set().handler.particles_in_cell(c.cell))
         {
           Point<dim> xi;
           for (unsigned int d = 0; d < dim; ++d)

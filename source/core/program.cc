@@ -33,13 +33,18 @@ namespace dealmpm
     }
 
     void
-    parse_file(ParameterHandler &prm, const std::string &file, const bool skip_undefined)
+    parse_file(ParameterHandler  &prm,
+               const std::string &file,
+               const bool         skip_undefined)
     {
       if (!std::ifstream(file))
         throw InputError(file + ": cannot open the scene file");
       try
         {
-          prm.parse_input(file, "", skip_undefined, /*assert_mandatory_entries_are_found=*/false);
+          prm.parse_input(file,
+                          "",
+                          skip_undefined,
+                          /*assert_mandatory_entries_are_found=*/false);
         }
       catch (const std::exception &e)
         {
@@ -68,9 +73,9 @@ namespace dealmpm
 
     template <int dim>
     void
-    run_scene(const std::string &             file,
+    run_scene(const std::string              &file,
               const std::vector<std::string> &overrides,
-              const SceneShape &              shape)
+              const SceneShape               &shape)
     {
       ParameterHandler prm;
       Simulation<dim>::declare_parameters(prm, shape);
@@ -96,14 +101,17 @@ namespace dealmpm
   } // namespace
 
   void
-  apply_overrides(ParameterHandler &prm, const std::vector<std::string> &overrides)
+  apply_overrides(ParameterHandler               &prm,
+                  const std::vector<std::string> &overrides)
   {
     for (const auto &item : overrides)
       {
         const auto equal = item.find('=');
         if (equal == std::string::npos)
-          throw InputError("command line: -s '" + item + "': expected 'Section/Entry=value'");
-        const auto path = Utilities::split_string_list(item.substr(0, equal), '/');
+          throw InputError("command line: -s '" + item +
+                           "': expected 'Section/Entry=value'");
+        const auto path =
+          Utilities::split_string_list(item.substr(0, equal), '/');
         const std::string value = Utilities::trim(item.substr(equal + 1));
         for (unsigned int i = 0; i + 1 < path.size(); ++i)
           prm.enter_subsection(path[i]);
@@ -123,7 +131,8 @@ namespace dealmpm
   }
 
   SceneShape
-  read_scene_shape(const std::string &file, const std::vector<std::string> &overrides)
+  read_scene_shape(const std::string              &file,
+                   const std::vector<std::string> &overrides)
   {
     ParameterHandler prm;
     prm.declare_entry("Dimension", "2", Patterns::Integer(2, 3));
@@ -133,7 +142,8 @@ namespace dealmpm
       parse_file(prm, file, true);
     std::vector<std::string> top_level;
     for (const auto &item : overrides)
-      for (const std::string name : {"Dimension", "Number of bodies", "Number of materials"})
+      for (const std::string name :
+           {"Dimension", "Number of bodies", "Number of materials"})
         if (item.rfind(name + "=", 0) == 0 || item.rfind(name + " =", 0) == 0)
           top_level.push_back(item);
     apply_overrides(prm, top_level);
@@ -148,8 +158,8 @@ namespace dealmpm
   run_program(int argc, char **argv)
   {
     Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-    const bool               root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-    std::string              file;
+    const bool  root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+    std::string file;
     std::vector<std::string> overrides;
     bool                     print_parameters = false;
     for (int i = 1; i < argc; ++i)
@@ -168,8 +178,9 @@ namespace dealmpm
         else if (arg.rfind("-", 0) == 0 || !file.empty())
           {
             if (root)
-              std::cerr << "dealmpm: unknown option or second scene file '" << arg
-                        << "'\n\n" << usage;
+              std::cerr << "dealmpm: unknown option or second scene file '"
+                        << arg << "'\n\n"
+                        << usage;
             return 1;
           }
         else

@@ -49,16 +49,29 @@ namespace dealmpm
 
   template <int dim>
   void
-  Simulation<dim>::declare_parameters(ParameterHandler &prm, const SceneShape &shape)
+  Simulation<dim>::declare_parameters(ParameterHandler &prm,
+                                      const SceneShape &shape)
   {
-    prm.declare_entry("Dimension", "2", Patterns::Integer(2, 3), "2 (plane strain) or 3.");
-    prm.declare_entry("Number of bodies", "1", Patterns::Integer(1, 10000),
-                      "How many 'Body N' sections the scene has (N = 1, 2, ...).");
-    prm.declare_entry("Number of materials", "1", Patterns::Integer(1, 10000),
+    prm.declare_entry("Dimension",
+                      "2",
+                      Patterns::Integer(2, 3),
+                      "2 (plane strain) or 3.");
+    prm.declare_entry(
+      "Number of bodies",
+      "1",
+      Patterns::Integer(1, 10000),
+      "How many 'Body N' sections the scene has (N = 1, 2, ...).");
+    prm.declare_entry("Number of materials",
+                      "1",
+                      Patterns::Integer(1, 10000),
                       "How many 'Material N' sections the scene has.");
-    prm.declare_entry("Effects", "", Patterns::Anything(),
-                      "Comma-separated optional physics; what is not listed costs "
-                      "nothing. Available: " + effect_registry<dim>().describe());
+    prm.declare_entry(
+      "Effects",
+      "",
+      Patterns::Anything(),
+      "Comma-separated optional physics; what is not listed costs "
+      "nothing. Available: " +
+        effect_registry<dim>().describe());
 
     BackgroundGrid<dim>::declare_parameters(prm);
     BoundaryConditions<dim>::declare_parameters(prm);
@@ -72,10 +85,16 @@ namespace dealmpm
     for (unsigned int m = 1; m <= shape.n_materials; ++m)
       {
         prm.enter_subsection("Material " + std::to_string(m));
-        prm.declare_entry("Model", "linear elastic", Patterns::Selection(models.pattern()),
-                          "Constitutive model: " + models.describe() +
-                            "Its parameters go in a subsection named after it.");
-        prm.declare_entry("Density", "1000", Patterns::Anything(), "Reference density (kg/m^3), > 0.");
+        prm.declare_entry(
+          "Model",
+          "linear elastic",
+          Patterns::Selection(models.pattern()),
+          "Constitutive model: " + models.describe() +
+            "Its parameters go in a subsection named after it.");
+        prm.declare_entry("Density",
+                          "1000",
+                          Patterns::Anything(),
+                          "Reference density (kg/m^3), > 0.");
         for (const auto &name : models.names())
           {
             prm.enter_subsection(name);
@@ -92,54 +111,97 @@ namespace dealmpm
       }
 
     prm.enter_subsection("Time");
-    prm.declare_entry("End time", "1", Patterns::Anything(), "Simulated time (s), > 0.");
-    prm.declare_entry("Time step method", "CFL", Patterns::Selection("CFL|fixed"),
-                      "'CFL': dt = CFL number x min over particles of h / (c_p + |v_p|), "
-                      "recomputed every step; 'fixed': Time step.");
-    prm.declare_entry("Time step", "1e-3", Patterns::Anything(), "Fixed time step (s), > 0.");
-    prm.declare_entry("CFL number", "0.5", Patterns::Anything(), "CFL number C, 0 < C <= 1.");
-    prm.declare_entry("Maximum number of steps", "0", Patterns::Integer(0),
+    prm.declare_entry("End time",
+                      "1",
+                      Patterns::Anything(),
+                      "Simulated time (s), > 0.");
+    prm.declare_entry(
+      "Time step method",
+      "CFL",
+      Patterns::Selection("CFL|fixed"),
+      "'CFL': dt = CFL number x min over particles of h / (c_p + |v_p|), "
+      "recomputed every step; 'fixed': Time step.");
+    prm.declare_entry("Time step",
+                      "1e-3",
+                      Patterns::Anything(),
+                      "Fixed time step (s), > 0.");
+    prm.declare_entry("CFL number",
+                      "0.5",
+                      Patterns::Anything(),
+                      "CFL number C, 0 < C <= 1.");
+    prm.declare_entry("Maximum number of steps",
+                      "0",
+                      Patterns::Integer(0),
                       "Stop after this many steps (0: no limit).");
     prm.leave_subsection();
 
     prm.enter_subsection("MPM");
-    prm.declare_entry("Stress update", "USL", Patterns::Selection("USL"),
+    prm.declare_entry("Stress update",
+                      "USL",
+                      Patterns::Selection("USL"),
                       "Order of the stages: USL (update stress last).");
-    prm.declare_entry("Velocity update", "FLIP", Patterns::Selection("FLIP|PIC|blend"),
-                      "Particle velocity from the grid: FLIP (increment, little "
-                      "dissipation), PIC (interpolated velocity, dissipative), or "
-                      "blend (Blend factor x FLIP + (1 - Blend factor) x PIC).");
-    prm.declare_entry("Blend factor", "0.99", Patterns::Anything(),
+    prm.declare_entry(
+      "Velocity update",
+      "FLIP",
+      Patterns::Selection("FLIP|PIC|blend"),
+      "Particle velocity from the grid: FLIP (increment, little "
+      "dissipation), PIC (interpolated velocity, dissipative), or "
+      "blend (Blend factor x FLIP + (1 - Blend factor) x PIC).");
+    prm.declare_entry("Blend factor",
+                      "0.99",
+                      Patterns::Anything(),
                       "FLIP fraction for 'blend', in [0, 1].");
-    prm.declare_entry("Nodal mass threshold", "1e-9", Patterns::Anything(),
-                      "Nodes with mass below this fraction of the mean particle "
-                      "mass are inactive (no velocity), in [0, 1e-3]: a guard "
-                      "against division by round-off, not a physical cut-off.");
-    prm.declare_entry("Particles leaving the grid", "remove", Patterns::Selection("remove|stop"),
-                      "'remove': drop them with a warning and count them in the "
-                      "statistics; 'stop': end the run with a message.");
+    prm.declare_entry(
+      "Nodal mass threshold",
+      "1e-9",
+      Patterns::Anything(),
+      "Nodes with mass below this fraction of the mean particle "
+      "mass are inactive (no velocity), in [0, 1e-3]: a guard "
+      "against division by round-off, not a physical cut-off.");
+    prm.declare_entry(
+      "Particles leaving the grid",
+      "remove",
+      Patterns::Selection("remove|stop"),
+      "'remove': drop them with a warning and count them in the "
+      "statistics; 'stop': end the run with a message.");
     prm.leave_subsection();
 
     prm.enter_subsection("Output");
-    prm.declare_entry("Directory", "output", Patterns::Anything(),
-                      "Folder for all output (created; relative to the working directory).");
-    prm.declare_entry("Interval", "0.1", Patterns::Anything(),
-                      "Simulated time between outputs (s); 0: only the first and last step.");
-    prm.declare_entry("Write particles", "true", Patterns::Bool(),
+    prm.declare_entry(
+      "Directory",
+      "output",
+      Patterns::Anything(),
+      "Folder for all output (created; relative to the working directory).");
+    prm.declare_entry(
+      "Interval",
+      "0.1",
+      Patterns::Anything(),
+      "Simulated time between outputs (s); 0: only the first and last step.");
+    prm.declare_entry("Write particles",
+                      "true",
+                      Patterns::Bool(),
                       "Particle .vtu/.pvtu files and particles.pvd.");
-    prm.declare_entry("Write grid", "false", Patterns::Bool(),
-                      "Grid .vtu/.pvtu files (nodal mass and velocity, level, rank) and grid.pvd.");
-    prm.declare_entry("Particle CSV", "false", Patterns::Bool(),
-                      "Also particles_NNNNN.csv (id, position, velocity, displacement, J, body).");
-    prm.declare_entry("Progress interval", "5", Patterns::Anything(),
+    prm.declare_entry(
+      "Write grid",
+      "false",
+      Patterns::Bool(),
+      "Grid .vtu/.pvtu files (nodal mass and velocity, level, rank) and grid.pvd.");
+    prm.declare_entry(
+      "Particle CSV",
+      "false",
+      Patterns::Bool(),
+      "Also particles_NNNNN.csv (id, position, velocity, displacement, J, body).");
+    prm.declare_entry("Progress interval",
+                      "5",
+                      Patterns::Anything(),
                       "Seconds of wall time between progress lines (0: none).");
     prm.leave_subsection();
   }
 
   template <int dim>
-  Simulation<dim>::Simulation(ParameterHandler & prm,
+  Simulation<dim>::Simulation(ParameterHandler  &prm,
                               const std::string &scene_file,
-                              const SceneShape & shape,
+                              const SceneShape  &shape,
                               const MPI_Comm     comm)
     : comm(comm)
     , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
@@ -155,10 +217,13 @@ namespace dealmpm
     create_particles(reader, shape);
     fields.reinit(grid.partitioner);
 
-    const ParticleCheck<dim> check = check_particles(grid, materials, *particles);
+    const ParticleCheck<dim> check =
+      check_particles(grid, materials, *particles);
     max_signal_rate = Utilities::MPI::max(check.max_signal_rate, comm);
-    computing_timer =
-      std::make_unique<TimerOutput>(comm, pcout, TimerOutput::never, TimerOutput::wall_times);
+    computing_timer = std::make_unique<TimerOutput>(comm,
+                                                    pcout,
+                                                    TimerOutput::never,
+                                                    TimerOutput::wall_times);
   }
 
   template <int dim>
@@ -177,17 +242,23 @@ namespace dealmpm
       s.max_steps = reader.get_integer("Maximum number of steps");
     }
     {
-      SectionScope mpm(reader, "MPM");
+      SectionScope      mpm(reader, "MPM");
       const std::string update = reader.get("Velocity update");
-      s.flip_fraction = update == "FLIP" ? 1. : (update == "PIC" ? 0. : reader.get_double("Blend factor"));
+      s.flip_fraction =
+        update == "FLIP" ?
+          1. :
+          (update == "PIC" ? 0. : reader.get_double("Blend factor"));
       if (!(s.flip_fraction >= 0 && s.flip_fraction <= 1))
         reader.fail("Blend factor", "a number in [0, 1]");
-      s.relative_mass_threshold   = reader.get_nonnegative("Nodal mass threshold");
+      s.relative_mass_threshold =
+        reader.get_nonnegative("Nodal mass threshold");
       if (s.relative_mass_threshold > 1e-3)
-        reader.fail("Nodal mass threshold",
-                    "a number in [0, 1e-3]: particles still use the nodes below it, "
-                    "which then have no velocity");
-      s.stop_when_particles_leave = reader.get("Particles leaving the grid") == "stop";
+        reader.fail(
+          "Nodal mass threshold",
+          "a number in [0, 1e-3]: particles still use the nodes below it, "
+          "which then have no velocity");
+      s.stop_when_particles_leave =
+        reader.get("Particles leaving the grid") == "stop";
     }
     {
       SectionScope output(reader, "Output");
@@ -208,7 +279,7 @@ namespace dealmpm
   {
     for (unsigned int m = 1; m <= shape.n_materials; ++m)
       {
-        SectionScope section(reader, "Material " + std::to_string(m));
+        SectionScope      section(reader, "Material " + std::to_string(m));
         const std::string model   = reader.get("Model");
         const double      density = reader.get_positive("Density");
         SectionScope      parameters(reader, model);
@@ -223,11 +294,14 @@ namespace dealmpm
   Simulation<dim>::read_effects(SceneReader &reader)
   {
     const auto &registry = effect_registry<dim>();
-    for (const auto &name : Utilities::split_string_list(reader.get("Effects"), ','))
+    for (const auto &name :
+         Utilities::split_string_list(reader.get("Effects"), ','))
       {
         if (!registry.has(name))
-          reader.fail("Effects", "a comma-separated list of: " + registry.describe());
-        if (std::find(effect_names.begin(), effect_names.end(), name) != effect_names.end())
+          reader.fail("Effects",
+                      "a comma-separated list of: " + registry.describe());
+        if (std::find(effect_names.begin(), effect_names.end(), name) !=
+            effect_names.end())
           reader.fail("Effects", "each effect listed once");
         SectionScope section(reader, section_title(name));
         effects.push_back(registry.get(name).create(reader));
@@ -237,30 +311,35 @@ namespace dealmpm
 
   template <int dim>
   void
-  Simulation<dim>::create_particles(SceneReader &reader, const SceneShape &shape)
+  Simulation<dim>::create_particles(SceneReader      &reader,
+                                    const SceneShape &shape)
   {
     for (unsigned int b = 1; b <= shape.n_bodies; ++b)
       {
         SectionScope section(reader, "Body " + std::to_string(b));
         bodies.push_back(Body<dim>::read(reader, shape.n_materials));
         const BoundingBox<dim> box = bodies.back().shape->bounding_box();
-        const auto &g = grid.bounding_box.get_boundary_points();
-        const auto &s = box.get_boundary_points();
-        const double tolerance = 1e-10 * grid.bounding_box.side_length(0);
+        const auto            &g   = grid.bounding_box.get_boundary_points();
+        const auto            &s   = box.get_boundary_points();
+        const double tolerance     = 1e-10 * grid.bounding_box.side_length(0);
         for (unsigned int d = 0; d < dim; ++d)
-          if (s.first[d] < g.first[d] - tolerance || s.second[d] > g.second[d] + tolerance)
+          if (s.first[d] < g.first[d] - tolerance ||
+              s.second[d] > g.second[d] + tolerance)
             reader.fail("Shape",
-                        "a body inside the grid " + format_point(&g.first[0], dim) +
-                          " - " + format_point(&g.second[0], dim) +
-                          ", but it spans " + format_point(&s.first[0], dim) +
-                          " - " + format_point(&s.second[0], dim));
+                        "a body inside the grid " +
+                          format_point(&g.first[0], dim) + " - " +
+                          format_point(&g.second[0], dim) + ", but it spans " +
+                          format_point(&s.first[0], dim) + " - " +
+                          format_point(&s.second[0], dim));
       }
 
     std::vector<std::vector<FieldDescription>> internal;
     for (const auto &m : materials)
       internal.push_back(m->internal_variables());
-    particles = std::make_unique<ParticleSet<dim>>(grid.triangulation, *grid.mapping,
-                                                   material_models, internal);
+    particles = std::make_unique<ParticleSet<dim>>(grid.triangulation,
+                                                   *grid.mapping,
+                                                   material_models,
+                                                   internal);
     particles->handler.signals.particle_lost.connect(
       [this](const typename Particles::ParticleIterator<dim> &p,
              const typename Triangulation<dim>::active_cell_iterator &) {
@@ -273,19 +352,22 @@ namespace dealmpm
         std::vector<double> initial(particles->n_internal[m], 0.);
         materials[m]->initialize_internal_variables(make_array_view(initial));
         const double created = Utilities::MPI::sum(
-          double(generate_particles(bodies[b], b, materials[m]->density, grid, *particles, initial)),
+          double(generate_particles(
+            bodies[b], b, materials[m]->density, grid, *particles, initial)),
           comm);
         if (created == 0)
           {
             SectionScope section(reader, "Body " + std::to_string(b + 1));
-            reader.fail("Shape", "a body that covers at least one particle position of "
-                                 "the grid (it is smaller than the particle spacing or "
-                                 "outside the grid)");
+            reader.fail("Shape",
+                        "a body that covers at least one particle position of "
+                        "the grid (it is smaller than the particle spacing or "
+                        "outside the grid)");
           }
       }
     particles->handler.update_cached_numbers();
     const Statistics s = statistics();
-    mass_threshold = run_settings.relative_mass_threshold * s.mass / s.n_particles;
+    mass_threshold =
+      run_settings.relative_mass_threshold * s.mass / s.n_particles;
   }
 
   template <int dim>
@@ -335,20 +417,28 @@ namespace dealmpm
     StressUpdate<dim> stress_update(materials, *particles, dt);
     {
       TimerOutput::Scope t(*computing_timer, "G2P and stress update");
-      left_cell = grid_to_particle(grid, stencil, fields, dt, run_settings.flip_fraction,
-                                   *particles, stress_update);
+      left_cell = grid_to_particle(grid,
+                                   stencil,
+                                   fields,
+                                   dt,
+                                   run_settings.flip_fraction,
+                                   *particles,
+                                   stress_update);
     }
     const ParticleCheck<dim> &check = stress_update.check;
     max_signal_rate = Utilities::MPI::max(check.max_signal_rate, comm);
-    const std::string failure = first_message(
-      check.failed ? "particle " + std::to_string(check.particle) + " at " +
-                       format_point(&check.location[0], dim) + ": " + check.reason
-                   : "",
-      comm);
+    const std::string failure =
+      first_message(check.failed ?
+                      "particle " + std::to_string(check.particle) + " at " +
+                        format_point(&check.location[0], dim) + ": " +
+                        check.reason :
+                      "",
+                    comm);
     if (!failure.empty())
       {
         std::ostringstream message;
-        message << "step " << step + 1 << " (t = " << current_time + dt << "): " << failure;
+        message << "step " << step + 1 << " (t = " << current_time + dt
+                << "): " << failure;
         throw RunError(message.str());
       }
     current_time += dt;
@@ -366,21 +456,24 @@ namespace dealmpm
   {
     lost_this_step.clear();
     particles->handler.sort_particles_into_subdomains_and_cells();
-    const double n_lost = Utilities::MPI::sum(double(lost_this_step.size()), comm);
+    const double n_lost =
+      Utilities::MPI::sum(double(lost_this_step.size()), comm);
     if (n_lost == 0)
       return;
     lost_particles += n_lost;
-    const std::string first = first_message(
-      lost_this_step.empty() ? "" :
-        "id " + std::to_string(lost_this_step[0].first) + " at " +
-          format_point(&lost_this_step[0].second[0], dim),
-      comm);
+    const std::string first =
+      first_message(lost_this_step.empty() ?
+                      "" :
+                      "id " + std::to_string(lost_this_step[0].first) + " at " +
+                        format_point(&lost_this_step[0].second[0], dim),
+                    comm);
     std::ostringstream message;
     message << "step " << step << " (t = " << current_time << "): " << n_lost
             << " particle(s) left the grid (first: " << first << ")";
     if (run_settings.stop_when_particles_leave)
-      throw RunError(message.str() + "; set 'MPM/Particles leaving the grid = remove' "
-                                     "to drop such particles instead");
+      throw RunError(message.str() +
+                     "; set 'MPM/Particles leaving the grid = remove' "
+                     "to drop such particles instead");
     pcout << "warning: " << message.str() << "; removed" << std::endl;
   }
 
@@ -396,18 +489,22 @@ namespace dealmpm
         particle_output.build_patches(*particles);
         last_output = particle_output.write(dir, output_counter, comm);
         if (writer)
-          particle_series.add_and_write(current_time, last_output, dir + "/particles.pvd");
+          particle_series.add_and_write(current_time,
+                                        last_output,
+                                        dir + "/particles.pvd");
       }
     if (run_settings.write_grid)
       {
-        const std::string name = write_grid_output(grid, fields, dir, output_counter);
+        const std::string name =
+          write_grid_output(grid, fields, dir, output_counter);
         if (writer)
           grid_series.add_and_write(current_time, name, dir + "/grid.pvd");
       }
     if (run_settings.write_particle_csv)
       {
         std::ostringstream name;
-        name << dir << "/particles_" << std::setw(5) << std::setfill('0') << output_counter << ".csv";
+        name << dir << "/particles_" << std::setw(5) << std::setfill('0')
+             << output_counter << ".csv";
         write_particle_csv(*particles, name.str(), comm);
       }
     ++output_counter;
@@ -424,22 +521,23 @@ namespace dealmpm
       std::filesystem::create_directories(s.output_directory);
     MPI_Barrier(comm);
     StatisticsFile stats(s.output_directory + "/statistics.csv", dim, writer);
-    Progress       progress(std::cout, s.progress_interval, writer && s.verbose);
+    Progress progress(std::cout, s.progress_interval, writer && s.verbose);
 
     Statistics initial = statistics();
     if (s.verbose)
-      pcout << "dealmpm: " << dim << "D, " << grid.triangulation.n_global_active_cells()
-            << " cells, " << grid.dof_handler.n_dofs() << " nodes, "
-            << static_cast<unsigned long>(initial.n_particles)
-            << " particles, " << Utilities::MPI::n_mpi_processes(comm) << " rank(s); output in "
+      pcout << "dealmpm: " << dim << "D, "
+            << grid.triangulation.n_global_active_cells() << " cells, "
+            << grid.dof_handler.n_dofs() << " nodes, "
+            << static_cast<unsigned long>(initial.n_particles) << " particles, "
+            << Utilities::MPI::n_mpi_processes(comm) << " rank(s); output in "
             << s.output_directory << "/" << std::endl;
     write_output();
     stats.write_row(0, 0., 0., initial, 0, progress.elapsed_seconds());
 
-    double next_output     = s.output_interval;
-    double particle_steps  = 0;
-    double stepping_time   = 0;
-    double dt              = 0;
+    double       next_output    = s.output_interval;
+    double       particle_steps = 0;
+    double       stepping_time  = 0;
+    double       dt             = 0;
     const double time_tolerance = 1e-9 * s.end_time;
     while (current_time < s.end_time - time_tolerance &&
            (s.max_steps == 0 || step < s.max_steps))
@@ -453,21 +551,30 @@ namespace dealmpm
           }
         catch (const RunError &error)
           {
-            throw RunError(std::string(error.what()) + ". The last good output (t = " +
+            throw RunError(std::string(error.what()) +
+                           ". The last good output (t = " +
                            std::to_string(last_output_time) + ") is in " +
                            s.output_directory + "/");
           }
-        stepping_time += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        stepping_time += std::chrono::duration<double>(
+                           std::chrono::steady_clock::now() - start)
+                           .count();
         particle_steps += n_particles;
 
         const bool last = !(current_time < s.end_time - time_tolerance) ||
                           (s.max_steps != 0 && step >= s.max_steps);
-        if (last || (s.output_interval > 0 && current_time >= next_output - time_tolerance))
+        if (last || (s.output_interval > 0 &&
+                     current_time >= next_output - time_tolerance))
           {
-            while (s.output_interval > 0 && next_output <= current_time + time_tolerance)
+            while (s.output_interval > 0 &&
+                   next_output <= current_time + time_tolerance)
               next_output += s.output_interval;
             write_output();
-            stats.write_row(step, current_time, dt, statistics(), lost_particles,
+            stats.write_row(step,
+                            current_time,
+                            dt,
+                            statistics(),
+                            lost_particles,
                             progress.elapsed_seconds());
           }
         progress.update(step, current_time, dt, s.end_time, n_particles);
@@ -477,10 +584,12 @@ namespace dealmpm
       {
         computing_timer->print_summary();
         const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
-        const double rate = stepping_time > 0 ? particle_steps / stepping_time : 0;
+        const double       rate =
+          stepping_time > 0 ? particle_steps / stepping_time : 0;
         pcout << "dealmpm: " << step << " steps to t = " << current_time << ", "
-              << std::setprecision(4) << rate / 1e6 << " M particle-steps/s on " << n_ranks
-              << " rank(s) (" << rate / 1e6 / n_ranks << " M per core)";
+              << std::setprecision(4) << rate / 1e6 << " M particle-steps/s on "
+              << n_ranks << " rank(s) (" << rate / 1e6 / n_ranks
+              << " M per core)";
         Utilities::System::MemoryStats memory;
         Utilities::System::get_memory_stats(memory);
         pcout << ", peak memory " << memory.VmHWM / 1024 << " MB on rank 0";

@@ -6,10 +6,11 @@ namespace dealmpm
 {
   template <int dim>
   Statistics
-  compute_statistics(const ParticleSet<dim> &                            particles,
-                     const std::vector<std::unique_ptr<Material<dim>>> &materials,
-                     const std::vector<std::unique_ptr<Effect<dim>>> &  effects,
-                     const MPI_Comm                                     comm)
+  compute_statistics(
+    const ParticleSet<dim>                            &particles,
+    const std::vector<std::unique_ptr<Material<dim>>> &materials,
+    const std::vector<std::unique_ptr<Effect<dim>>>   &effects,
+    const MPI_Comm                                     comm)
   {
     const CoreFields &f = particles.fields;
     // n, mass, momentum (3), kinetic, strain, gravitational
@@ -19,18 +20,19 @@ namespace dealmpm
         const auto           props = p.get_properties();
         const double         m     = props[f.mass];
         const Tensor<1, dim> v     = read_vector<dim>(&props[f.velocity]);
-        const unsigned int   mat   = static_cast<unsigned int>(props[f.material]);
+        const unsigned int   mat = static_cast<unsigned int>(props[f.material]);
         sums[0] += 1;
         sums[1] += m;
         for (unsigned int d = 0; d < dim; ++d)
           sums[2 + d] += m * v[d];
         sums[5] += 0.5 * m * v.norm_square();
-        sums[6] += props[f.initial_volume] *
-                   materials[mat]->strain_energy_density(
-                     read_tensor<dim>(&props[f.deformation_gradient]),
-                     read_symmetric<dim>(&props[f.stress]),
-                     ArrayView<const double>(&props[0] + particles.internal_offset[mat],
-                                             particles.n_internal[mat]));
+        sums[6] +=
+          props[f.initial_volume] *
+          materials[mat]->strain_energy_density(
+            read_tensor<dim>(&props[f.deformation_gradient]),
+            read_symmetric<dim>(&props[f.stress]),
+            ArrayView<const double>(&props[0] + particles.internal_offset[mat],
+                                    particles.n_internal[mat]));
         for (const auto &effect : effects)
           sums[7] += effect->potential_energy(m, p.get_location());
       }
@@ -48,7 +50,13 @@ namespace dealmpm
   }
 
   template Statistics
-  compute_statistics(const ParticleSet<2> &, const std::vector<std::unique_ptr<Material<2>>> &, const std::vector<std::unique_ptr<Effect<2>>> &, MPI_Comm);
+  compute_statistics(const ParticleSet<2> &,
+                     const std::vector<std::unique_ptr<Material<2>>> &,
+                     const std::vector<std::unique_ptr<Effect<2>>> &,
+                     MPI_Comm);
   template Statistics
-  compute_statistics(const ParticleSet<3> &, const std::vector<std::unique_ptr<Material<3>>> &, const std::vector<std::unique_ptr<Effect<3>>> &, MPI_Comm);
+  compute_statistics(const ParticleSet<3> &,
+                     const std::vector<std::unique_ptr<Material<3>>> &,
+                     const std::vector<std::unique_ptr<Effect<3>>> &,
+                     MPI_Comm);
 } // namespace dealmpm

@@ -20,7 +20,7 @@ namespace dealmpm
       add_nodal_forces(NodalFields<dim> &fields) const override
       {
         const unsigned int n    = fields.mass.locally_owned_size();
-        const double *     mass = fields.mass.begin();
+        const double      *mass = fields.mass.begin();
         for (unsigned int d = 0; d < dim; ++d)
           {
             double *force = fields.force[d].begin();
@@ -58,12 +58,12 @@ namespace dealmpm
         const unsigned int n = fields.mass.locally_owned_size();
         for (unsigned int d = 0; d < dim; ++d)
           {
-            double *      force    = fields.force[d].begin();
+            double       *force    = fields.force[d].begin();
             const double *momentum = fields.momentum[d].begin();
             for (unsigned int i = 0; i < n; ++i)
               if (momentum[i] != 0.)
-                force[i] -= alpha * std::abs(force[i]) *
-                            (momentum[i] > 0. ? 1. : -1.);
+                force[i] -=
+                  alpha * std::abs(force[i]) * (momentum[i] > 0. ? 1. : -1.);
           }
       }
 

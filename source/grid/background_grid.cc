@@ -67,8 +67,14 @@ namespace dealmpm
                       Patterns::Integer(0, 8),
                       "Extra refinements of the cells whose centre lies in "
                       "the box below (hanging nodes are handled).");
-    prm.declare_entry("Lower corner", repeat_value<dim>("0"), Patterns::Anything(), "Box lower corner.");
-    prm.declare_entry("Upper corner", repeat_value<dim>("0"), Patterns::Anything(), "Box upper corner.");
+    prm.declare_entry("Lower corner",
+                      repeat_value<dim>("0"),
+                      Patterns::Anything(),
+                      "Box lower corner.");
+    prm.declare_entry("Upper corner",
+                      repeat_value<dim>("0"),
+                      Patterns::Anything(),
+                      "Box upper corner.");
     prm.leave_subsection();
     prm.leave_subsection();
   }
@@ -89,18 +95,20 @@ namespace dealmpm
         for (const double c : cells)
           {
             if (!(c >= 1 && c == static_cast<unsigned int>(c)))
-              reader.fail("Cells", "positive integers (at least one cell per direction)");
+              reader.fail(
+                "Cells", "positive integers (at least one cell per direction)");
             repetitions.push_back(static_cast<unsigned int>(c));
           }
         for (unsigned int d = 0; d < dim; ++d)
           if (!(upper[d] > lower[d]))
-            reader.fail("Upper corner", "each coordinate larger than Lower corner's");
+            reader.fail("Upper corner",
+                        "each coordinate larger than Lower corner's");
         GridGenerator::subdivided_hyper_rectangle(
           triangulation, repetitions, lower, upper, /*colorize=*/true);
       }
     else
       {
-        std::string file = reader.get("Mesh file");
+        std::string                 file = reader.get("Mesh file");
         const std::filesystem::path scene_folder =
           std::filesystem::path(reader.file_name()).parent_path();
         if (!file.empty() && std::filesystem::path(file).is_relative() &&
@@ -133,11 +141,11 @@ namespace dealmpm
   BackgroundGrid<dim>::refine_box(SceneReader &reader)
   {
     SectionScope local(reader, "Local refinement");
-    const long levels = reader.get_integer("Levels");
+    const long   levels = reader.get_integer("Levels");
     if (levels == 0)
       return;
-    const Point<dim> lower = reader.get_point<dim>("Lower corner");
-    const Point<dim> upper = reader.get_point<dim>("Upper corner");
+    const Point<dim>       lower = reader.get_point<dim>("Lower corner");
+    const Point<dim>       upper = reader.get_point<dim>("Upper corner");
     const BoundingBox<dim> box({lower, upper});
     for (long level = 0; level < levels; ++level)
       {
@@ -153,24 +161,26 @@ namespace dealmpm
   BackgroundGrid<dim>::setup()
   {
     dof_handler.distribute_dofs(fe);
-    const IndexSet owned    = dof_handler.locally_owned_dofs();
-    const IndexSet relevant = DoFTools::extract_locally_relevant_dofs(dof_handler);
+    const IndexSet owned = dof_handler.locally_owned_dofs();
+    const IndexSet relevant =
+      DoFTools::extract_locally_relevant_dofs(dof_handler);
     partitioner =
       std::make_shared<Utilities::MPI::Partitioner>(owned, relevant, comm);
 
     hanging_node_constraints.clear();
     hanging_node_constraints.reinit(relevant);
-    DoFTools::make_hanging_node_constraints(dof_handler, hanging_node_constraints);
+    DoFTools::make_hanging_node_constraints(dof_handler,
+                                            hanging_node_constraints);
     hanging_node_constraints.close();
 
     cells.clear();
     cell_nodes.clear();
     cell_node_weights.clear();
-    constexpr unsigned int n_vertices = GridCell<dim>::n_vertices;
+    constexpr unsigned int               n_vertices = GridCell<dim>::n_vertices;
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    bool all_boxes = true;
-    Point<dim> lower, upper;
-    bool       first = true;
+    bool                                 all_boxes = true;
+    Point<dim>                           lower, upper;
+    bool                                 first = true;
     for (const auto &dof_cell : dof_handler.active_cell_iterators())
       {
         if (!dof_cell->is_locally_owned())
@@ -203,7 +213,7 @@ namespace dealmpm
           for (unsigned int e = 0; e < dim; ++e)
             if (d != e && std::abs(J[e][d]) > 1e-12 * c.h)
               box = false;
-        all_boxes = all_boxes && affine && box;
+        all_boxes          = all_boxes && affine && box;
         c.affine           = affine;
         c.inverse_jacobian = invert(J);
         if (!affine)
@@ -220,7 +230,8 @@ namespace dealmpm
         dof_cell->get_dof_indices(dofs);
         bool constrained = false;
         for (const auto dof : dofs)
-          constrained = constrained || hanging_node_constraints.is_constrained(dof);
+          constrained =
+            constrained || hanging_node_constraints.is_constrained(dof);
         c.first_node = cell_nodes.size();
         if (!constrained)
           {
@@ -230,12 +241,12 @@ namespace dealmpm
           }
         else
           {
-            std::vector<types::global_dof_index> nodes;
+            std::vector<types::global_dof_index>        nodes;
             std::vector<std::array<double, n_vertices>> weights;
             const auto add = [&](const types::global_dof_index node,
-                                 const unsigned int v,
-                                 const double w) {
-              const auto it = std::find(nodes.begin(), nodes.end(), node);
+                                 const unsigned int            v,
+                                 const double                  w) {
+              const auto it       = std::find(nodes.begin(), nodes.end(), node);
               const std::size_t k = it - nodes.begin();
               if (it == nodes.end())
                 {
@@ -265,9 +276,11 @@ namespace dealmpm
         for (unsigned int v = 0; v < n_vertices; ++v)
           for (unsigned int d = 0; d < dim; ++d)
             {
-              lower[d] = first ? c.vertices[v][d] : std::min(lower[d], c.vertices[v][d]);
-              upper[d] = first ? c.vertices[v][d] : std::max(upper[d], c.vertices[v][d]);
-              first    = false;
+              lower[d] =
+                first ? c.vertices[v][d] : std::min(lower[d], c.vertices[v][d]);
+              upper[d] =
+                first ? c.vertices[v][d] : std::max(upper[d], c.vertices[v][d]);
+              first = false;
             }
         cells.push_back(c);
       }

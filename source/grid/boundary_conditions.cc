@@ -26,7 +26,7 @@ namespace dealmpm
   std::map<types::boundary_id, BoundaryKind>
   BoundaryConditions<dim>::read(SceneReader &reader)
   {
-    SectionScope grid(reader, "Grid");
+    SectionScope                               grid(reader, "Grid");
     std::map<types::boundary_id, BoundaryKind> kinds;
     for (const auto &item :
          Utilities::split_string_list(reader.get("Boundary conditions"), ','))
@@ -52,7 +52,8 @@ namespace dealmpm
           kinds[id] = BoundaryKind::free;
         else
           reader.fail("Boundary conditions",
-                      "kind 'no-slip', 'slip' or 'free', not '" + parts[1] + "'");
+                      "kind 'no-slip', 'slip' or 'free', not '" + parts[1] +
+                        "'");
       }
     return kinds;
   }
@@ -60,19 +61,19 @@ namespace dealmpm
   template <int dim>
   void
   BoundaryConditions<dim>::setup(
-    const BackgroundGrid<dim> &                        grid,
+    const BackgroundGrid<dim>                        &grid,
     const std::map<types::boundary_id, BoundaryKind> &kinds)
   {
     nodes.clear();
     std::unordered_map<unsigned int, std::size_t> node_of_index;
     const auto add_normal = [&](const types::global_dof_index dof,
-                                const Tensor<1, dim> &        normal,
+                                const Tensor<1, dim>         &normal,
                                 const bool                    fixed) {
       if (!grid.partitioner->in_local_range(dof) ||
           grid.hanging_node_constraints.is_constrained(dof))
         return;
       const unsigned int local = grid.partitioner->global_to_local(dof);
-      auto it = node_of_index.find(local);
+      auto               it    = node_of_index.find(local);
       if (it == node_of_index.end())
         {
           it = node_of_index.emplace(local, nodes.size()).first;
@@ -108,13 +109,13 @@ namespace dealmpm
             const auto kind = kinds.find(cell->face(f)->boundary_id());
             if (kind == kinds.end() || kind->second == BoundaryKind::free)
               continue;
-            const auto face = cell->face(f);
+            const auto     face = cell->face(f);
             Tensor<1, dim> normal;
             if constexpr (dim == 2)
               {
                 const Tensor<1, dim> edge = face->vertex(1) - face->vertex(0);
-                normal[0] = edge[1];
-                normal[1] = -edge[0];
+                normal[0]                 = edge[1];
+                normal[1]                 = -edge[0];
               }
             else
               normal = cross_product_3d(face->vertex(1) - face->vertex(0),
@@ -138,7 +139,8 @@ namespace dealmpm
     // moves nor passes a spurious deceleration to the FLIP update of the
     // particles around it (as in CB-Geo mpm; projecting v* alone drags the
     // particles next to a fixed end towards rest).
-    const auto project = [](std::array<NodalVector, dim> &vector, const Node &node) {
+    const auto project = [](std::array<NodalVector, dim> &vector,
+                            const Node                   &node) {
       Tensor<1, dim> v;
       for (unsigned int d = 0; d < dim; ++d)
         v[d] = vector[d].local_element(node.local_index);

@@ -4,19 +4,19 @@ namespace dealmpm
 {
   template <int dim>
   void
-  update_nodal_velocity(NodalFields<dim> &             fields,
+  update_nodal_velocity(NodalFields<dim>              &fields,
                         const double                   dt,
                         const double                   mass_threshold,
                         const BoundaryConditions<dim> &boundary_conditions)
   {
     const unsigned int n_owned = fields.mass.locally_owned_size();
-    const double *     mass    = fields.mass.begin();
+    const double      *mass    = fields.mass.begin();
     for (unsigned int d = 0; d < dim; ++d)
       {
         const double *p  = fields.momentum[d].begin();
         const double *f  = fields.force[d].begin();
-        double *      v  = fields.velocity[d].begin();
-        double *      dv = fields.velocity_increment[d].begin();
+        double       *v  = fields.velocity[d].begin();
+        double       *dv = fields.velocity_increment[d].begin();
         for (unsigned int i = 0; i < n_owned; ++i)
           if (mass[i] > mass_threshold)
             {
@@ -36,7 +36,13 @@ namespace dealmpm
   }
 
   template void
-  update_nodal_velocity(NodalFields<2> &, double, double, const BoundaryConditions<2> &);
+  update_nodal_velocity(NodalFields<2> &,
+                        double,
+                        double,
+                        const BoundaryConditions<2> &);
   template void
-  update_nodal_velocity(NodalFields<3> &, double, double, const BoundaryConditions<3> &);
+  update_nodal_velocity(NodalFields<3> &,
+                        double,
+                        double,
+                        const BoundaryConditions<3> &);
 } // namespace dealmpm

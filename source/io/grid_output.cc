@@ -8,8 +8,8 @@ namespace dealmpm
   template <int dim>
   std::string
   write_grid_output(const BackgroundGrid<dim> &grid,
-                    const NodalFields<dim> &   fields,
-                    const std::string &        directory,
+                    const NodalFields<dim>    &fields,
+                    const std::string         &directory,
                     const unsigned int         counter)
   {
     DataOut<dim> data_out;
@@ -39,11 +39,18 @@ namespace dealmpm
     data_out.add_data_vector(level, "level");
     data_out.add_data_vector(rank, "mpi_rank");
     data_out.build_patches();
-    return data_out.write_vtu_with_pvtu_record(directory + "/", "grid", counter, grid.comm, 5, 0);
+    return data_out.write_vtu_with_pvtu_record(
+      directory + "/", "grid", counter, grid.comm, 5, 0);
   }
 
   template std::string
-  write_grid_output(const BackgroundGrid<2> &, const NodalFields<2> &, const std::string &, unsigned int);
+  write_grid_output(const BackgroundGrid<2> &,
+                    const NodalFields<2> &,
+                    const std::string &,
+                    unsigned int);
   template std::string
-  write_grid_output(const BackgroundGrid<3> &, const NodalFields<3> &, const std::string &, unsigned int);
+  write_grid_output(const BackgroundGrid<3> &,
+                    const NodalFields<3> &,
+                    const std::string &,
+                    unsigned int);
 } // namespace dealmpm

@@ -12,7 +12,7 @@ namespace dealmpm
   template <int dim>
   void
   write_particle_csv(const ParticleSet<dim> &particles,
-                     const std::string &     path,
+                     const std::string      &path,
                      const MPI_Comm          comm)
   {
     const CoreFields &f = particles.fields;
@@ -28,7 +28,8 @@ namespace dealmpm
           line << ',' << props[f.velocity + d];
         for (unsigned int d = 0; d < dim; ++d)
           line << ',' << props[f.displacement + d];
-        line << ',' << determinant(read_tensor<dim>(&props[f.deformation_gradient]))
+        line << ','
+             << determinant(read_tensor<dim>(&props[f.deformation_gradient]))
              << ',' << props[f.body];
         rows.emplace_back(p.get_id(), line.str());
       }
@@ -40,7 +41,7 @@ namespace dealmpm
       all.insert(all.end(), part.begin(), part.end());
     std::sort(all.begin(), all.end());
     std::ofstream out(path);
-    const char *axes[] = {"x", "y", "z"};
+    const char   *axes[] = {"x", "y", "z"};
     out << "id";
     for (const std::string prefix : {"", "v", "u"})
       for (unsigned int d = 0; d < dim; ++d)

@@ -13,18 +13,25 @@ namespace dealmpm
     using DCI = DataComponentInterpretation::DataComponentInterpretation;
     names.clear();
     ranges.clear();
-    const auto add = [&](const std::string &name, const unsigned int n, const DCI kind) {
-      if (kind != DataComponentInterpretation::component_is_scalar)
-        ranges.emplace_back(names.size(), names.size() + n - 1, name, kind);
-      for (unsigned int i = 0; i < n; ++i)
-        names.push_back(n == 1 ? name : name + "_" + std::to_string(i));
-    };
+    const auto add =
+      [&](const std::string &name, const unsigned int n, const DCI kind) {
+        if (kind != DataComponentInterpretation::component_is_scalar)
+          ranges.emplace_back(names.size(), names.size() + n - 1, name, kind);
+        for (unsigned int i = 0; i < n; ++i)
+          names.push_back(n == 1 ? name : name + "_" + std::to_string(i));
+      };
     add("id", 1, DataComponentInterpretation::component_is_scalar);
     add("body", 1, DataComponentInterpretation::component_is_scalar);
     add("material", 1, DataComponentInterpretation::component_is_scalar);
-    add("velocity", dim, DataComponentInterpretation::component_is_part_of_vector);
-    add("displacement", dim, DataComponentInterpretation::component_is_part_of_vector);
-    add("stress", dim * dim, DataComponentInterpretation::component_is_part_of_tensor);
+    add("velocity",
+        dim,
+        DataComponentInterpretation::component_is_part_of_vector);
+    add("displacement",
+        dim,
+        DataComponentInterpretation::component_is_part_of_vector);
+    add("stress",
+        dim * dim,
+        DataComponentInterpretation::component_is_part_of_tensor);
     add("J", 1, DataComponentInterpretation::component_is_scalar);
     add("volume", 1, DataComponentInterpretation::component_is_scalar);
     add("mass", 1, DataComponentInterpretation::component_is_scalar);
@@ -35,7 +42,9 @@ namespace dealmpm
       if (field.offset >= particles.fields.material + 1)
         {
           internal.push_back(field);
-          add(field.name, field.n_components, DataComponentInterpretation::component_is_scalar);
+          add(field.name,
+              field.n_components,
+              DataComponentInterpretation::component_is_scalar);
         }
 
     const CoreFields &f = particles.fields;
@@ -47,11 +56,11 @@ namespace dealmpm
         patch.vertices[0]                 = p.get_location();
         patch.patch_index                 = i;
         patch.data.reinit(names.size(), 1);
-        const auto     props = p.get_properties();
-        const auto     F     = read_tensor<dim>(&props[f.deformation_gradient]);
-        const auto     sigma = read_symmetric<dim>(&props[f.stress]);
-        const double   J     = determinant(F);
-        unsigned int   c     = 0;
+        const auto   props = p.get_properties();
+        const auto   F     = read_tensor<dim>(&props[f.deformation_gradient]);
+        const auto   sigma = read_symmetric<dim>(&props[f.stress]);
+        const double J     = determinant(F);
+        unsigned int c     = 0;
         patch.data(c++, 0) = p.get_id();
         patch.data(c++, 0) = props[f.body];
         patch.data(c++, 0) = props[f.material];
@@ -79,7 +88,8 @@ namespace dealmpm
                              const unsigned int counter,
                              const MPI_Comm     comm) const
   {
-    return this->write_vtu_with_pvtu_record(directory + "/", "particles", counter, comm, 5, 0);
+    return this->write_vtu_with_pvtu_record(
+      directory + "/", "particles", counter, comm, 5, 0);
   }
 
   void

@@ -24,7 +24,7 @@ namespace dealmpm
   StatisticsFile::write_row(const unsigned int step,
                             const double       time,
                             const double       dt,
-                            const Statistics & s,
+                            const Statistics  &s,
                             const double       n_lost_particles,
                             const double       wall_time)
   {

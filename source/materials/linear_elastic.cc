@@ -11,8 +11,8 @@ namespace dealmpm
 
   template <int dim>
   void
-  LinearElastic<dim>::update_stress(const Tensor<2, dim> &   L,
-                                    const Tensor<2, dim> &   F,
+  LinearElastic<dim>::update_stress(const Tensor<2, dim>    &L,
+                                    const Tensor<2, dim>    &F,
                                     const double             dt,
                                     SymmetricTensor<2, dim> &stress,
                                     ArrayView<double>        internal) const
@@ -36,9 +36,10 @@ namespace dealmpm
 
   template <int dim>
   double
-  LinearElastic<dim>::strain_energy_density(const Tensor<2, dim> &,
-                                            const SymmetricTensor<2, dim> &,
-                                            ArrayView<const double> internal) const
+  LinearElastic<dim>::strain_energy_density(
+    const Tensor<2, dim> &,
+    const SymmetricTensor<2, dim> &,
+    ArrayView<const double> internal) const
   {
     return internal[0];
   }

@@ -33,18 +33,17 @@ namespace dealmpm
   {
     static Registry<Material<dim>> registry = [] {
       Registry<Material<dim>> r;
-      const auto declare = [](ParameterHandler &prm) {
+      const auto              declare = [](ParameterHandler &prm) {
         declare_elastic_constants(prm, 1e3, 0.3);
       };
-      r.add(
-        "linear elastic",
-        "isotropic small-strain elasticity in rate form (Young's modulus, "
-        "Poisson's ratio).",
-        declare,
-        [](SceneReader &reader) -> std::unique_ptr<Material<dim>> {
-          return std::make_unique<LinearElastic<dim>>(
-            read_elastic_constants(reader));
-        });
+      r.add("linear elastic",
+            "isotropic small-strain elasticity in rate form (Young's modulus, "
+            "Poisson's ratio).",
+            declare,
+            [](SceneReader &reader) -> std::unique_ptr<Material<dim>> {
+              return std::make_unique<LinearElastic<dim>>(
+                read_elastic_constants(reader));
+            });
       r.add("neo-Hookean",
             "compressible neo-Hookean hyperelasticity, stress from F "
             "(Young's modulus, Poisson's ratio).",

@@ -32,8 +32,9 @@ namespace dealmpm
   {
     // Tangent P-wave modulus over current density: (lambda + 2 (mu - lambda
     // ln J)) / J divided by rho0 / J.
-    const double J       = determinant(F);
-    const double modulus = lame.lambda + 2. * (lame.mu - lame.lambda * std::log(J));
+    const double J = determinant(F);
+    const double modulus =
+      lame.lambda + 2. * (lame.mu - lame.lambda * std::log(J));
     return std::sqrt(std::max(modulus, lame.lambda + 2. * lame.mu) /
                      this->density);
   }

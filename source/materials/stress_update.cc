@@ -4,28 +4,33 @@ namespace dealmpm
 {
   template <int dim>
   ParticleCheck<dim>
-  check_particles(const BackgroundGrid<dim> &                        grid,
+  check_particles(const BackgroundGrid<dim>                         &grid,
                   const std::vector<std::unique_ptr<Material<dim>>> &materials,
-                  const ParticleSet<dim> &                           particles)
+                  const ParticleSet<dim>                            &particles)
   {
     ParticleCheck<dim> check;
-    const CoreFields & f = particles.fields;
+    const CoreFields  &f = particles.fields;
     for (const GridCell<dim> &c : grid.cells)
       for (const auto &p : particles.handler.particles_in_cell(c.cell))
         {
           const auto props = p.get_properties();
-          check.inspect(p,
-                        read_vector<dim>(&props[f.velocity]),
-                        read_tensor<dim>(&props[f.deformation_gradient]),
-                        read_symmetric<dim>(&props[f.stress]),
-                        *materials[static_cast<unsigned int>(props[f.material])],
-                        c.h);
+          check.inspect(
+            p,
+            read_vector<dim>(&props[f.velocity]),
+            read_tensor<dim>(&props[f.deformation_gradient]),
+            read_symmetric<dim>(&props[f.stress]),
+            *materials[static_cast<unsigned int>(props[f.material])],
+            c.h);
         }
     return check;
   }
 
   template ParticleCheck<2>
-  check_particles(const BackgroundGrid<2> &, const std::vector<std::unique_ptr<Material<2>>> &, const ParticleSet<2> &);
+  check_particles(const BackgroundGrid<2> &,
+                  const std::vector<std::unique_ptr<Material<2>>> &,
+                  const ParticleSet<2> &);
   template ParticleCheck<3>
-  check_particles(const BackgroundGrid<3> &, const std::vector<std::unique_ptr<Material<3>>> &, const ParticleSet<3> &);
+  check_particles(const BackgroundGrid<3> &,
+                  const std::vector<std::unique_ptr<Material<3>>> &,
+                  const ParticleSet<3> &);
 } // namespace dealmpm

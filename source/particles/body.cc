@@ -1,7 +1,7 @@
+#include <deal.II/fe/mapping_q1.h>
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/grid_tools_cache.h>
-#include <deal.II/fe/mapping_q1.h>
 
 #include <dealmpm/core/errors.h>
 #include <dealmpm/particles/body.h>
@@ -72,10 +72,10 @@ namespace dealmpm
     class CylinderShape : public Shape<dim>
     {
     public:
-      CylinderShape(const Point<dim> &center,
-                    const double      radius,
+      CylinderShape(const Point<dim>  &center,
+                    const double       radius,
                     const unsigned int axis,
-                    const double      height)
+                    const double       height)
         : center(center)
         , radius(radius)
         , axis(axis)
@@ -84,7 +84,7 @@ namespace dealmpm
       bool
       contains(const Point<dim> &p) const override
       {
-        Tensor<1, dim> r = p - center;
+        Tensor<1, dim> r     = p - center;
         const double   along = r[axis];
         r[axis]              = 0;
         return std::abs(along) <= 0.5 * height && r.norm() <= radius;
@@ -129,7 +129,8 @@ namespace dealmpm
           return false;
         try
           {
-            const auto found = GridTools::find_active_cell_around_point(*cache, p);
+            const auto found =
+              GridTools::find_active_cell_around_point(*cache, p);
             return found.first.state() == IteratorState::valid;
           }
         catch (...)
@@ -161,17 +162,48 @@ namespace dealmpm
                       "'box' (Lower corner, Upper corner), 'ball' (a disk in "
                       "2D: Center, Radius), 'cylinder' (3D: Center, Radius, "
                       "Axis, Height), 'mesh' (the cells of Mesh file).");
-    prm.declare_entry("Lower corner", repeat_value<dim>("0"), Patterns::Anything(), "Box: lower corner.");
-    prm.declare_entry("Upper corner", repeat_value<dim>("1"), Patterns::Anything(), "Box: upper corner.");
-    prm.declare_entry("Center", repeat_value<dim>("0"), Patterns::Anything(), "Ball, cylinder: centre.");
-    prm.declare_entry("Radius", "0.5", Patterns::Anything(), "Ball, cylinder: radius.");
-    prm.declare_entry("Axis", "z", Patterns::Selection("x|y|z"), "Cylinder: axis direction.");
-    prm.declare_entry("Height", "1", Patterns::Anything(), "Cylinder: length along the axis.");
-    prm.declare_entry("Mesh file", "", Patterns::Anything(), "Mesh: Gmsh .msh file whose cells the body fills (relative to the scene file's folder or absolute).");
-    prm.declare_entry("Particles per cell", "2", Patterns::Integer(1, 10),
-                      "Particles per background cell and direction (n: n^dim per cell).");
-    prm.declare_entry("Material", "1", Patterns::Integer(1), "Number N of the 'Material N' section.");
-    prm.declare_entry("Velocity", repeat_value<dim>("0"), Patterns::Anything(), "Initial velocity (m/s).");
+    prm.declare_entry("Lower corner",
+                      repeat_value<dim>("0"),
+                      Patterns::Anything(),
+                      "Box: lower corner.");
+    prm.declare_entry("Upper corner",
+                      repeat_value<dim>("1"),
+                      Patterns::Anything(),
+                      "Box: upper corner.");
+    prm.declare_entry("Center",
+                      repeat_value<dim>("0"),
+                      Patterns::Anything(),
+                      "Ball, cylinder: centre.");
+    prm.declare_entry("Radius",
+                      "0.5",
+                      Patterns::Anything(),
+                      "Ball, cylinder: radius.");
+    prm.declare_entry("Axis",
+                      "z",
+                      Patterns::Selection("x|y|z"),
+                      "Cylinder: axis direction.");
+    prm.declare_entry("Height",
+                      "1",
+                      Patterns::Anything(),
+                      "Cylinder: length along the axis.");
+    prm.declare_entry(
+      "Mesh file",
+      "",
+      Patterns::Anything(),
+      "Mesh: Gmsh .msh file whose cells the body fills (relative to the scene file's folder or absolute).");
+    prm.declare_entry(
+      "Particles per cell",
+      "2",
+      Patterns::Integer(1, 10),
+      "Particles per background cell and direction (n: n^dim per cell).");
+    prm.declare_entry("Material",
+                      "1",
+                      Patterns::Integer(1),
+                      "Number N of the 'Material N' section.");
+    prm.declare_entry("Velocity",
+                      repeat_value<dim>("0"),
+                      Patterns::Anything(),
+                      "Initial velocity (m/s).");
   }
 
   template <int dim>
@@ -186,29 +218,34 @@ namespace dealmpm
         const Point<dim> upper = reader.get_point<dim>("Upper corner");
         for (unsigned int d = 0; d < dim; ++d)
           if (!(upper[d] > lower[d]))
-            reader.fail("Upper corner", "each coordinate larger than Lower corner's");
+            reader.fail("Upper corner",
+                        "each coordinate larger than Lower corner's");
         body.shape = std::make_unique<BoxShape<dim>>(lower, upper);
       }
     else if (shape == "ball")
-      body.shape = std::make_unique<BallShape<dim>>(reader.get_point<dim>("Center"),
-                                                    reader.get_positive("Radius"));
+      body.shape =
+        std::make_unique<BallShape<dim>>(reader.get_point<dim>("Center"),
+                                         reader.get_positive("Radius"));
     else if (shape == "cylinder")
       {
         if (dim != 3)
           reader.fail("Shape", "box, ball or mesh in 2D (a 2D disk is 'ball')");
         const std::string axis = reader.get("Axis");
-        body.shape             = std::make_unique<CylinderShape<dim>>(
-          reader.get_point<dim>("Center"),
-          reader.get_positive("Radius"),
-          axis == "x" ? 0 : (axis == "y" ? 1 : 2),
-          reader.get_positive("Height"));
+        body.shape =
+          std::make_unique<CylinderShape<dim>>(reader.get_point<dim>("Center"),
+                                               reader.get_positive("Radius"),
+                                               axis == "x" ?
+                                                 0 :
+                                                 (axis == "y" ? 1 : 2),
+                                               reader.get_positive("Height"));
       }
     else
       {
-        std::string file = reader.get("Mesh file");
+        std::string                 file = reader.get("Mesh file");
         const std::filesystem::path folder =
           std::filesystem::path(reader.file_name()).parent_path();
-        if (!file.empty() && std::filesystem::path(file).is_relative() && !folder.empty())
+        if (!file.empty() && std::filesystem::path(file).is_relative() &&
+            !folder.empty())
           file = (folder / file).string();
         std::ifstream in(file);
         if (file.empty() || !in)
@@ -235,14 +272,14 @@ namespace dealmpm
 
   template <int dim>
   std::size_t
-  generate_particles(const Body<dim> &          body,
+  generate_particles(const Body<dim>           &body,
                      const unsigned int         body_index,
                      const double               density,
                      const BackgroundGrid<dim> &grid,
-                     ParticleSet<dim> &         particles,
+                     ParticleSet<dim>          &particles,
                      const std::vector<double> &initial_internal_variables)
   {
-    const unsigned int n = body.particles_per_direction;
+    const unsigned int n        = body.particles_per_direction;
     unsigned int       per_cell = 1;
     for (unsigned int d = 0; d < dim; ++d)
       per_cell *= n;
@@ -252,15 +289,16 @@ namespace dealmpm
       throw InputError("too many particles for 32-bit particle ids: use fewer "
                        "cells, particles per cell or bodies");
 
-    const CoreFields &  f = particles.fields;
-    std::vector<double> properties(particles.layout.size(), 0.);
+    const CoreFields      &f = particles.fields;
+    std::vector<double>    properties(particles.layout.size(), 0.);
     const BoundingBox<dim> shape_box = body.shape->bounding_box();
     std::size_t            created   = 0;
     for (const GridCell<dim> &c : grid.cells)
       {
         const BoundingBox<dim> cell_box(
           std::vector<Point<dim>>(c.vertices.begin(), c.vertices.end()));
-        if (cell_box.get_neighbor_type(shape_box) == NeighborType::not_neighbors)
+        if (cell_box.get_neighbor_type(shape_box) ==
+            NeighborType::not_neighbors)
           continue;
         const double volume = c.measure / per_cell;
         for (unsigned int k = 0; k < per_cell; ++k)
@@ -300,7 +338,17 @@ namespace dealmpm
   template struct Body<2>;
   template struct Body<3>;
   template std::size_t
-  generate_particles(const Body<2> &, unsigned int, double, const BackgroundGrid<2> &, ParticleSet<2> &, const std::vector<double> &);
+  generate_particles(const Body<2> &,
+                     unsigned int,
+                     double,
+                     const BackgroundGrid<2> &,
+                     ParticleSet<2> &,
+                     const std::vector<double> &);
   template std::size_t
-  generate_particles(const Body<3> &, unsigned int, double, const BackgroundGrid<3> &, ParticleSet<3> &, const std::vector<double> &);
+  generate_particles(const Body<3> &,
+                     unsigned int,
+                     double,
+                     const BackgroundGrid<3> &,
+                     ParticleSet<3> &,
+                     const std::vector<double> &);
 } // namespace dealmpm

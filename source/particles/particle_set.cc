@@ -13,11 +13,12 @@ namespace dealmpm
     core_layout(CoreFields &fields)
     {
       PropertyLayout layout;
-      fields.mass                 = layout.add("mass", 1);
-      fields.initial_volume       = layout.add("initial_volume", 1);
-      fields.velocity             = layout.add("velocity", dim);
-      fields.displacement         = layout.add("displacement", dim);
-      fields.deformation_gradient = layout.add("deformation_gradient", dim * dim);
+      fields.mass           = layout.add("mass", 1);
+      fields.initial_volume = layout.add("initial_volume", 1);
+      fields.velocity       = layout.add("velocity", dim);
+      fields.displacement   = layout.add("displacement", dim);
+      fields.deformation_gradient =
+        layout.add("deformation_gradient", dim * dim);
       fields.stress =
         layout.add("stress", SymmetricTensor<2, dim>::n_independent_components);
       fields.body     = layout.add("body", 1);
@@ -28,9 +29,9 @@ namespace dealmpm
 
   template <int dim>
   ParticleSet<dim>::ParticleSet(
-    const Triangulation<dim> &                          tria,
-    const Mapping<dim> &                                mapping,
-    const std::vector<std::string> &                    model_names,
+    const Triangulation<dim>                         &tria,
+    const Mapping<dim>                               &mapping,
+    const std::vector<std::string>                   &model_names,
     const std::vector<std::vector<FieldDescription>> &internal_variables)
     : layout(core_layout<dim>(fields))
   {

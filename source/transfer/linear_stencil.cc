@@ -5,11 +5,11 @@ namespace dealmpm
   template <int dim>
   void
   compute_linear_stencil(const BackgroundGrid<dim> &grid,
-                         const ParticleSet<dim> &   particles,
-                         Stencil<dim> &             stencil)
+                         const ParticleSet<dim>    &particles,
+                         Stencil<dim>              &stencil)
   {
     constexpr unsigned int n_vertices = GridCell<dim>::n_vertices;
-    const std::size_t      n_local = particles.handler.n_locally_owned_particles();
+    const std::size_t n_local = particles.handler.n_locally_owned_particles();
     stencil.begin.resize(n_local + 1);
     // Unconstrained cells need n_vertices entries per particle; cells with
     // hanging nodes a few more, so grow on demand.
@@ -25,8 +25,8 @@ namespace dealmpm
     };
     ensure(n_local * n_vertices);
 
-    std::size_t k = 0, e = 0;
-    double      N[n_vertices];
+    std::size_t    k = 0, e = 0;
+    double         N[n_vertices];
     Tensor<1, dim> grad_xi[n_vertices];
     for (const GridCell<dim> &c : grid.cells)
       {
@@ -88,7 +88,11 @@ namespace dealmpm
   }
 
   template void
-  compute_linear_stencil(const BackgroundGrid<2> &, const ParticleSet<2> &, Stencil<2> &);
+  compute_linear_stencil(const BackgroundGrid<2> &,
+                         const ParticleSet<2> &,
+                         Stencil<2> &);
   template void
-  compute_linear_stencil(const BackgroundGrid<3> &, const ParticleSet<3> &, Stencil<3> &);
+  compute_linear_stencil(const BackgroundGrid<3> &,
+                         const ParticleSet<3> &,
+                         Stencil<3> &);
 } // namespace dealmpm

@@ -28,15 +28,19 @@ TEST(CollidingDisks, EnergyBoundedAndMomentumConserved)
       if (simulation->step_number() % 50 == 0)
         {
           const Statistics s = simulation->statistics();
-          max_drift   = std::max(max_drift, std::abs(s.total_energy() - initial.total_energy()));
+          max_drift =
+            std::max(max_drift,
+                     std::abs(s.total_energy() - initial.total_energy()));
           min_kinetic = std::min(min_kinetic, s.kinetic_energy);
           max_momentum =
             std::max(max_momentum, std::hypot(s.momentum[0], s.momentum[1]));
         }
     }
-  std::cout << "colliding disks: max |E - E0| / E0 = " << max_drift / initial.total_energy()
+  std::cout << "colliding disks: max |E - E0| / E0 = "
+            << max_drift / initial.total_energy()
             << ", min KE / KE0 = " << min_kinetic / initial.kinetic_energy
-            << ", max |p| / (m v) = " << max_momentum / momentum_scale << std::endl;
+            << ", max |p| / (m v) = " << max_momentum / momentum_scale
+            << std::endl;
   // The collision happened: most kinetic energy was stored as strain energy.
   EXPECT_LT(min_kinetic, 0.2 * initial.kinetic_energy);
   // FLIP/USL loses a few percent over the collision (Sulsky et al. 1995).

@@ -48,22 +48,22 @@ end
 
 TEST(Column, SettledBaseStressIsRhoGH)
 {
-  auto simulation = test::make_simulation<2>(column);
+  auto         simulation = test::make_simulation<2>(column);
   const double rho = 1000, g = 9.81, H = 4, h = 0.25;
   while (simulation->time() < 3.)
     simulation->advance(simulation->time_step());
 
-  const auto &      particles = simulation->particle_set();
-  const CoreFields &f         = particles.fields;
-  double base_error = 0, max_error = 0, base_count = 0;
+  const auto       &particles  = simulation->particle_set();
+  const CoreFields &f          = particles.fields;
+  double            base_error = 0, max_error = 0, base_count = 0;
   for (const auto &p : particles.handler)
     {
-      const auto   props  = p.get_properties();
-      const double Y      = p.get_location()[1] - props[f.displacement + 1];
-      const double exact  = -rho * g * (H - Y);
-      const double sigma  = read_symmetric<2>(&props[f.stress])[1][1];
-      const double error  = std::abs(sigma - exact) / (rho * g * H);
-      max_error = std::max(max_error, error);
+      const auto   props = p.get_properties();
+      const double Y     = p.get_location()[1] - props[f.displacement + 1];
+      const double exact = -rho * g * (H - Y);
+      const double sigma = read_symmetric<2>(&props[f.stress])[1][1];
+      const double error = std::abs(sigma - exact) / (rho * g * H);
+      max_error          = std::max(max_error, error);
       if (Y < h)
         {
           base_error += error;
@@ -74,8 +74,8 @@ TEST(Column, SettledBaseStressIsRhoGH)
   const Statistics s = simulation->statistics();
   std::cout << "column: mean base stress error / (rho g H) = " << base_error
             << ", max over the column = " << max_error
-            << ", kinetic energy / strain energy = " << s.kinetic_energy / s.strain_energy
-            << std::endl;
+            << ", kinetic energy / strain energy = "
+            << s.kinetic_energy / s.strain_energy << std::endl;
   EXPECT_LT(s.kinetic_energy, 1e-3 * s.strain_energy); // settled
   EXPECT_LT(base_error, 0.02);
   EXPECT_LT(max_error, 0.05);

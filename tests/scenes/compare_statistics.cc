@@ -42,7 +42,8 @@ main(int argc, char **argv)
   const double tolerance = std::stod(argv[3]);
   if (a.size() < 2 || a.size() != b.size() || a[0] != b[0])
     {
-      std::cerr << "different shapes: " << a.size() << " vs " << b.size() << " rows\n";
+      std::cerr << "different shapes: " << a.size() << " vs " << b.size()
+                << " rows\n";
       return 1;
     }
   int    failures = 0;
@@ -58,14 +59,16 @@ main(int argc, char **argv)
         {
           const double x = std::stod(a[r][c]), y = std::stod(b[r][c]);
           const double difference = scale > 0 ? std::abs(x - y) / scale : 0.;
-          worst = std::max(worst, difference);
+          worst                   = std::max(worst, difference);
           if (difference > tolerance)
             {
               if (failures++ < 10)
-                std::cerr << a[0][c] << " row " << r << ": " << x << " vs " << y << "\n";
+                std::cerr << a[0][c] << " row " << r << ": " << x << " vs " << y
+                          << "\n";
             }
         }
     }
-  std::cout << "largest relative difference: " << worst << " (tolerance " << tolerance << ")\n";
+  std::cout << "largest relative difference: " << worst << " (tolerance "
+            << tolerance << ")\n";
   return failures == 0 ? 0 : 1;
 }

@@ -26,11 +26,14 @@ TEST(Effects, UnlistedEffectHasNoTimerSectionOrProperties)
       plain->advance(1e-3);
       falling->advance(1e-3);
     }
-  const auto plain_sections   = plain->timer().get_summary_data(TimerOutput::total_wall_time);
-  const auto falling_sections = falling->timer().get_summary_data(TimerOutput::total_wall_time);
+  const auto plain_sections =
+    plain->timer().get_summary_data(TimerOutput::total_wall_time);
+  const auto falling_sections =
+    falling->timer().get_summary_data(TimerOutput::total_wall_time);
   EXPECT_EQ(plain_sections.count("effect: gravity"), 0u);
   EXPECT_EQ(falling_sections.count("effect: gravity"), 1u);
-  EXPECT_EQ(plain->particle_set().layout.size(), falling->particle_set().layout.size());
+  EXPECT_EQ(plain->particle_set().layout.size(),
+            falling->particle_set().layout.size());
 
   // Without gravity a body at rest stays at rest; with it, it falls at g.
   EXPECT_EQ(plain->statistics().kinetic_energy, 0.);

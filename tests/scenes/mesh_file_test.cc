@@ -14,7 +14,8 @@ namespace
 set Dimension = 2
 subsection Grid
   set Type = mesh file
-  set Mesh file = )") + DEALMPM_SOURCE_DIR + R"(/tests/data/distorted_square.msh
+  set Mesh file = )") + DEALMPM_SOURCE_DIR +
+                            R"(/tests/data/distorted_square.msh
   set Global refinements = 2
   set Boundary conditions = 10: no-slip, 12: slip
 end
@@ -49,18 +50,23 @@ TEST(MeshFile, RigidMotionThroughDistortedCellsIsExact)
     simulation->advance(dt);
   const double t = simulation->time();
 
-  const auto &      particles = simulation->particle_set();
-  const CoreFields &f         = particles.fields;
-  double max_J_error = 0, max_u_error = 0, max_v_error = 0;
+  const auto       &particles   = simulation->particle_set();
+  const CoreFields &f           = particles.fields;
+  double            max_J_error = 0, max_u_error = 0, max_v_error = 0;
   for (const auto &p : particles.handler)
     {
       const auto props = p.get_properties();
-      max_J_error = std::max(max_J_error,
-                             std::abs(determinant(read_tensor<2>(&props[f.deformation_gradient])) - 1));
+      max_J_error =
+        std::max(max_J_error,
+                 std::abs(
+                   determinant(read_tensor<2>(&props[f.deformation_gradient])) -
+                   1));
       const Tensor<1, 2> u = read_vector<2>(&props[f.displacement]);
       const Tensor<1, 2> v = read_vector<2>(&props[f.velocity]);
-      max_u_error = std::max(max_u_error, (u - t * Tensor<1, 2>({0.3, 0.1})).norm());
-      max_v_error = std::max(max_v_error, (v - Tensor<1, 2>({0.3, 0.1})).norm());
+      max_u_error =
+        std::max(max_u_error, (u - t * Tensor<1, 2>({0.3, 0.1})).norm());
+      max_v_error =
+        std::max(max_v_error, (v - Tensor<1, 2>({0.3, 0.1})).norm());
     }
   EXPECT_EQ(simulation->statistics().n_particles, n_particles);
   EXPECT_LT(max_J_error, 1e-12);

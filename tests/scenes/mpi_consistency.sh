@@ -1,18 +1,31 @@
 #!/usr/bin/env bash
 # The same scene on 1 and 2 MPI ranks gives the same statistics (relative
-# difference below 1e-9 over a short run; the disks collide across the rank
-# boundary, and their total momentum is not zero so that it compares
-# meaningfully).
+# difference below 1e-9 over a short run):
+# - the colliding disks, colliding across the rank boundary, with a non-zero
+#   total momentum so that it compares meaningfully;
+# - the same on a grid refined in a box (hanging nodes whose masters sit on
+#   the other rank);
+# - the 3D cube dropped on the floor (boundary conditions, gravity, CFL step).
 set -euo pipefail
-dealmpm=$1 compare=$2 mpirun=$3 scene=$4
+dealmpm=$1 compare=$2 mpirun=$3 disks=$4 cube=$5
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 flags=(--oversubscribe)
 [ "$(id -u)" = 0 ] && flags+=(--allow-run-as-root)
-for n in 1 2; do
-  "$mpirun" "${flags[@]}" -np $n "$dealmpm" "$scene" -s "Output/Directory=$work/np$n" \
-    -s "Time/End time=0.6" -s "Output/Interval=0.05" -s "Output/Write particles=false" \
-    -s "Body 1/Velocity=0.5, 0.5" -s "Body 2/Velocity=-0.3, -0.4" > "$work/np$n.log"
-done
-grep -q "2 rank(s)" "$work/np2.log"
-"$compare" "$work/np1/statistics.csv" "$work/np2/statistics.csv" 1e-9
+
+compare_ranks() { # name scene overrides...
+  local name=$1 scene=$2; shift 2
+  for n in 1 2; do
+    "$mpirun" "${flags[@]}" -np $n "$dealmpm" "$scene" -s "Output/Directory=$work/$name$n" \
+      -s "Output/Write particles=false" -s "Output/Progress interval=0" "$@" > "$work/$name$n.log"
+  done
+  grep -q "2 rank(s)" "$work/${name}2.log"
+  echo -n "$name: "
+  "$compare" "$work/${name}1/statistics.csv" "$work/${name}2/statistics.csv" 1e-9
+}
+
+fast=(-s "Body 1/Velocity=0.5, 0.5" -s "Body 2/Velocity=-0.3, -0.4" -s "Time/End time=0.6" -s "Output/Interval=0.05")
+compare_ranks disks "$disks" "${fast[@]}"
+compare_ranks refined "$disks" "${fast[@]}" -s "Grid/Local refinement/Levels=1" \
+  -s "Grid/Local refinement/Lower corner=-0.25, -0.5" -s "Grid/Local refinement/Upper corner=0.25, 0.5"
+compare_ranks cube "$cube" -s "Time/End time=0.15" -s "Output/Interval=0.01"

@@ -19,29 +19,32 @@ namespace
   constexpr double L = 25, E = 100, rho = 1, v0 = 0.01;
   const double     beta = M_PI / (2 * L), omega = beta * std::sqrt(E / rho);
 
-  /** Max over one period of |v_tip - v_exact| / v0 with n cells per unit length. */
+  /** Max over one period of |v_tip - v_exact| / v0 with n cells per unit
+   * length. */
   double
   tip_velocity_error(const unsigned int n)
   {
     const std::string scene =
       "set Dimension = 2\n"
       "subsection Grid\n set Lower corner = 0, 0\n set Upper corner = 26, 1\n"
-      " set Cells = " + std::to_string(26 * n) + ", " + std::to_string(n) +
+      " set Cells = " +
+      std::to_string(26 * n) + ", " + std::to_string(n) +
       "\n set Boundary conditions = 0: no-slip, 2: slip, 3: slip\nend\n"
       "subsection Material 1\n set Density = 1\n subsection linear elastic\n"
       "  set Young's modulus = 100\n  set Poisson's ratio = 0\n end\nend\n"
       "subsection Body 1\n set Lower corner = 0, 0\n set Upper corner = 25, 1\n"
       " set Particles per cell = 2\nend\n";
-    auto simulation = test::make_simulation<2>(scene);
-    auto &particles = simulation->particle_set();
-    const CoreFields &f = particles.fields;
+    auto              simulation = test::make_simulation<2>(scene);
+    auto             &particles  = simulation->particle_set();
+    const CoreFields &f          = particles.fields;
     for (auto &p : particles.handler)
-      p.get_properties()[f.velocity] = v0 * std::sin(beta * p.get_location()[0]);
+      p.get_properties()[f.velocity] =
+        v0 * std::sin(beta * p.get_location()[0]);
 
-    const double h  = 1. / n;
-    const double dt = 0.05 * h / std::sqrt(E / rho);
-    const unsigned int n_steps = std::lround(2 * M_PI / omega / dt);
-    double max_error = 0;
+    const double       h         = 1. / n;
+    const double       dt        = 0.05 * h / std::sqrt(E / rho);
+    const unsigned int n_steps   = std::lround(2 * M_PI / omega / dt);
+    double             max_error = 0;
     for (unsigned int step = 0; step < n_steps; ++step)
       {
         simulation->advance(dt);
@@ -53,7 +56,8 @@ namespace
             const double X     = p.get_location()[0] - props[f.displacement];
             if (X < L - 0.5 * h)
               continue;
-            const double exact = v0 * std::cos(omega * simulation->time()) * std::sin(beta * X);
+            const double exact =
+              v0 * std::cos(omega * simulation->time()) * std::sin(beta * X);
             error += std::abs(props[f.velocity] - exact);
             count += 1;
           }
@@ -68,8 +72,8 @@ TEST(VibratingBar, FreeEndFollowsFirstModeAndConverges)
   const double coarse = tip_velocity_error(1);
   const double medium = tip_velocity_error(2);
   const double fine   = tip_velocity_error(4);
-  std::cout << "vibrating bar: max tip velocity error / v0 at h = 1, 1/2, 1/4: " << coarse
-            << ", " << medium << ", " << fine << std::endl;
+  std::cout << "vibrating bar: max tip velocity error / v0 at h = 1, 1/2, 1/4: "
+            << coarse << ", " << medium << ", " << fine << std::endl;
   EXPECT_LT(fine, medium);
   EXPECT_LT(medium, coarse);
   // With the dispersion error of linear MPM, O(h^2): a few percent at h = 1.

@@ -15,41 +15,48 @@ namespace
   double
   body_mass(const std::string &grid, const std::string &body)
   {
-    auto simulation = test::make_simulation<dim>("set Dimension = " + std::to_string(dim) +
-                                                 "\nsubsection Grid\n" + grid +
-                                                 "\nend\nsubsection Material 1\n set Density = 2\nend\n"
-                                                 "subsection Body 1\n" + body + "\nend\n");
+    auto simulation = test::make_simulation<dim>(
+      "set Dimension = " + std::to_string(dim) + "\nsubsection Grid\n" + grid +
+      "\nend\nsubsection Material 1\n set Density = 2\nend\n"
+      "subsection Body 1\n" +
+      body + "\nend\n");
     std::set<types::particle_index> ids;
     for (const auto &p : simulation->particle_set().handler)
       ids.insert(p.get_id());
-    EXPECT_EQ(ids.size(), simulation->particle_set().handler.n_global_particles());
+    EXPECT_EQ(ids.size(),
+              simulation->particle_set().handler.n_global_particles());
     return simulation->statistics().mass / 2.;
   }
 } // namespace
 
 TEST(Body, BoxOfWholeCellsHasExactMass)
 {
-  EXPECT_NEAR(body_mass<2>(" set Cells = 10, 10",
-                           " set Lower corner = 0.2, 0.3\n set Upper corner = 0.6, 0.5"),
-              0.08, 1e-14);
+  EXPECT_NEAR(
+    body_mass<2>(" set Cells = 10, 10",
+                 " set Lower corner = 0.2, 0.3\n set Upper corner = 0.6, 0.5"),
+    0.08,
+    1e-14);
 }
 
 TEST(Body, DiskAndCylinderApproximateTheirVolume)
 {
-  const double disk = body_mass<2>(" set Cells = 40, 40",
-                                   " set Shape = ball\n set Center = 0.5, 0.5\n set Radius = 0.3");
+  const double disk = body_mass<2>(
+    " set Cells = 40, 40",
+    " set Shape = ball\n set Center = 0.5, 0.5\n set Radius = 0.3");
   EXPECT_NEAR(disk, M_PI * 0.09, 0.01 * M_PI * 0.09);
-  const double cylinder =
-    body_mass<3>(" set Cells = 20, 20, 20",
-                 " set Shape = cylinder\n set Center = 0.5, 0.5, 0.5\n set Radius = 0.3\n"
-                 " set Axis = y\n set Height = 0.5\n set Particles per cell = 2");
+  const double cylinder = body_mass<3>(
+    " set Cells = 20, 20, 20",
+    " set Shape = cylinder\n set Center = 0.5, 0.5, 0.5\n set Radius = 0.3\n"
+    " set Axis = y\n set Height = 0.5\n set Particles per cell = 2");
   EXPECT_NEAR(cylinder, M_PI * 0.09 * 0.5, 0.03 * M_PI * 0.09 * 0.5);
 }
 
 TEST(Body, MeshBodyFillsItsCells)
 {
-  const std::string mesh = DEALMPM_SOURCE_DIR "/tests/data/distorted_square.msh";
+  const std::string mesh =
+    DEALMPM_SOURCE_DIR "/tests/data/distorted_square.msh";
   EXPECT_NEAR(body_mass<2>(" set Cells = 16, 16",
                            " set Shape = mesh\n set Mesh file = " + mesh),
-              1., 1e-12);
+              1.,
+              1e-12);
 }

@@ -19,11 +19,14 @@ namespace
     const std::string half  = dim == 2 ? "0.5, 0.5" : "0.5, 0.5, 0.5";
     const std::string upper = dim == 2 ? "1, 1" : "1, 1, 1";
     return "set Dimension = " + std::to_string(dim) +
-           "\nsubsection Grid\n set Lower corner = " + lower + "\n set Upper corner = " + upper +
-           "\n set Cells = " + cells + "\n subsection Local refinement\n  set Levels = 1\n"
-           "  set Lower corner = " + lower + "\n  set Upper corner = " + half +
-           "\n end\nend\nsubsection Body 1\n set Shape = box\n set Lower corner = " + lower +
-           "\n set Upper corner = " + upper + "\n set Particles per cell = 2\nend\n";
+           "\nsubsection Grid\n set Lower corner = " + lower +
+           "\n set Upper corner = " + upper + "\n set Cells = " + cells +
+           "\n subsection Local refinement\n  set Levels = 1\n"
+           "  set Lower corner = " +
+           lower + "\n  set Upper corner = " + half +
+           "\n end\nend\nsubsection Body 1\n set Shape = box\n set Lower corner = " +
+           lower + "\n set Upper corner = " + upper +
+           "\n set Particles per cell = 2\nend\n";
   }
 
   template <int dim>
@@ -39,13 +42,17 @@ namespace
       if (c.first_weight != numbers::invalid_unsigned_int)
         {
           ++constrained_cells;
-          ASSERT_GT(simulation->particle_set().handler.n_particles_in_cell(c.cell), 0u);
+          ASSERT_GT(
+            simulation->particle_set().handler.n_particles_in_cell(c.cell), 0u);
         }
     ASSERT_GT(constrained_cells, 0u) << "the grid must have hanging nodes";
 
     Stencil<dim> stencil;
-    compute_linear_stencil(simulation->background_grid(), simulation->particle_set(), stencil);
-    ASSERT_EQ(stencil.n_particles(), simulation->particle_set().handler.n_locally_owned_particles());
+    compute_linear_stencil(simulation->background_grid(),
+                           simulation->particle_set(),
+                           stencil);
+    ASSERT_EQ(stencil.n_particles(),
+              simulation->particle_set().handler.n_locally_owned_particles());
     for (std::size_t k = 0; k < stencil.n_particles(); ++k)
       {
         double         sum = 0;
@@ -77,7 +84,10 @@ TEST(Stencil, PartitionOfUnityWithHangingNodes3D)
 TEST(GridCell, DistortedCellMapRoundTrip)
 {
   GridCell<2> c;
-  c.vertices = {{Point<2>(0, 0), Point<2>(1.2, 0.1), Point<2>(-0.1, 0.9), Point<2>(1.4, 1.3)}};
+  c.vertices = {{Point<2>(0, 0),
+                 Point<2>(1.2, 0.1),
+                 Point<2>(-0.1, 0.9),
+                 Point<2>(1.4, 1.3)}};
   c.affine   = false;
   c.h        = 0.9;
   std::mt19937                           rng(7);
@@ -98,7 +108,8 @@ TEST(GridCell, DistortedCellMapRoundTrip)
       Point<2> plus = xi, minus = xi;
       plus[b] += eps;
       minus[b] -= eps;
-      const Tensor<1, 2> column = (c.real_point(plus) - c.real_point(minus)) / (2 * eps);
+      const Tensor<1, 2> column =
+        (c.real_point(plus) - c.real_point(minus)) / (2 * eps);
       for (unsigned int a = 0; a < 2; ++a)
         J[a][b] = column[a];
     }

@@ -40,17 +40,18 @@ end
   randomize_state(ParticleSet<2> &particles, std::mt19937 &rng)
   {
     std::uniform_real_distribution<double> r(-1., 1.);
-    const CoreFields &                     f = particles.fields;
+    const CoreFields                      &f = particles.fields;
     for (auto &p : particles.handler)
       {
-        auto props          = p.get_properties();
-        props[f.mass]       = 1. + 0.5 * r(rng);
-        props[f.velocity]   = r(rng);
+        auto props            = p.get_properties();
+        props[f.mass]         = 1. + 0.5 * r(rng);
+        props[f.velocity]     = r(rng);
         props[f.velocity + 1] = r(rng);
         for (unsigned int i = 0; i < 3; ++i)
           props[f.stress + i] = 100. * r(rng);
         for (unsigned int i = 0; i < 4; ++i)
-          props[f.deformation_gradient + i] = (i == 0 || i == 3 ? 1. : 0.) + 0.1 * r(rng);
+          props[f.deformation_gradient + i] =
+            (i == 0 || i == 3 ? 1. : 0.) + 0.1 * r(rng);
       }
   }
 } // namespace
@@ -80,13 +81,20 @@ TEST(Transfer, ParticleToGridConservesMassAndMomentum)
       mass_abs += props[particles.fields.mass];
     }
   EXPECT_NEAR(fields.mass.l1_norm(), mass, 1e-13 * mass);
-  EXPECT_NEAR(fields.momentum[0].mean_value() * fields.momentum[0].size(), px, 1e-12 * mass_abs);
-  EXPECT_NEAR(fields.momentum[1].mean_value() * fields.momentum[1].size(), py, 1e-12 * mass_abs);
+  EXPECT_NEAR(fields.momentum[0].mean_value() * fields.momentum[0].size(),
+              px,
+              1e-12 * mass_abs);
+  EXPECT_NEAR(fields.momentum[1].mean_value() * fields.momentum[1].size(),
+              py,
+              1e-12 * mass_abs);
   // Internal forces are equal and opposite pairs: they sum to zero.
-  const double force_scale = fields.force[0].l1_norm() + fields.force[1].l1_norm();
+  const double force_scale =
+    fields.force[0].l1_norm() + fields.force[1].l1_norm();
   EXPECT_GT(force_scale, 0.);
-  EXPECT_LT(std::abs(fields.force[0].mean_value() * fields.force[0].size()), 1e-13 * force_scale);
-  EXPECT_LT(std::abs(fields.force[1].mean_value() * fields.force[1].size()), 1e-13 * force_scale);
+  EXPECT_LT(std::abs(fields.force[0].mean_value() * fields.force[0].size()),
+            1e-13 * force_scale);
+  EXPECT_LT(std::abs(fields.force[1].mean_value() * fields.force[1].size()),
+            1e-13 * force_scale);
 }
 
 TEST(Transfer, GridToParticleReproducesLinearField)
@@ -95,7 +103,7 @@ TEST(Transfer, GridToParticleReproducesLinearField)
   std::mt19937 rng(5);
   test::scatter_particles_in_cells(*simulation, rng);
   ParticleSet<2> &particles = simulation->particle_set();
-  const auto &    grid      = simulation->background_grid();
+  const auto     &grid      = simulation->background_grid();
 
   Tensor<2, 2> A;
   A[0][0] = 0.3, A[0][1] = -1.1, A[1][0] = 0.7, A[1][1] = 2.0;
@@ -106,17 +114,26 @@ TEST(Transfer, GridToParticleReproducesLinearField)
   std::map<types::global_dof_index, Point<2>> nodes;
   DoFTools::map_dofs_to_support_points(MappingQ1<2>(), grid.dof_handler, nodes);
   for (const auto &[dof, x] : nodes)
-    if (grid.partitioner->in_local_range(dof) || grid.partitioner->is_ghost_entry(dof))
+    if (grid.partitioner->in_local_range(dof) ||
+        grid.partitioner->is_ghost_entry(dof))
       for (unsigned int d = 0; d < 2; ++d)
-        fields.velocity[d].local_element(grid.partitioner->global_to_local(dof)) =
-          (A * x + b)[d];
+        fields.velocity[d].local_element(
+          grid.partitioner->global_to_local(dof)) = (A * x + b)[d];
 
   Stencil<2> stencil;
   compute_linear_stencil(grid, particles, stencil);
   std::vector<Tensor<2, 2>> L;
-  grid_to_particle(grid, stencil, fields, /*dt=*/0., /*flip_fraction=*/0., particles,
-                   [&](const auto &, const auto &, const Tensor<2, 2> &velocity_gradient,
-                       const Tensor<2, 2> &, const GridCell<2> &) {
+  grid_to_particle(grid,
+                   stencil,
+                   fields,
+                   /*dt=*/0.,
+                   /*flip_fraction=*/0.,
+                   particles,
+                   [&](const auto &,
+                       const auto &,
+                       const Tensor<2, 2> &velocity_gradient,
+                       const Tensor<2, 2> &,
+                       const GridCell<2> &) {
                      L.push_back(velocity_gradient);
                    });
 

@@ -39,8 +39,8 @@ namespace dealmpm
     void
     add(const std::string &name,
         const std::string &description,
-        const Declare &    declare,
-        const Create &     create)
+        const Declare     &declare,
+        const Create      &create)
     {
       entries[name] = Entry{name, description, declare, create};
     }

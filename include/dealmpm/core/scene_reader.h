@@ -81,7 +81,7 @@ namespace dealmpm
     path_of(const std::string &entry) const;
 
   private:
-    ParameterHandler &       prm;
+    ParameterHandler        &prm;
     std::string              file;
     std::vector<std::string> sections;
   };

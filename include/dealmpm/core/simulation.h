@@ -31,22 +31,22 @@ namespace dealmpm
   /** Time stepping, transfer and output settings of a run. */
   struct RunSettings
   {
-    double       end_time      = 1;
-    bool         cfl_time_step = true;
-    double       fixed_time_step = 1e-3;
-    double       cfl_number    = 0.5;
-    unsigned int max_steps     = 0; ///< 0: no limit
-    double       flip_fraction = 1; ///< 1 FLIP, 0 PIC
-    double       relative_mass_threshold = 1e-9;
+    double       end_time                  = 1;
+    bool         cfl_time_step             = true;
+    double       fixed_time_step           = 1e-3;
+    double       cfl_number                = 0.5;
+    unsigned int max_steps                 = 0; ///< 0: no limit
+    double       flip_fraction             = 1; ///< 1 FLIP, 0 PIC
+    double       relative_mass_threshold   = 1e-9;
     bool         stop_when_particles_leave = false;
 
-    std::string  output_directory = "output";
-    double       output_interval  = 0.1;
-    bool         write_particles  = true;
-    bool         write_grid       = false;
-    bool         write_particle_csv = false;
-    double       progress_interval  = 5;
-    bool         verbose            = true;
+    std::string output_directory   = "output";
+    double      output_interval    = 0.1;
+    bool        write_particles    = true;
+    bool        write_grid         = false;
+    bool        write_particle_csv = false;
+    double      progress_interval  = 5;
+    bool        verbose            = true;
   };
 
   /**
@@ -63,9 +63,9 @@ namespace dealmpm
     static void
     declare_parameters(ParameterHandler &prm, const SceneShape &shape);
 
-    Simulation(ParameterHandler &prm,
+    Simulation(ParameterHandler  &prm,
                const std::string &scene_file,
-               const SceneShape & shape,
+               const SceneShape  &shape,
                const MPI_Comm     comm);
 
     /** The whole run: output at t = 0, every interval and at the end, a
@@ -140,46 +140,48 @@ namespace dealmpm
     void
     write_output();
 
-    MPI_Comm            comm;
-    ConditionalOStream  pcout;
-    std::string         scene_file;
-    RunSettings         run_settings;
-    BackgroundGrid<dim> grid;
-    BoundaryConditions<dim> boundary_conditions;
+    MPI_Comm                                    comm;
+    ConditionalOStream                          pcout;
+    std::string                                 scene_file;
+    RunSettings                                 run_settings;
+    BackgroundGrid<dim>                         grid;
+    BoundaryConditions<dim>                     boundary_conditions;
     std::vector<std::unique_ptr<Material<dim>>> materials;
-    std::vector<std::string>                   material_models;
-    std::vector<std::unique_ptr<Effect<dim>>>  effects;
-    std::vector<std::string>                   effect_names;
-    std::vector<Body<dim>>                     bodies;
-    std::unique_ptr<ParticleSet<dim>>          particles;
-    NodalFields<dim>                           fields;
-    Stencil<dim>                               stencil;
-    double                                     mass_threshold = 0;
+    std::vector<std::string>                    material_models;
+    std::vector<std::unique_ptr<Effect<dim>>>   effects;
+    std::vector<std::string>                    effect_names;
+    std::vector<Body<dim>>                      bodies;
+    std::unique_ptr<ParticleSet<dim>>           particles;
+    NodalFields<dim>                            fields;
+    Stencil<dim>                                stencil;
+    double                                      mass_threshold = 0;
     /** Made last in the constructor: a TimerOutput destroyed while an
      * input error propagates prints a warning about MPI. */
-    std::unique_ptr<TimerOutput>               computing_timer;
+    std::unique_ptr<TimerOutput> computing_timer;
 
-    double       current_time = 0;
-    unsigned int step         = 0;
+    double       current_time    = 0;
+    unsigned int step            = 0;
     double       max_signal_rate = 0; ///< of the last stress update
     double       lost_particles  = 0;
     std::vector<std::pair<types::particle_index, Point<dim>>> lost_this_step;
 
-    unsigned int output_counter = 0;
-    double       last_output_time = 0;
-    std::string  last_output;
+    unsigned int        output_counter   = 0;
+    double              last_output_time = 0;
+    std::string         last_output;
     ParticleOutput<dim> particle_output;
-    PvdSeries    particle_series, grid_series;
+    PvdSeries           particle_series, grid_series;
   };
 
   /** Read Dimension, Number of bodies and Number of materials (pass one of
    * two over the scene file, overrides applied). */
   SceneShape
-  read_scene_shape(const std::string &file, const std::vector<std::string> &overrides);
+  read_scene_shape(const std::string              &file,
+                   const std::vector<std::string> &overrides);
 
   /** Apply "Section/Entry=value" overrides; throws InputError. */
   void
-  apply_overrides(ParameterHandler &prm, const std::vector<std::string> &overrides);
+  apply_overrides(ParameterHandler               &prm,
+                  const std::vector<std::string> &overrides);
 
   /** The dealmpm program (argument parsing, both passes, the run, error
    * reporting); examples call it after registering their own models. */

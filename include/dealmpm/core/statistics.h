@@ -30,8 +30,9 @@ namespace dealmpm
 
   template <int dim>
   Statistics
-  compute_statistics(const ParticleSet<dim> &                            particles,
-                     const std::vector<std::unique_ptr<Material<dim>>> &materials,
-                     const std::vector<std::unique_ptr<Effect<dim>>> &  effects,
-                     const MPI_Comm                                     comm);
+  compute_statistics(
+    const ParticleSet<dim>                            &particles,
+    const std::vector<std::unique_ptr<Material<dim>>> &materials,
+    const std::vector<std::unique_ptr<Effect<dim>>>   &effects,
+    const MPI_Comm                                     comm);
 } // namespace dealmpm

@@ -83,11 +83,11 @@ namespace dealmpm
     void
     setup();
 
-    MPI_Comm                                  comm;
-    parallel::distributed::Triangulation<dim> triangulation;
-    FE_Q<dim>                                 fe;
-    DoFHandler<dim>                           dof_handler;
-    AffineConstraints<double>                 hanging_node_constraints;
+    MPI_Comm                                           comm;
+    parallel::distributed::Triangulation<dim>          triangulation;
+    FE_Q<dim>                                          fe;
+    DoFHandler<dim>                                    dof_handler;
+    AffineConstraints<double>                          hanging_node_constraints;
     std::shared_ptr<const Utilities::MPI::Partitioner> partitioner;
     /** MappingCartesian when every cell is an axis-aligned box (the particle
      * sort is about 2.5x cheaper), MappingQ1 otherwise. */

@@ -34,7 +34,7 @@ namespace dealmpm
     read(SceneReader &reader);
 
     void
-    setup(const BackgroundGrid<dim> &                        grid,
+    setup(const BackgroundGrid<dim>                        &grid,
           const std::map<types::boundary_id, BoundaryKind> &kinds);
 
     /** Project v* and the velocity increment of the constrained locally
@@ -52,9 +52,9 @@ namespace dealmpm
   private:
     struct Node
     {
-      unsigned int                       local_index;
-      unsigned int                       n_normals = 0;
-      std::array<Tensor<1, dim>, dim>    normals; ///< orthonormal
+      unsigned int                    local_index;
+      unsigned int                    n_normals = 0;
+      std::array<Tensor<1, dim>, dim> normals; ///< orthonormal
     };
     std::vector<Node> nodes;
   };

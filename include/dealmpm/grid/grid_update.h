@@ -14,8 +14,8 @@ namespace dealmpm
    */
   template <int dim>
   void
-  update_nodal_velocity(NodalFields<dim> &              fields,
-                        const double                    dt,
-                        const double                    mass_threshold,
+  update_nodal_velocity(NodalFields<dim>              &fields,
+                        const double                   dt,
+                        const double                   mass_threshold,
                         const BoundaryConditions<dim> &boundary_conditions);
 } // namespace dealmpm

@@ -28,7 +28,8 @@ namespace dealmpm
     std::array<NodalVector, dim> velocity_increment; ///< v* - v
 
     void
-    reinit(const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner)
+    reinit(
+      const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner)
     {
       mass.reinit(partitioner);
       for (unsigned int d = 0; d < dim; ++d)

@@ -12,7 +12,7 @@ namespace dealmpm
   template <int dim>
   std::string
   write_grid_output(const BackgroundGrid<dim> &grid,
-                    const NodalFields<dim> &   fields,
-                    const std::string &        directory,
+                    const NodalFields<dim>    &fields,
+                    const std::string         &directory,
                     const unsigned int         counter);
 } // namespace dealmpm

@@ -11,6 +11,6 @@ namespace dealmpm
   template <int dim>
   void
   write_particle_csv(const ParticleSet<dim> &particles,
-                     const std::string &     path,
+                     const std::string      &path,
                      const MPI_Comm          comm);
 } // namespace dealmpm

@@ -10,7 +10,9 @@ namespace dealmpm
   class Progress
   {
   public:
-    Progress(std::ostream &out, const double interval_seconds, const bool active);
+    Progress(std::ostream &out,
+             const double  interval_seconds,
+             const bool    active);
 
     void
     update(const unsigned int step,
@@ -23,7 +25,7 @@ namespace dealmpm
     elapsed_seconds() const;
 
   private:
-    std::ostream &                        out;
+    std::ostream                         &out;
     double                                interval;
     bool                                  active;
     std::chrono::steady_clock::time_point start;

@@ -12,13 +12,15 @@ namespace dealmpm
   class StatisticsFile
   {
   public:
-    StatisticsFile(const std::string &path, const unsigned int dim, const bool writer);
+    StatisticsFile(const std::string &path,
+                   const unsigned int dim,
+                   const bool         writer);
 
     void
     write_row(const unsigned int step,
               const double       time,
               const double       dt,
-              const Statistics & s,
+              const Statistics  &s,
               const double       n_lost_particles,
               const double       wall_time);
 

@@ -28,8 +28,8 @@ namespace dealmpm
     }
 
     void
-    update_stress(const Tensor<2, dim> &   L,
-                  const Tensor<2, dim> &   F,
+    update_stress(const Tensor<2, dim>    &L,
+                  const Tensor<2, dim>    &F,
                   const double             dt,
                   SymmetricTensor<2, dim> &stress,
                   ArrayView<double>        internal) const override;
@@ -39,9 +39,9 @@ namespace dealmpm
 
     /** The integrated stress power. */
     double
-    strain_energy_density(const Tensor<2, dim> &         F,
+    strain_energy_density(const Tensor<2, dim>          &F,
                           const SymmetricTensor<2, dim> &stress,
-                          ArrayView<const double>        internal) const override;
+                          ArrayView<const double> internal) const override;
 
   private:
     LameParameters lame;

@@ -46,11 +46,11 @@ namespace dealmpm
      * the already updated deformation gradient.
      */
     virtual void
-    update_stress(const Tensor<2, dim> &    L,
-                  const Tensor<2, dim> &    F,
-                  const double              dt,
-                  SymmetricTensor<2, dim> & stress,
-                  ArrayView<double>         internal) const = 0;
+    update_stress(const Tensor<2, dim>    &L,
+                  const Tensor<2, dim>    &F,
+                  const double             dt,
+                  SymmetricTensor<2, dim> &stress,
+                  ArrayView<double>        internal) const = 0;
 
     /** Dilatational (P-)wave speed at the current state. */
     virtual double
@@ -58,7 +58,7 @@ namespace dealmpm
 
     /** Stored energy per unit reference volume. */
     virtual double
-    strain_energy_density(const Tensor<2, dim> &         F,
+    strain_energy_density(const Tensor<2, dim>          &F,
                           const SymmetricTensor<2, dim> &stress,
                           ArrayView<const double>        internal) const = 0;
 

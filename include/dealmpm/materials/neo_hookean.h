@@ -17,8 +17,8 @@ namespace dealmpm
     explicit NeoHookean(const LameParameters &lame);
 
     void
-    update_stress(const Tensor<2, dim> &   L,
-                  const Tensor<2, dim> &   F,
+    update_stress(const Tensor<2, dim>    &L,
+                  const Tensor<2, dim>    &F,
                   const double             dt,
                   SymmetricTensor<2, dim> &stress,
                   ArrayView<double>        internal) const override;
@@ -28,9 +28,9 @@ namespace dealmpm
     wave_speed(const Tensor<2, dim> &F) const override;
 
     double
-    strain_energy_density(const Tensor<2, dim> &         F,
+    strain_energy_density(const Tensor<2, dim>          &F,
                           const SymmetricTensor<2, dim> &stress,
-                          ArrayView<const double>        internal) const override;
+                          ArrayView<const double> internal) const override;
 
   private:
     LameParameters lame;

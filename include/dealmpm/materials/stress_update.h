@@ -28,27 +28,33 @@ namespace dealmpm
     /** Fold one particle into the check. */
     template <typename Accessor>
     void
-    inspect(const Accessor &               p,
-            const Tensor<1, dim> &         v,
-            const Tensor<2, dim> &         F,
+    inspect(const Accessor                &p,
+            const Tensor<1, dim>          &v,
+            const Tensor<2, dim>          &F,
             const SymmetricTensor<2, dim> &stress,
-            const Material<dim> &          material,
+            const Material<dim>           &material,
             const double                   h)
     {
       const double J   = determinant(F);
       double       sum = J + v.norm_square();
-      for (unsigned int i = 0; i < SymmetricTensor<2, dim>::n_independent_components; ++i)
+      for (unsigned int i = 0;
+           i < SymmetricTensor<2, dim>::n_independent_components;
+           ++i)
         sum += stress.access_raw_entry(i);
       for (unsigned int d = 0; d < dim; ++d)
         sum += p.get_location()[d];
       if (!std::isfinite(sum))
-        fail(p, "non-finite position, velocity, deformation gradient or stress");
+        fail(p,
+             "non-finite position, velocity, deformation gradient or stress");
       else if (!(J > 0.))
-        fail(p, "deformation gradient with J <= 0 (the particle turned inside out: "
-                "time step too large, or cell crossing and tiny nodal masses; try a "
-                "smaller CFL number)");
+        fail(
+          p,
+          "deformation gradient with J <= 0 (the particle turned inside out: "
+          "time step too large, or cell crossing and tiny nodal masses; try a "
+          "smaller CFL number)");
       else
-        max_signal_rate = std::max(max_signal_rate, (material.wave_speed(F) + v.norm()) / h);
+        max_signal_rate =
+          std::max(max_signal_rate, (material.wave_speed(F) + v.norm()) / h);
     }
 
   private:
@@ -75,7 +81,7 @@ namespace dealmpm
   {
   public:
     StressUpdate(const std::vector<std::unique_ptr<Material<dim>>> &materials,
-                 const ParticleSet<dim> &                           particles,
+                 const ParticleSet<dim>                            &particles,
                  const double                                       dt)
       : materials(materials)
       , particles(particles)
@@ -84,35 +90,40 @@ namespace dealmpm
 
     template <typename Accessor>
     void
-    operator()(const Accessor &         p,
+    operator()(const Accessor          &p,
                const ArrayView<double> &props,
-               const Tensor<2, dim> &   L,
-               const Tensor<2, dim> &   F,
-               const GridCell<dim> &    cell)
+               const Tensor<2, dim>    &L,
+               const Tensor<2, dim>    &F,
+               const GridCell<dim>     &cell)
     {
-      const CoreFields &      f        = particles.fields;
-      const unsigned int      m        = static_cast<unsigned int>(props[f.material]);
-      const Material<dim> &   material = *materials[m];
+      const CoreFields       &f = particles.fields;
+      const unsigned int      m = static_cast<unsigned int>(props[f.material]);
+      const Material<dim>    &material = *materials[m];
       SymmetricTensor<2, dim> stress   = read_symmetric<dim>(&props[f.stress]);
-      material.update_stress(L, F, dt, stress,
-                             ArrayView<double>(props.data() + particles.internal_offset[m],
+      material.update_stress(L,
+                             F,
+                             dt,
+                             stress,
+                             ArrayView<double>(props.data() +
+                                                 particles.internal_offset[m],
                                                particles.n_internal[m]));
       write_symmetric<dim>(&props[f.stress], stress);
-      check.inspect(p, read_vector<dim>(&props[f.velocity]), F, stress, material, cell.h);
+      check.inspect(
+        p, read_vector<dim>(&props[f.velocity]), F, stress, material, cell.h);
     }
 
     ParticleCheck<dim> check;
 
   private:
     const std::vector<std::unique_ptr<Material<dim>>> &materials;
-    const ParticleSet<dim> &                           particles;
+    const ParticleSet<dim>                            &particles;
     double                                             dt;
   };
 
   /** The checks without a stress update (for the first time step). */
   template <int dim>
   ParticleCheck<dim>
-  check_particles(const BackgroundGrid<dim> &                        grid,
+  check_particles(const BackgroundGrid<dim>                         &grid,
                   const std::vector<std::unique_ptr<Material<dim>>> &materials,
-                  const ParticleSet<dim> &                           particles);
+                  const ParticleSet<dim>                            &particles);
 } // namespace dealmpm

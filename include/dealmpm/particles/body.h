@@ -56,10 +56,10 @@ namespace dealmpm
    */
   template <int dim>
   std::size_t
-  generate_particles(const Body<dim> &          body,
+  generate_particles(const Body<dim>           &body,
                      const unsigned int         body_index,
                      const double               density,
                      const BackgroundGrid<dim> &grid,
-                     ParticleSet<dim> &         particles,
+                     ParticleSet<dim>          &particles,
                      const std::vector<double> &initial_internal_variables);
 } // namespace dealmpm

@@ -39,17 +39,18 @@ namespace dealmpm
      * @p internal_variables: per material index, the model's internal
      * variables; models that share a name share storage.
      */
-    ParticleSet(const Triangulation<dim> &                          tria,
-                const Mapping<dim> &                                mapping,
-                const std::vector<std::string> &                    model_names,
-                const std::vector<std::vector<FieldDescription>> &internal_variables);
+    ParticleSet(
+      const Triangulation<dim>                         &tria,
+      const Mapping<dim>                               &mapping,
+      const std::vector<std::string>                   &model_names,
+      const std::vector<std::vector<FieldDescription>> &internal_variables);
 
-    PropertyLayout                   layout;
-    CoreFields                       fields;
+    PropertyLayout layout;
+    CoreFields     fields;
     /** Offset of each material's internal variables (per material index). */
-    std::vector<unsigned int>        internal_offset;
-    std::vector<unsigned int>        n_internal;
-    Particles::ParticleHandler<dim>  handler;
+    std::vector<unsigned int>       internal_offset;
+    std::vector<unsigned int>       n_internal;
+    Particles::ParticleHandler<dim> handler;
   };
 
   /** Read and write small tensors from a particle's property array. */
@@ -96,7 +97,9 @@ namespace dealmpm
   read_symmetric(const double *p)
   {
     SymmetricTensor<2, dim> t;
-    for (unsigned int i = 0; i < SymmetricTensor<2, dim>::n_independent_components; ++i)
+    for (unsigned int i = 0;
+         i < SymmetricTensor<2, dim>::n_independent_components;
+         ++i)
       t.access_raw_entry(i) = p[i];
     return t;
   }
@@ -105,7 +108,9 @@ namespace dealmpm
   inline void
   write_symmetric(double *p, const SymmetricTensor<2, dim> &t)
   {
-    for (unsigned int i = 0; i < SymmetricTensor<2, dim>::n_independent_components; ++i)
+    for (unsigned int i = 0;
+         i < SymmetricTensor<2, dim>::n_independent_components;
+         ++i)
       p[i] = t.access_raw_entry(i);
   }
 } // namespace dealmpm

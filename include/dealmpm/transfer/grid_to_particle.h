@@ -23,12 +23,12 @@ namespace dealmpm
   template <int dim, typename AfterKinematics>
   bool
   grid_to_particle(const BackgroundGrid<dim> &grid,
-                   const Stencil<dim> &       stencil,
-                   const NodalFields<dim> &   fields,
+                   const Stencil<dim>        &stencil,
+                   const NodalFields<dim>    &fields,
                    const double               dt,
                    const double               flip_fraction,
-                   ParticleSet<dim> &         particles,
-                   AfterKinematics &&         after_kinematics)
+                   ParticleSet<dim>          &particles,
+                   AfterKinematics          &&after_kinematics)
   {
     const double *velocity[dim], *increment[dim];
     for (unsigned int d = 0; d < dim; ++d)
@@ -62,7 +62,8 @@ namespace dealmpm
           const ArrayView<double> props = p.get_properties();
           const Tensor<1, dim>    v_old = read_vector<dim>(&props[f.velocity]);
           write_vector<dim>(&props[f.velocity],
-                            flip_fraction * (v_old + dv) + (1. - flip_fraction) * v_new);
+                            flip_fraction * (v_old + dv) +
+                              (1. - flip_fraction) * v_new);
           const Tensor<1, dim> dx = dt * v_new;
           write_vector<dim>(&props[f.displacement],
                             read_vector<dim>(&props[f.displacement]) + dx);
@@ -72,13 +73,15 @@ namespace dealmpm
           Tensor<2, dim> dF = dt * L;
           for (unsigned int d = 0; d < dim; ++d)
             dF[d][d] += 1.;
-          const Tensor<2, dim> F = dF * read_tensor<dim>(&props[f.deformation_gradient]);
+          const Tensor<2, dim> F =
+            dF * read_tensor<dim>(&props[f.deformation_gradient]);
           write_tensor<dim>(&props[f.deformation_gradient], F);
 
           const Point<dim> xi = c.reference_point(x);
           p.set_reference_location(xi);
           for (unsigned int d = 0; d < dim; ++d)
-            left_cell = left_cell || xi[d] < -tolerance || xi[d] > 1. + tolerance;
+            left_cell =
+              left_cell || xi[d] < -tolerance || xi[d] > 1. + tolerance;
 
           after_kinematics(p, props, L, F, c);
           ++k;

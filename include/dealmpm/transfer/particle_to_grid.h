@@ -16,7 +16,7 @@ namespace dealmpm
   template <int dim>
   void
   particle_to_grid(const BackgroundGrid<dim> &grid,
-                   const ParticleSet<dim> &   particles,
-                   const Stencil<dim> &       stencil,
-                   NodalFields<dim> &         fields);
+                   const ParticleSet<dim>    &particles,
+                   const Stencil<dim>        &stencil,
+                   NodalFields<dim>          &fields);
 } // namespace dealmpm

@@ -35,6 +35,6 @@ namespace dealmpm
   template <int dim>
   void
   compute_linear_stencil(const BackgroundGrid<dim> &grid,
-                         const ParticleSet<dim> &   particles,
-                         Stencil<dim> &             stencil);
+                         const ParticleSet<dim>    &particles,
+                         Stencil<dim>              &stencil);
 } // namespace dealmpm
