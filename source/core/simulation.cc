@@ -523,13 +523,18 @@ namespace dealmpm
     StatisticsFile stats(s.output_directory + "/statistics.csv", dim, writer);
     Progress progress(std::cout, s.progress_interval, writer && s.verbose);
 
-    Statistics initial = statistics();
+    Statistics   initial = statistics();
+    const double local_particles =
+      particles->handler.n_locally_owned_particles();
+    const double fewest = Utilities::MPI::min(local_particles, comm);
+    const double most   = Utilities::MPI::max(local_particles, comm);
     if (s.verbose)
       pcout << "dealmpm: " << dim << "D, "
             << grid.triangulation.n_global_active_cells() << " cells, "
             << grid.dof_handler.n_dofs() << " nodes, "
             << static_cast<unsigned long>(initial.n_particles) << " particles, "
-            << Utilities::MPI::n_mpi_processes(comm) << " rank(s); output in "
+            << Utilities::MPI::n_mpi_processes(comm) << " rank(s) (" << fewest
+            << " to " << most << " particles per rank); output in "
             << s.output_directory << "/" << std::endl;
     write_output();
     stats.write_row(0, 0., 0., initial, 0, progress.elapsed_seconds());
