@@ -4,6 +4,8 @@
 #include <dealmpm/core/scene_reader.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 
 namespace dealmpm
 {
@@ -117,6 +119,20 @@ namespace dealmpm
       {
         fail(entry, "an integer");
       }
+  }
+
+  std::string
+  SceneReader::get_file(const std::string &entry,
+                        const std::string &expected) const
+  {
+    std::filesystem::path       path(get(entry));
+    const std::filesystem::path folder =
+      std::filesystem::path(file).parent_path();
+    if (!path.empty() && path.is_relative() && !folder.empty())
+      path = folder / path;
+    if (path.empty() || !std::ifstream(path))
+      fail(entry, expected);
+    return path.string();
   }
 
   std::vector<double>

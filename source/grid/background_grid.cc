@@ -108,15 +108,8 @@ namespace dealmpm
       }
     else
       {
-        std::string                 file = reader.get("Mesh file");
-        const std::filesystem::path scene_folder =
-          std::filesystem::path(reader.file_name()).parent_path();
-        if (!file.empty() && std::filesystem::path(file).is_relative() &&
-            !scene_folder.empty())
-          file = (scene_folder / file).string();
-        std::ifstream in(file);
-        if (file.empty() || !in)
-          reader.fail("Mesh file", "a readable Gmsh .msh file");
+        std::ifstream in(
+          reader.get_file("Mesh file", "a readable Gmsh .msh file"));
         GridIn<dim> grid_in;
         grid_in.attach_triangulation(triangulation);
         try

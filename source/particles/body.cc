@@ -241,15 +241,8 @@ namespace dealmpm
       }
     else
       {
-        std::string                 file = reader.get("Mesh file");
-        const std::filesystem::path folder =
-          std::filesystem::path(reader.file_name()).parent_path();
-        if (!file.empty() && std::filesystem::path(file).is_relative() &&
-            !folder.empty())
-          file = (folder / file).string();
-        std::ifstream in(file);
-        if (file.empty() || !in)
-          reader.fail("Mesh file", "a readable Gmsh .msh file");
+        std::ifstream in(
+          reader.get_file("Mesh file", "a readable Gmsh .msh file"));
         try
           {
             body.shape = std::make_unique<MeshShape<dim>>(in);

@@ -48,6 +48,11 @@ namespace dealmpm
     std::vector<double>
     get_doubles(const std::string &entry) const;
 
+    /** The path of a file named by an entry, relative to the scene file's
+     * folder unless absolute; fails unless the file can be opened. */
+    std::string
+    get_file(const std::string &entry, const std::string &expected) const;
+
     /** Exactly dim comma-separated numbers. */
     template <int dim>
     Point<dim>
