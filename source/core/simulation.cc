@@ -138,8 +138,13 @@ namespace dealmpm
     prm.enter_subsection("MPM");
     prm.declare_entry("Stress update",
                       "USL",
-                      Patterns::Selection("USL"),
-                      "Order of the stages: USL (update stress last).");
+                      Patterns::Selection(update_scheme_pattern()),
+                      "When the stress is updated: 'USL' (last, with the "
+                      "step's new grid velocity; one sweep, fastest), 'USF' "
+                      "(first, with the velocity at the start of the step), "
+                      "'MUSL' (last, with the grid velocity re-mapped from "
+                      "the updated particles: robust where nodes carry "
+                      "little mass, one more P2G and G2P).");
     prm.declare_entry(
       "Velocity update",
       "FLIP",
@@ -216,6 +221,7 @@ namespace dealmpm
     read_effects(reader);
     create_particles(reader, shape);
     fields.reinit(grid.partitioner);
+    stages = stages_of(run_settings.scheme);
 
     const ParticleCheck<dim> check =
       check_particles(grid, materials, *particles);
@@ -244,6 +250,7 @@ namespace dealmpm
     {
       SectionScope      mpm(reader, "MPM");
       const std::string update = reader.get("Velocity update");
+      s.scheme = parse_update_scheme(reader.get("Stress update"));
       s.flip_fraction =
         update == "FLIP" ?
           1. :
@@ -395,36 +402,74 @@ namespace dealmpm
       TimerOutput::Scope t(*computing_timer, "stencil");
       compute_linear_stencil(grid, *particles, stencil);
     }
-    {
-      TimerOutput::Scope t(*computing_timer, "P2G");
-      particle_to_grid(grid, *particles, stencil, fields);
-    }
-    for (unsigned int e = 0; e < effects.size(); ++e)
-      {
-        TimerOutput::Scope t(*computing_timer, "effect: " + effect_names[e]);
-        effects[e]->add_nodal_forces(fields);
-      }
-    for (unsigned int e = 0; e < effects.size(); ++e)
-      {
-        TimerOutput::Scope t(*computing_timer, "effect: " + effect_names[e]);
-        effects[e]->adjust_nodal_forces(fields);
-      }
-    {
-      TimerOutput::Scope t(*computing_timer, "grid update");
-      update_nodal_velocity(fields, dt, mass_threshold, boundary_conditions);
-    }
-    bool              left_cell;
+    bool              left_cell = false;
     StressUpdate<dim> stress_update(materials, *particles, dt);
-    {
-      TimerOutput::Scope t(*computing_timer, "G2P and stress update");
-      left_cell = grid_to_particle(grid,
-                                   stencil,
-                                   fields,
-                                   dt,
-                                   run_settings.flip_fraction,
-                                   *particles,
-                                   stress_update);
-    }
+    const double      flip = run_settings.flip_fraction;
+    for (const Stage stage : stages)
+      switch (stage)
+        {
+          case Stage::p2g_all:
+          case Stage::p2g_mass_momentum:
+            case Stage::p2g_force: {
+              TimerOutput::Scope t(*computing_timer, "P2G");
+              particle_to_grid(grid,
+                               *particles,
+                               stencil,
+                               fields,
+                               stage != Stage::p2g_force,
+                               stage != Stage::p2g_mass_momentum);
+              break;
+            }
+          case Stage::apply_effects:
+            for (unsigned int e = 0; e < effects.size(); ++e)
+              {
+                TimerOutput::Scope t(*computing_timer,
+                                     "effect: " + effect_names[e]);
+                effects[e]->add_nodal_forces(fields);
+              }
+            // Damping-like effects act on the total force.
+            for (unsigned int e = 0; e < effects.size(); ++e)
+              {
+                TimerOutput::Scope t(*computing_timer,
+                                     "effect: " + effect_names[e]);
+                effects[e]->adjust_nodal_forces(fields);
+              }
+            break;
+            case Stage::grid_update: {
+              TimerOutput::Scope t(*computing_timer, "grid update");
+              update_nodal_velocity(fields,
+                                    dt,
+                                    mass_threshold,
+                                    boundary_conditions);
+              break;
+            }
+            case Stage::velocity_from_momentum: {
+              TimerOutput::Scope t(*computing_timer, "grid update");
+              velocity_from_momentum(fields,
+                                     mass_threshold,
+                                     boundary_conditions);
+              break;
+            }
+            case Stage::g2p_motion_and_stress: {
+              TimerOutput::Scope t(*computing_timer, "G2P and stress update");
+              left_cell = grid_to_particle<G2P::motion_and_deformation>(
+                grid, stencil, fields, dt, flip, *particles, stress_update);
+              break;
+            }
+            case Stage::g2p_motion: {
+              TimerOutput::Scope t(*computing_timer, "G2P");
+              left_cell = grid_to_particle<G2P::motion>(
+                grid, stencil, fields, dt, flip, *particles);
+              break;
+            }
+            case Stage::g2p_stress: {
+              TimerOutput::Scope t(*computing_timer, "stress update");
+              grid_to_particle<G2P::deformation>(
+                grid, stencil, fields, dt, flip, *particles, stress_update);
+              break;
+            }
+        }
+
     const ParticleCheck<dim> &check = stress_update.check;
     max_signal_rate = Utilities::MPI::max(check.max_signal_rate, comm);
     const std::string failure =

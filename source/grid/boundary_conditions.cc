@@ -131,28 +131,17 @@ namespace dealmpm
 
   template <int dim>
   void
-  BoundaryConditions<dim>::apply(
-    std::array<NodalVector, dim> &velocity,
-    std::array<NodalVector, dim> &velocity_increment) const
+  BoundaryConditions<dim>::project(std::array<NodalVector, dim> &vector) const
   {
-    // Both v* and the increment v* - v are projected: a fixed node neither
-    // moves nor passes a spurious deceleration to the FLIP update of the
-    // particles around it (as in CB-Geo mpm; projecting v* alone drags the
-    // particles next to a fixed end towards rest).
-    const auto project = [](std::array<NodalVector, dim> &vector,
-                            const Node                   &node) {
-      Tensor<1, dim> v;
-      for (unsigned int d = 0; d < dim; ++d)
-        v[d] = vector[d].local_element(node.local_index);
-      for (unsigned int k = 0; k < node.n_normals; ++k)
-        v -= (v * node.normals[k]) * node.normals[k];
-      for (unsigned int d = 0; d < dim; ++d)
-        vector[d].local_element(node.local_index) = v[d];
-    };
     for (const Node &node : nodes)
       {
-        project(velocity, node);
-        project(velocity_increment, node);
+        Tensor<1, dim> v;
+        for (unsigned int d = 0; d < dim; ++d)
+          v[d] = vector[d].local_element(node.local_index);
+        for (unsigned int k = 0; k < node.n_normals; ++k)
+          v -= (v * node.normals[k]) * node.normals[k];
+        for (unsigned int d = 0; d < dim; ++d)
+          vector[d].local_element(node.local_index) = v[d];
       }
   }
 

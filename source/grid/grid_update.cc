@@ -27,7 +27,8 @@ namespace dealmpm
             v[i] = dv[i] = 0.;
       }
 
-    boundary_conditions.apply(fields.velocity, fields.velocity_increment);
+    boundary_conditions.project(fields.velocity);
+    boundary_conditions.project(fields.velocity_increment);
     for (unsigned int d = 0; d < dim; ++d)
       {
         fields.velocity[d].update_ghost_values();
@@ -35,6 +36,34 @@ namespace dealmpm
       }
   }
 
+  template <int dim>
+  void
+  velocity_from_momentum(NodalFields<dim>              &fields,
+                         const double                   mass_threshold,
+                         const BoundaryConditions<dim> &boundary_conditions)
+  {
+    const unsigned int n_owned = fields.mass.locally_owned_size();
+    const double      *mass    = fields.mass.begin();
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        const double *p = fields.momentum[d].begin();
+        double       *v = fields.velocity[d].begin();
+        for (unsigned int i = 0; i < n_owned; ++i)
+          v[i] = mass[i] > mass_threshold ? p[i] / mass[i] : 0.;
+      }
+    boundary_conditions.project(fields.velocity);
+    for (unsigned int d = 0; d < dim; ++d)
+      fields.velocity[d].update_ghost_values();
+  }
+
+  template void
+  velocity_from_momentum(NodalFields<2> &,
+                         double,
+                         const BoundaryConditions<2> &);
+  template void
+  velocity_from_momentum(NodalFields<3> &,
+                         double,
+                         const BoundaryConditions<3> &);
   template void
   update_nodal_velocity(NodalFields<2> &,
                         double,

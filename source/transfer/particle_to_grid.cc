@@ -2,70 +2,111 @@
 
 namespace dealmpm
 {
+  namespace
+  {
+    /** The kernel, compiled once per choice of quantities so that the usual
+     * all-in-one P2G has no branch in its loop. */
+    template <int dim, bool mass_and_momentum, bool internal_force>
+    void
+    transfer(const BackgroundGrid<dim> &grid,
+             const ParticleSet<dim>    &particles,
+             const Stencil<dim>        &stencil,
+             NodalFields<dim>          &fields)
+    {
+      double *mass = fields.mass.begin();
+      double *momentum[dim], *force[dim];
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          momentum[d] = fields.momentum[d].begin();
+          force[d]    = fields.force[d].begin();
+        }
+      const CoreFields &f = particles.fields;
+
+      std::size_t k = 0;
+      for (const GridCell<dim> &c : grid.cells)
+        for (const auto &p : particles.handler.particles_in_cell(c.cell))
+          {
+            const ArrayView<const double> props = p.get_properties();
+            const double                  m     = props[f.mass];
+            const Tensor<1, dim> v = read_vector<dim>(&props[f.velocity]);
+            // -V sigma, scaled once per particle.
+            SymmetricTensor<2, dim> Vsigma;
+            if (internal_force)
+              Vsigma =
+                -determinant(read_tensor<dim>(&props[f.deformation_gradient])) *
+                props[f.initial_volume] * read_symmetric<dim>(&props[f.stress]);
+            for (unsigned int e = stencil.begin[k]; e < stencil.begin[k + 1];
+                 ++e)
+              {
+                const unsigned int n = stencil.node[e];
+                if (mass_and_momentum)
+                  {
+                    const double mN = m * stencil.N[e];
+                    mass[n] += mN;
+                    for (unsigned int d = 0; d < dim; ++d)
+                      momentum[d][n] += mN * v[d];
+                  }
+                if (internal_force)
+                  {
+                    const Tensor<1, dim> fi = Vsigma * stencil.grad_N[e];
+                    for (unsigned int d = 0; d < dim; ++d)
+                      force[d][n] += fi[d];
+                  }
+              }
+            ++k;
+          }
+    }
+  } // namespace
+
   template <int dim>
   void
   particle_to_grid(const BackgroundGrid<dim> &grid,
                    const ParticleSet<dim>    &particles,
                    const Stencil<dim>        &stencil,
-                   NodalFields<dim>          &fields)
+                   NodalFields<dim>          &fields,
+                   const bool                 mass_and_momentum,
+                   const bool                 internal_force)
   {
-    fields.mass  = 0.;
-    double *mass = fields.mass.begin();
-    double *momentum[dim], *force[dim];
-    for (unsigned int d = 0; d < dim; ++d)
+    if (mass_and_momentum)
       {
-        fields.momentum[d] = 0.;
-        fields.force[d]    = 0.;
-        momentum[d]        = fields.momentum[d].begin();
-        force[d]           = fields.force[d].begin();
+        fields.mass = 0.;
+        for (unsigned int d = 0; d < dim; ++d)
+          fields.momentum[d] = 0.;
       }
-    const CoreFields &f = particles.fields;
+    if (internal_force)
+      for (unsigned int d = 0; d < dim; ++d)
+        fields.force[d] = 0.;
 
-    std::size_t k = 0;
-    for (const GridCell<dim> &c : grid.cells)
-      for (const auto &p : particles.handler.particles_in_cell(c.cell))
-        {
-          const ArrayView<const double> props = p.get_properties();
-          const double                  m     = props[f.mass];
-          const Tensor<1, dim> v = read_vector<dim>(&props[f.velocity]);
-          const Tensor<2, dim> F =
-            read_tensor<dim>(&props[f.deformation_gradient]);
-          const SymmetricTensor<2, dim> sigma =
-            read_symmetric<dim>(&props[f.stress]);
-          const double volume = determinant(F) * props[f.initial_volume];
-          // -V sigma grad N, with sigma scaled once per particle.
-          const SymmetricTensor<2, dim> Vsigma = -volume * sigma;
-          for (unsigned int e = stencil.begin[k]; e < stencil.begin[k + 1]; ++e)
-            {
-              const unsigned int   n  = stencil.node[e];
-              const double         mN = m * stencil.N[e];
-              const Tensor<1, dim> fi = Vsigma * stencil.grad_N[e];
-              mass[n] += mN;
-              for (unsigned int d = 0; d < dim; ++d)
-                {
-                  momentum[d][n] += mN * v[d];
-                  force[d][n] += fi[d];
-                }
-            }
-          ++k;
-        }
+    if (mass_and_momentum && internal_force)
+      transfer<dim, true, true>(grid, particles, stencil, fields);
+    else if (mass_and_momentum)
+      transfer<dim, true, false>(grid, particles, stencil, fields);
+    else if (internal_force)
+      transfer<dim, false, true>(grid, particles, stencil, fields);
 
-    fields.mass.compress(VectorOperation::add);
-    for (unsigned int d = 0; d < dim; ++d)
+    if (mass_and_momentum)
       {
-        fields.momentum[d].compress(VectorOperation::add);
+        fields.mass.compress(VectorOperation::add);
+        for (unsigned int d = 0; d < dim; ++d)
+          fields.momentum[d].compress(VectorOperation::add);
+      }
+    if (internal_force)
+      for (unsigned int d = 0; d < dim; ++d)
         fields.force[d].compress(VectorOperation::add);
-      }
   }
 
   template void
   particle_to_grid(const BackgroundGrid<2> &,
                    const ParticleSet<2> &,
                    const Stencil<2> &,
-                   NodalFields<2> &);
+                   NodalFields<2> &,
+                   bool,
+                   bool);
   template void
   particle_to_grid(const BackgroundGrid<3> &,
                    const ParticleSet<3> &,
                    const Stencil<3> &,
-                   NodalFields<3> &);
+                   NodalFields<3> &,
+                   bool,
+                   bool);
 } // namespace dealmpm

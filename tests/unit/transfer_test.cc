@@ -123,19 +123,18 @@ TEST(Transfer, GridToParticleReproducesLinearField)
   Stencil<2> stencil;
   compute_linear_stencil(grid, particles, stencil);
   std::vector<Tensor<2, 2>> L;
-  grid_to_particle(grid,
-                   stencil,
-                   fields,
-                   /*dt=*/0.,
-                   /*flip_fraction=*/0.,
-                   particles,
-                   [&](const auto &,
-                       const auto &,
-                       const Tensor<2, 2> &velocity_gradient,
-                       const Tensor<2, 2> &,
-                       const GridCell<2> &) {
-                     L.push_back(velocity_gradient);
-                   });
+  grid_to_particle<G2P::motion_and_deformation>(
+    grid,
+    stencil,
+    fields,
+    /*dt=*/0.,
+    /*flip_fraction=*/0.,
+    particles,
+    [&](const auto &,
+        const auto &,
+        const Tensor<2, 2> &velocity_gradient,
+        const Tensor<2, 2> &,
+        const GridCell<2> &) { L.push_back(velocity_gradient); });
 
   std::size_t k = 0;
   for (const auto &c : grid.cells)

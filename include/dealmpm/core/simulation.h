@@ -12,6 +12,7 @@
 #include <dealmpm/materials/material.h>
 #include <dealmpm/particles/body.h>
 #include <dealmpm/particles/particle_set.h>
+#include <dealmpm/schemes/update_scheme.h>
 #include <dealmpm/transfer/stencil.h>
 
 #include <memory>
@@ -36,6 +37,7 @@ namespace dealmpm
     double       fixed_time_step           = 1e-3;
     double       cfl_number                = 0.5;
     unsigned int max_steps                 = 0; ///< 0: no limit
+    UpdateScheme scheme                    = UpdateScheme::USL;
     double       flip_fraction             = 1; ///< 1 FLIP, 0 PIC
     double       relative_mass_threshold   = 1e-9;
     bool         stop_when_particles_leave = false;
@@ -154,6 +156,7 @@ namespace dealmpm
     std::unique_ptr<ParticleSet<dim>>           particles;
     NodalFields<dim>                            fields;
     Stencil<dim>                                stencil;
+    std::vector<Stage>                          stages;
     double                                      mass_threshold = 0;
     /** Made last in the constructor: a TimerOutput destroyed while an
      * input error propagates prints a warning about MPI. */

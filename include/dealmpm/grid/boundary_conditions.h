@@ -37,11 +37,16 @@ namespace dealmpm
     setup(const BackgroundGrid<dim>                        &grid,
           const std::map<types::boundary_id, BoundaryKind> &kinds);
 
-    /** Project v* and the velocity increment of the constrained locally
-     * owned nodes. */
+    /**
+     * Remove the constrained components of a nodal vector field on the
+     * locally owned nodes. The grid update projects both v* and the
+     * increment v* - v: a fixed node neither moves nor passes a spurious
+     * deceleration to the FLIP update of the particles around it (as in
+     * CB-Geo mpm; projecting v* alone drags the particles next to a fixed
+     * end towards rest).
+     */
     void
-    apply(std::array<NodalVector, dim> &velocity,
-          std::array<NodalVector, dim> &velocity_increment) const;
+    project(std::array<NodalVector, dim> &vector) const;
 
     std::size_t
     n_constrained_nodes() const

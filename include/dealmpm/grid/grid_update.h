@@ -18,4 +18,15 @@ namespace dealmpm
                         const double                   dt,
                         const double                   mass_threshold,
                         const BoundaryConditions<dim> &boundary_conditions);
+
+  /**
+   * The nodal velocity v = p / m of the current momentum on active nodes
+   * (zero elsewhere), boundary conditions applied, ghosts updated: the
+   * velocity field of USF's and MUSL's stress update.
+   */
+  template <int dim>
+  void
+  velocity_from_momentum(NodalFields<dim>              &fields,
+                         const double                   mass_threshold,
+                         const BoundaryConditions<dim> &boundary_conditions);
 } // namespace dealmpm

@@ -7,20 +7,37 @@
 
 namespace dealmpm
 {
+  /** What a G2P sweep updates on the particles. */
+  enum class G2P
+  {
+    motion,      ///< velocity, position, displacement, reference location
+    deformation, ///< L, F, then the after-deformation callback
+    motion_and_deformation
+  };
+
+  /** A callback for sweeps without deformation. */
+  struct NoAfterDeformation
+  {
+    template <typename... Args>
+    void
+    operator()(const Args &...) const
+    {}
+  };
+
   /**
-   * G2P: particle velocity (FLIP fraction alpha: alpha (v_p + sum N dv) +
-   * (1 - alpha) sum N v*), position and displacement (x += dt sum N v*),
-   * velocity gradient L = sum v* (x) grad N, F <- (I + dt L) F, and the new
-   * reference location in the old cell.
+   * G2P from the nodal velocity field (fields.velocity) and its increment
+   * (fields.velocity_increment, for FLIP):
+   * - motion: particle velocity alpha (v_p + sum N dv) + (1 - alpha) sum N v
+   *   (alpha = FLIP fraction), position and displacement += dt sum N v, and
+   *   the reference location in the old cell;
+   * - deformation: L = sum v (x) grad N, F <- (I + dt L) F, then
+   *   @p after_deformation(particle, properties, L, F, cell) (the stress
+   *   update, see StressUpdate) in the same sweep: the step is bound by
+   *   memory traffic, and a sweep less is worth more than arithmetic saved.
    *
-   * Then, in the same pass, @p after_kinematics(particle, properties, L, F,
-   * cell) (for example the stress update, see StressUpdate): the step is
-   * bound by memory traffic, and one sweep over the particles less is worth
-   * more than any arithmetic saved.
-   *
-   * @return true if some local particle left its cell (a sort is needed).
+   * @return true if motion moved some local particle out of its cell.
    */
-  template <int dim, typename AfterKinematics>
+  template <G2P what, int dim, typename AfterDeformation = NoAfterDeformation>
   bool
   grid_to_particle(const BackgroundGrid<dim> &grid,
                    const Stencil<dim>        &stencil,
@@ -28,9 +45,11 @@ namespace dealmpm
                    const double               dt,
                    const double               flip_fraction,
                    ParticleSet<dim>          &particles,
-                   AfterKinematics          &&after_kinematics)
+                   AfterDeformation         &&after_deformation = {})
   {
-    const double *velocity[dim], *increment[dim];
+    constexpr bool motion      = what != G2P::deformation;
+    constexpr bool deformation = what != G2P::motion;
+    const double  *velocity[dim], *increment[dim];
     for (unsigned int d = 0; d < dim; ++d)
       {
         velocity[d]  = fields.velocity[d].begin();
@@ -45,7 +64,7 @@ namespace dealmpm
     for (const GridCell<dim> &c : grid.cells)
       for (auto &p : particles.handler.particles_in_cell(c.cell))
         {
-          Tensor<1, dim> v_new, dv;
+          Tensor<1, dim> v_grid, dv;
           Tensor<2, dim> L;
           for (unsigned int e = stencil.begin[k]; e < stencil.begin[k + 1]; ++e)
             {
@@ -53,37 +72,44 @@ namespace dealmpm
               const double       N = stencil.N[e];
               for (unsigned int d = 0; d < dim; ++d)
                 {
-                  v_new[d] += N * velocity[d][n];
-                  dv[d] += N * increment[d][n];
-                  for (unsigned int b = 0; b < dim; ++b)
-                    L[d][b] += velocity[d][n] * stencil.grad_N[e][b];
+                  if (motion)
+                    {
+                      v_grid[d] += N * velocity[d][n];
+                      dv[d] += N * increment[d][n];
+                    }
+                  if (deformation)
+                    for (unsigned int b = 0; b < dim; ++b)
+                      L[d][b] += velocity[d][n] * stencil.grad_N[e][b];
                 }
             }
           const ArrayView<double> props = p.get_properties();
-          const Tensor<1, dim>    v_old = read_vector<dim>(&props[f.velocity]);
-          write_vector<dim>(&props[f.velocity],
-                            flip_fraction * (v_old + dv) +
-                              (1. - flip_fraction) * v_new);
-          const Tensor<1, dim> dx = dt * v_new;
-          write_vector<dim>(&props[f.displacement],
-                            read_vector<dim>(&props[f.displacement]) + dx);
-          const Point<dim> x = p.get_location() + dx;
-          p.set_location(x);
-
-          Tensor<2, dim> dF = dt * L;
-          for (unsigned int d = 0; d < dim; ++d)
-            dF[d][d] += 1.;
-          const Tensor<2, dim> F =
-            dF * read_tensor<dim>(&props[f.deformation_gradient]);
-          write_tensor<dim>(&props[f.deformation_gradient], F);
-
-          const Point<dim> xi = c.reference_point(x);
-          p.set_reference_location(xi);
-          for (unsigned int d = 0; d < dim; ++d)
-            left_cell =
-              left_cell || xi[d] < -tolerance || xi[d] > 1. + tolerance;
-
-          after_kinematics(p, props, L, F, c);
+          if (motion)
+            {
+              const Tensor<1, dim> v_old = read_vector<dim>(&props[f.velocity]);
+              write_vector<dim>(&props[f.velocity],
+                                flip_fraction * (v_old + dv) +
+                                  (1. - flip_fraction) * v_grid);
+              const Tensor<1, dim> dx = dt * v_grid;
+              write_vector<dim>(&props[f.displacement],
+                                read_vector<dim>(&props[f.displacement]) + dx);
+              const Point<dim> x = p.get_location() + dx;
+              p.set_location(x);
+              const Point<dim> xi = c.reference_point(x);
+              p.set_reference_location(xi);
+              for (unsigned int d = 0; d < dim; ++d)
+                left_cell =
+                  left_cell || xi[d] < -tolerance || xi[d] > 1. + tolerance;
+            }
+          if (deformation)
+            {
+              Tensor<2, dim> dF = dt * L;
+              for (unsigned int d = 0; d < dim; ++d)
+                dF[d][d] += 1.;
+              const Tensor<2, dim> F =
+                dF * read_tensor<dim>(&props[f.deformation_gradient]);
+              write_tensor<dim>(&props[f.deformation_gradient], F);
+              after_deformation(p, props, L, F, c);
+            }
           ++k;
         }
     return left_cell;

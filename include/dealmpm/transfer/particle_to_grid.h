@@ -8,7 +8,8 @@
 namespace dealmpm
 {
   /**
-   * P2G: nodal mass, momentum and internal force
+   * P2G: nodal mass and momentum (if @p mass_and_momentum) and internal force
+   * (if @p internal_force)
    * f_int = -sum_p V_p sigma_p grad N (V_p = J_p V_p0), summed over ranks.
    * External forces are the effects' business (gravity acts on the nodal
    * mass directly, which is the same sum).
@@ -18,5 +19,7 @@ namespace dealmpm
   particle_to_grid(const BackgroundGrid<dim> &grid,
                    const ParticleSet<dim>    &particles,
                    const Stencil<dim>        &stencil,
-                   NodalFields<dim>          &fields);
+                   NodalFields<dim>          &fields,
+                   const bool                 mass_and_momentum = true,
+                   const bool                 internal_force    = true);
 } // namespace dealmpm
