@@ -4,6 +4,7 @@
 #include <dealmpm/core/errors.h>
 #include <dealmpm/core/simulation.h>
 
+#include <algorithm>
 #include <fstream>
 #include <iostream>
 #include <regex>
@@ -112,6 +113,12 @@ namespace dealmpm
                            "': expected 'Section/Entry=value'");
         const auto path =
           Utilities::split_string_list(item.substr(0, equal), '/');
+        if (path.empty() ||
+            std::any_of(path.begin(), path.end(), [](const std::string &p) {
+              return p.empty();
+            }))
+          throw InputError("command line: -s '" + item +
+                           "': expected 'Section/Entry=value'");
         const std::string value = Utilities::trim(item.substr(equal + 1));
         for (unsigned int i = 0; i + 1 < path.size(); ++i)
           prm.enter_subsection(path[i]);

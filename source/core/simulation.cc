@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <iomanip>
 #include <sstream>
 
@@ -216,7 +217,9 @@ namespace dealmpm
     SceneReader reader(prm, scene_file);
     read_run_settings(reader);
     grid.create(reader);
-    boundary_conditions.setup(grid, BoundaryConditions<dim>::read(reader));
+    boundary_conditions.setup(grid,
+                              BoundaryConditions<dim>::read(
+                                reader, grid.triangulation.get_boundary_ids()));
     read_materials(reader, shape);
     read_effects(reader);
     create_particles(reader, shape);
@@ -353,15 +356,25 @@ namespace dealmpm
         lost_this_step.emplace_back(p->get_id(), p->get_location());
       });
 
+    unsigned int id_stride = 1;
+    for (const auto &body : bodies)
+      id_stride =
+        std::max(id_stride,
+                 Utilities::fixed_power<dim>(body.particles_per_direction));
     for (unsigned int b = 0; b < bodies.size(); ++b)
       {
         const unsigned int  m = bodies[b].material;
         std::vector<double> initial(particles->n_internal[m], 0.);
         materials[m]->initialize_internal_variables(make_array_view(initial));
-        const double created = Utilities::MPI::sum(
-          double(generate_particles(
-            bodies[b], b, materials[m]->density, grid, *particles, initial)),
-          comm);
+        const double created =
+          Utilities::MPI::sum(double(generate_particles(bodies[b],
+                                                        b,
+                                                        materials[m]->density,
+                                                        grid,
+                                                        *particles,
+                                                        initial,
+                                                        id_stride)),
+                              comm);
         if (created == 0)
           {
             SectionScope section(reader, "Body " + std::to_string(b + 1));
@@ -562,9 +575,27 @@ namespace dealmpm
   {
     const RunSettings &s      = run_settings;
     const bool         writer = Utilities::MPI::this_mpi_process(comm) == 0;
+    // Every rank learns whether rank 0 could make the folder: a rank that
+    // throws alone would leave the others waiting.
+    std::string problem;
     if (writer)
-      std::filesystem::create_directories(s.output_directory);
-    MPI_Barrier(comm);
+      try
+        {
+          std::filesystem::create_directories(s.output_directory);
+          if (!std::ofstream(s.output_directory + "/statistics.csv"))
+            problem = "cannot write in it";
+        }
+      catch (const std::exception &e)
+        {
+          problem = e.what();
+        }
+    problem = Utilities::MPI::broadcast(comm, problem, 0);
+    if (!problem.empty())
+      throw InputError(scene_file + ": entry 'Output/Directory' = '" +
+                       s.output_directory +
+                       "': expected a folder that can be created and "
+                       "written (" +
+                       problem + ")");
     StatisticsFile stats(s.output_directory + "/statistics.csv", dim, writer);
     Progress progress(std::cout, s.progress_interval, writer && s.verbose);
 
@@ -592,6 +623,10 @@ namespace dealmpm
     while (current_time < s.end_time - time_tolerance &&
            (s.max_steps == 0 || step < s.max_steps))
       {
+        if (particles->handler.n_global_particles() == 0)
+          throw RunError("step " + std::to_string(step) +
+                         " (t = " + std::to_string(current_time) +
+                         "): no particles are left in the grid");
         dt = std::min(time_step(), s.end_time - current_time);
         const double n_particles = particles->handler.n_global_particles();
         const auto   start       = std::chrono::steady_clock::now();
@@ -616,9 +651,12 @@ namespace dealmpm
         if (last || (s.output_interval > 0 &&
                      current_time >= next_output - time_tolerance))
           {
-            while (s.output_interval > 0 &&
-                   next_output <= current_time + time_tolerance)
-              next_output += s.output_interval;
+            // The next multiple of the interval (no loop: a tiny interval
+            // cannot make it spin).
+            if (s.output_interval > 0)
+              next_output =
+                (std::floor(current_time / s.output_interval + 1e-9) + 1) *
+                s.output_interval;
             write_output();
             stats.write_row(step,
                             current_time,

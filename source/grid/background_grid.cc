@@ -10,6 +10,7 @@
 #include <dealmpm/grid/background_grid.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -110,8 +111,10 @@ namespace dealmpm
       {
         std::ifstream in(
           reader.get_file("Mesh file", "a readable Gmsh .msh file"));
-        GridIn<dim> grid_in;
-        grid_in.attach_triangulation(triangulation);
+        // Read serially first: p4est crashes on simplices instead of saying so.
+        Triangulation<dim> serial;
+        GridIn<dim>        grid_in;
+        grid_in.attach_triangulation(serial);
         try
           {
             grid_in.read_msh(in);
@@ -122,8 +125,20 @@ namespace dealmpm
                         "a Gmsh .msh mesh of quadrilaterals/hexahedra (reading "
                         "failed)");
           }
+        if (!serial.all_reference_cells_are_hyper_cube())
+          reader.fail("Mesh file",
+                      "a mesh of quadrilaterals (2D) or hexahedra (3D), not "
+                      "triangles or tetrahedra");
+        triangulation.copy_triangulation(serial);
       }
-    const long global_refinements = reader.get_integer("Global refinements");
+    const long   global_refinements = reader.get_integer("Global refinements");
+    const double n_cells            = triangulation.n_global_active_cells() *
+                           std::pow(2., dim * global_refinements);
+    if (n_cells > 2e8)
+      reader.fail("Global refinements",
+                  "fewer refinements: this one would make " +
+                    std::to_string(static_cast<long>(n_cells)) +
+                    " cells (at most 2e8)");
     triangulation.refine_global(global_refinements);
     refine_box(reader);
     setup();
@@ -267,14 +282,16 @@ namespace dealmpm
           }
 
         for (unsigned int v = 0; v < n_vertices; ++v)
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              lower[d] =
-                first ? c.vertices[v][d] : std::min(lower[d], c.vertices[v][d]);
-              upper[d] =
-                first ? c.vertices[v][d] : std::max(upper[d], c.vertices[v][d]);
-              first = false;
-            }
+          {
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                lower[d] = first ? c.vertices[v][d] :
+                                   std::min(lower[d], c.vertices[v][d]);
+                upper[d] = first ? c.vertices[v][d] :
+                                   std::max(upper[d], c.vertices[v][d]);
+              }
+            first = false;
+          }
         cells.push_back(c);
       }
 

@@ -3,7 +3,9 @@
 #include <dealmpm/core/errors.h>
 #include <dealmpm/grid/boundary_conditions.h>
 
-#include <unordered_map>
+#include <algorithm>
+#include <cmath>
+#include <map>
 
 namespace dealmpm
 {
@@ -24,7 +26,8 @@ namespace dealmpm
 
   template <int dim>
   std::map<types::boundary_id, BoundaryKind>
-  BoundaryConditions<dim>::read(SceneReader &reader)
+  BoundaryConditions<dim>::read(SceneReader                           &reader,
+                                const std::vector<types::boundary_id> &grid_ids)
   {
     SectionScope                               grid(reader, "Grid");
     std::map<types::boundary_id, BoundaryKind> kinds;
@@ -32,7 +35,7 @@ namespace dealmpm
          Utilities::split_string_list(reader.get("Boundary conditions"), ','))
       {
         const auto parts = Utilities::split_string_list(item, ':');
-        int        id    = -1;
+        long       id    = -1;
         try
           {
             if (parts.size() == 2)
@@ -40,10 +43,20 @@ namespace dealmpm
           }
         catch (...)
           {}
-        if (parts.size() != 2 || id < 0 || id > 255)
+        if (parts.size() != 2 || id < 0 ||
+            id >= static_cast<long>(numbers::internal_face_boundary_id))
           reader.fail("Boundary conditions",
-                      "a list of 'id: kind' pairs (id 0-255, kind no-slip, "
-                      "slip or free)");
+                      "a list of 'id: kind' pairs (kind no-slip, slip or "
+                      "free)");
+        if (std::find(grid_ids.begin(), grid_ids.end(), id) == grid_ids.end())
+          {
+            std::string known;
+            for (const auto g : grid_ids)
+              known += (known.empty() ? "" : ", ") + std::to_string(g);
+            reader.fail("Boundary conditions",
+                        "boundary ids the grid has (" + known + "), not " +
+                          std::to_string(id));
+          }
         if (parts[1] == "no-slip")
           kinds[id] = BoundaryKind::no_slip;
         else if (parts[1] == "slip")
@@ -64,39 +77,17 @@ namespace dealmpm
     const BackgroundGrid<dim>                        &grid,
     const std::map<types::boundary_id, BoundaryKind> &kinds)
   {
-    nodes.clear();
-    std::unordered_map<unsigned int, std::size_t> node_of_index;
-    const auto add_normal = [&](const types::global_dof_index dof,
-                                const Tensor<1, dim>         &normal,
-                                const bool                    fixed) {
-      if (!grid.partitioner->in_local_range(dof) ||
-          grid.hanging_node_constraints.is_constrained(dof))
-        return;
-      const unsigned int local = grid.partitioner->global_to_local(dof);
-      auto               it    = node_of_index.find(local);
-      if (it == node_of_index.end())
-        {
-          it = node_of_index.emplace(local, nodes.size()).first;
-          nodes.push_back(Node{local, 0, {}});
-        }
-      Node &node = nodes[it->second];
-      if (fixed)
-        {
-          node.n_normals = dim;
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              node.normals[d]    = Tensor<1, dim>();
-              node.normals[d][d] = 1.;
-            }
-          return;
-        }
-      // Gram-Schmidt against the normals the node already has.
-      Tensor<1, dim> n = normal;
-      for (unsigned int k = 0; k < node.n_normals; ++k)
-        n -= (n * node.normals[k]) * node.normals[k];
-      if (node.n_normals < dim && n.norm() > 1e-6)
-        node.normals[node.n_normals++] = n / n.norm();
+    // Per constrained node: fixed, or the face normals grouped into
+    // directions. Faces that meet at less than 30 degrees (a curved or
+    // slightly kinked boundary) share one averaged normal; only a real
+    // corner gets a second one, so slip stays slip on curved walls.
+    struct Collected
+    {
+      bool                        fixed = false;
+      std::vector<Tensor<1, dim>> directions; ///< sums of aligned normals
     };
+    std::map<unsigned int, Collected> collected;
+    const double                      same_direction = std::cos(M_PI / 6);
 
     for (const auto &cell : grid.dof_handler.active_cell_iterators())
       {
@@ -104,12 +95,12 @@ namespace dealmpm
           continue;
         for (const unsigned int f : cell->face_indices())
           {
-            if (!cell->face(f)->at_boundary())
+            const auto face = cell->face(f);
+            if (!face->at_boundary())
               continue;
-            const auto kind = kinds.find(cell->face(f)->boundary_id());
+            const auto kind = kinds.find(face->boundary_id());
             if (kind == kinds.end() || kind->second == BoundaryKind::free)
               continue;
-            const auto     face = cell->face(f);
             Tensor<1, dim> normal;
             if constexpr (dim == 2)
               {
@@ -122,10 +113,57 @@ namespace dealmpm
                                         face->vertex(2) - face->vertex(0));
             normal /= normal.norm();
             for (unsigned int v = 0; v < face->n_vertices(); ++v)
-              add_normal(face->vertex_dof_index(v, 0),
-                         normal,
-                         kind->second == BoundaryKind::no_slip);
+              {
+                const types::global_dof_index dof =
+                  face->vertex_dof_index(v, 0);
+                if (!grid.partitioner->in_local_range(dof) ||
+                    grid.hanging_node_constraints.is_constrained(dof))
+                  continue;
+                Collected &node =
+                  collected[grid.partitioner->global_to_local(dof)];
+                if (kind->second == BoundaryKind::no_slip)
+                  {
+                    node.fixed = true;
+                    continue;
+                  }
+                bool merged = false;
+                for (auto &direction : node.directions)
+                  {
+                    const double cosine = direction * normal / direction.norm();
+                    if (std::abs(cosine) > same_direction)
+                      {
+                        direction += (cosine > 0 ? 1. : -1.) * normal;
+                        merged = true;
+                        break;
+                      }
+                  }
+                if (!merged)
+                  node.directions.push_back(normal);
+              }
           }
+      }
+
+    nodes.clear();
+    for (const auto &[local_index, c] : collected)
+      {
+        Node node{local_index, 0, {}};
+        if (c.fixed)
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              node.normals[d]    = Tensor<1, dim>();
+              node.normals[d][d] = 1.;
+              node.n_normals     = dim;
+            }
+        else
+          for (Tensor<1, dim> n : c.directions)
+            {
+              // Gram-Schmidt against the normals the node already has.
+              for (unsigned int k = 0; k < node.n_normals; ++k)
+                n -= (n * node.normals[k]) * node.normals[k];
+              if (node.n_normals < dim && n.norm() > 1e-6)
+                node.normals[node.n_normals++] = n / n.norm();
+            }
+        nodes.push_back(node);
       }
   }
 

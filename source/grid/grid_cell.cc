@@ -67,10 +67,12 @@ namespace dealmpm
     // Newton on the Q1 map; converges in a few steps for convex cells.
     for (unsigned int it = 0; it < 20; ++it)
       {
-        const Tensor<1, dim> r = x - real_point(xi);
-        if (r.norm() <= 1e-13 * h)
+        // Relative to the unit cell, so far from the origin it still stops.
+        const Tensor<1, dim> step =
+          inverse_jacobian_at(xi) * (x - real_point(xi));
+        xi += step;
+        if (step.norm() <= 1e-13)
           break;
-        xi += inverse_jacobian_at(xi) * r;
       }
     return xi;
   }

@@ -119,6 +119,8 @@ namespace dealmpm
         GridIn<dim> grid_in;
         grid_in.attach_triangulation(tria);
         grid_in.read_msh(in);
+        if (!tria.all_reference_cells_are_hyper_cube())
+          throw std::runtime_error("simplex mesh");
         cache = std::make_unique<GridTools::Cache<dim>>(tria, mapping);
         box   = GridTools::compute_bounding_box(tria);
       }
@@ -249,7 +251,9 @@ namespace dealmpm
           }
         catch (const std::exception &)
           {
-            reader.fail("Mesh file", "a Gmsh .msh mesh deal.II can read");
+            reader.fail("Mesh file",
+                        "a Gmsh .msh mesh of quadrilaterals (2D) or hexahedra "
+                        "(3D) that deal.II can read");
           }
       }
     body.particles_per_direction = reader.get_integer("Particles per cell");
@@ -270,14 +274,16 @@ namespace dealmpm
                      const double               density,
                      const BackgroundGrid<dim> &grid,
                      ParticleSet<dim>          &particles,
-                     const std::vector<double> &initial_internal_variables)
+                     const std::vector<double> &initial_internal_variables,
+                     const unsigned int         id_stride)
   {
     const unsigned int n        = body.particles_per_direction;
     unsigned int       per_cell = 1;
     for (unsigned int d = 0; d < dim; ++d)
       per_cell *= n;
+    AssertThrow(per_cell <= id_stride, ExcInternalError());
     const double n_cells = grid.triangulation.n_global_active_cells();
-    if ((body_index + 1.) * n_cells * per_cell >
+    if ((body_index + 1.) * n_cells * id_stride >
         double(std::numeric_limits<types::particle_index>::max()))
       throw InputError("too many particles for 32-bit particle ids: use fewer "
                        "cells, particles per cell or bodies");
@@ -293,7 +299,6 @@ namespace dealmpm
         if (cell_box.get_neighbor_type(shape_box) ==
             NeighborType::not_neighbors)
           continue;
-        const double volume = c.measure / per_cell;
         for (unsigned int k = 0; k < per_cell; ++k)
           {
             Point<dim>   xi;
@@ -303,6 +308,13 @@ namespace dealmpm
             const Point<dim> x = c.real_point(xi);
             if (!body.shape->contains(x))
               continue;
+            // |det J| at the centre of the particle's sub-cell: exact for
+            // bilinear cells, so the particle volumes of a cell sum to it.
+            const double volume =
+              (c.affine ?
+                 c.measure :
+                 1. / std::abs(determinant(c.inverse_jacobian_at(xi)))) /
+              per_cell;
             std::fill(properties.begin(), properties.end(), 0.);
             properties[f.mass]           = density * volume;
             properties[f.initial_volume] = volume;
@@ -318,7 +330,7 @@ namespace dealmpm
             const types::particle_index id =
               (body_index * grid.triangulation.n_global_active_cells() +
                c.cell->global_active_cell_index()) *
-                per_cell +
+                id_stride +
               k;
             particles.handler.insert_particle(
               x, xi, id, c.cell, make_array_view(properties));
@@ -336,12 +348,14 @@ namespace dealmpm
                      double,
                      const BackgroundGrid<2> &,
                      ParticleSet<2> &,
-                     const std::vector<double> &);
+                     const std::vector<double> &,
+                     unsigned int);
   template std::size_t
   generate_particles(const Body<3> &,
                      unsigned int,
                      double,
                      const BackgroundGrid<3> &,
                      ParticleSet<3> &,
-                     const std::vector<double> &);
+                     const std::vector<double> &,
+                     unsigned int);
 } // namespace dealmpm

@@ -45,5 +45,28 @@ expect 1 "unknown option" "$scene" --frobnicate
 expect 2 "custom_material.prm: Line <[0-9]+> .*Saint Venant-Kirchhoff for the entry named Model does not match.*linear elastic\|neo-Hookean" \
   "$(dirname "$scene")/../examples/custom_material.prm"
 
+data="$(dirname "$scene")/../tests/data"
+expect 2 "Grid/Mesh file.*quadrilaterals \(2D\) or hexahedra \(3D\), not triangles" "$scene" "${s[@]}" \
+  -s "Grid/Type=mesh file" -s "Grid/Mesh file=$data/triangles.msh"
+expect 2 "Body 1/Mesh file.*quadrilaterals" "$scene" "${s[@]}" -s "Body 1/Shape=mesh" -s "Body 1/Mesh file=$data/triangles.msh"
+expect 2 "Grid/Boundary conditions.*boundary ids the grid has \(0, 1, 2, 3\), not 4" "$scene" "${s[@]}" \
+  -s "Grid/Boundary conditions=0: slip, 4: no-slip"
+expect 2 "Grid/Global refinements.*at most 2e8" "$scene" "${s[@]}" -s "Grid/Global refinements=12"
+expect 2 "command line: -s '=1': expected 'Section/Entry=value'" "$scene" -s "=1"
+expect 2 "command line: -s 'Grid/=1'" "$scene" -s "Grid/=1"
+touch afile
+expect 2 "Output/Directory.*expected a folder that can be created and written" "$scene" -s "Output/Directory=afile/sub"
+# The same under MPI must not hang (only rank 0 makes folders).
+if command -v mpirun > /dev/null; then
+  flags=(--oversubscribe); [ "$(id -u)" = 0 ] && flags+=(--allow-run-as-root)
+  timeout 120 mpirun "${flags[@]}" -np 2 "$dealmpm" "$scene" -s "Output/Directory=afile/sub" > out.txt 2> err.txt
+  code=$?
+  if [ $code != 2 ] || ! grep -q "Output/Directory" err.txt; then
+    echo "FAIL: unwritable output folder on 2 ranks -> exit $code"; cat err.txt; failures=$((failures + 1))
+  else
+    echo "ok: 2 ranks: $(head -1 err.txt)"
+  fi
+fi
+
 if [ $failures -gt 0 ]; then echo "$failures bad-input case(s) failed"; exit 1; fi
 echo "all bad-input cases passed"

@@ -22,7 +22,7 @@ grep -Eq "stopped: step [0-9]+ \(t = .*\): particle [0-9]+ at \(.*\): " err.txt 
 grep -q "particles_00000.pvtu" unstable/particles.pvd || fail "pvd lacks the first output"
 
 # Disks flying out of a grid with free boundaries.
-flying=(-s "Body 1/Velocity=-2, 0" -s "Body 2/Velocity=2, 0" -s "Time/End time=0.3"
+flying=(-s "Body 1/Velocity=-2, 0" -s "Body 2/Velocity=2, 0" -s "Time/End time=0.1"
         -s "Output/Write particles=false")
 "$dealmpm" "$scene" "${flying[@]}" -s "Output/Directory=removed" > out.txt 2> err.txt
 code=$?
@@ -37,6 +37,13 @@ particles=$(tail -1 removed/statistics.csv | awk -F, '{print $4}')
 code=$?
 [ $code = 3 ] || fail "stop policy: exit $code, expected 3"
 grep -q "left the grid (first: id [0-9]* at (" err.txt || fail "stop policy: message"
+
+# When the last particle has left, the run stops and says so.
+"$dealmpm" "$scene" "${flying[@]}" -s "Time/End time=1" -s "Output/Directory=empty" \
+  -s "Time/Time step method=CFL" > out.txt 2> err.txt
+code=$?
+[ $code = 3 ] || fail "all particles gone: exit $code, expected 3"
+grep -q "no particles are left in the grid" err.txt || { fail "all particles gone: message"; cat err.txt; }
 
 if [ $failures -gt 0 ]; then echo "$failures case(s) failed"; exit 1; fi
 echo "all run-stop cases passed"

@@ -60,3 +60,18 @@ TEST(Body, MeshBodyFillsItsCells)
               1.,
               1e-12);
 }
+
+TEST(Body, IdsStayUniqueAcrossBodiesWithDifferentPatterns)
+{
+  auto simulation = test::make_simulation<2>(
+    "subsection Grid\n set Cells = 10, 10\nend\n"
+    "subsection Body 1\n set Particles per cell = 3\nend\n"
+    "subsection Body 2\n set Particles per cell = 1\nend\n",
+    2);
+  std::set<types::particle_index> ids;
+  for (const auto &p : simulation->particle_set().handler)
+    ids.insert(p.get_id());
+  EXPECT_EQ(simulation->particle_set().handler.n_global_particles(),
+            100u * 10u);
+  EXPECT_EQ(ids.size(), 100u * 10u);
+}

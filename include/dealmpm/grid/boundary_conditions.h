@@ -19,8 +19,9 @@ namespace dealmpm
 
   /**
    * Velocity conditions on grid nodes by boundary id, applied to the nodal
-   * velocity v* of each step. A node on two slip faces at a corner loses both
-   * normal components; a node on any no-slip face is fixed.
+   * velocity v* of each step. A node on two slip faces that meet at a corner
+   * (more than 30 degrees) loses both normal components, on a curved wall
+   * only the averaged normal one; a node on any no-slip face is fixed.
    */
   template <int dim>
   class BoundaryConditions
@@ -29,9 +30,9 @@ namespace dealmpm
     static void
     declare_parameters(ParameterHandler &prm);
 
-    /** Read "Grid/Boundary conditions". */
+    /** Read "Grid/Boundary conditions"; every id must be one of @p grid_ids. */
     static std::map<types::boundary_id, BoundaryKind>
-    read(SceneReader &reader);
+    read(SceneReader &reader, const std::vector<types::boundary_id> &grid_ids);
 
     void
     setup(const BackgroundGrid<dim>                        &grid,

@@ -51,8 +51,9 @@ namespace dealmpm
   /**
    * Fill the locally owned cells with the particles of body number
    * @p body_index. Ids depend only on the body, the cell's global index and
-   * the pattern, so they are the same on any number of ranks. Returns the
-   * number of particles created on this rank.
+   * the pattern, so they are the same on any number of ranks;
+   * @p id_stride, the most particles per cell of any body of the scene,
+   * keeps them apart. Returns the number of particles created on this rank.
    */
   template <int dim>
   std::size_t
@@ -61,5 +62,6 @@ namespace dealmpm
                      const double               density,
                      const BackgroundGrid<dim> &grid,
                      ParticleSet<dim>          &particles,
-                     const std::vector<double> &initial_internal_variables);
+                     const std::vector<double> &initial_internal_variables,
+                     const unsigned int         id_stride);
 } // namespace dealmpm
