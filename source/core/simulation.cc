@@ -149,10 +149,13 @@ namespace dealmpm
     prm.declare_entry(
       "Velocity update",
       "FLIP",
-      Patterns::Selection("FLIP|PIC|blend"),
+      Patterns::Selection("FLIP|PIC|blend|APIC"),
       "Particle velocity from the grid: FLIP (increment, little "
-      "dissipation), PIC (interpolated velocity, dissipative), or "
-      "blend (Blend factor x FLIP + (1 - Blend factor) x PIC).");
+      "dissipation), PIC (interpolated velocity, dissipative), "
+      "blend (Blend factor x FLIP + (1 - Blend factor) x PIC), or APIC "
+      "(Jiang et al. 2015: PIC plus a per-particle affine velocity, "
+      "conserves angular momentum; adds dim x dim doubles per particle; "
+      "with USL or USF).");
     prm.declare_entry("Blend factor",
                       "0.99",
                       Patterns::Anything(),
@@ -254,10 +257,17 @@ namespace dealmpm
       SectionScope      mpm(reader, "MPM");
       const std::string update = reader.get("Velocity update");
       s.scheme = parse_update_scheme(reader.get("Stress update"));
+      s.apic   = update == "APIC";
       s.flip_fraction =
         update == "FLIP" ?
           1. :
-          (update == "PIC" ? 0. : reader.get_double("Blend factor"));
+          (update == "blend" ? reader.get_double("Blend factor") : 0.);
+      if (s.apic && s.scheme == UpdateScheme::MUSL)
+        reader.fail("Velocity update",
+                    "FLIP, PIC or blend with MUSL (APIC's affine transfer "
+                    "needs the particle positions of the stencil, which "
+                    "MUSL's re-map no longer has); or Stress update = USL "
+                    "or USF");
       if (!(s.flip_fraction >= 0 && s.flip_fraction <= 1))
         reader.fail("Blend factor", "a number in [0, 1]");
       s.relative_mass_threshold =
@@ -349,7 +359,8 @@ namespace dealmpm
     particles = std::make_unique<ParticleSet<dim>>(grid.triangulation,
                                                    *grid.mapping,
                                                    material_models,
-                                                   internal);
+                                                   internal,
+                                                   run_settings.apic);
     particles->handler.signals.particle_lost.connect(
       [this](const typename Particles::ParticleIterator<dim> &p,
              const typename Triangulation<dim>::active_cell_iterator &) {

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 
 namespace dealmpm
 {
@@ -180,6 +181,20 @@ namespace dealmpm
     DoFTools::make_hanging_node_constraints(dof_handler,
                                             hanging_node_constraints);
     hanging_node_constraints.close();
+
+    node_positions.assign(partitioner->locally_owned_size() +
+                            partitioner->n_ghost_indices(),
+                          Point<dim>());
+    {
+      std::map<types::global_dof_index, Point<dim>> support_points;
+      DoFTools::map_dofs_to_support_points(MappingQ1<dim>(),
+                                           dof_handler,
+                                           support_points);
+      for (const auto &[dof, x] : support_points)
+        if (partitioner->in_local_range(dof) ||
+            partitioner->is_ghost_entry(dof))
+          node_positions[partitioner->global_to_local(dof)] = x;
+    }
 
     cells.clear();
     cell_nodes.clear();

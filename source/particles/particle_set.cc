@@ -1,3 +1,4 @@
+#include <deal.II/base/numbers.h>
 #include <deal.II/base/symmetric_tensor.h>
 
 #include <dealmpm/particles/particle_set.h>
@@ -32,9 +33,12 @@ namespace dealmpm
     const Triangulation<dim>                         &tria,
     const Mapping<dim>                               &mapping,
     const std::vector<std::string>                   &model_names,
-    const std::vector<std::vector<FieldDescription>> &internal_variables)
+    const std::vector<std::vector<FieldDescription>> &internal_variables,
+    const bool                                        affine_velocity)
     : layout(core_layout<dim>(fields))
   {
+    fields.affine_velocity = affine_velocity ? layout.add("apic_B", dim * dim) :
+                                               numbers::invalid_unsigned_int;
     // One block of internal variables per model in use, shared by the
     // materials of that model.
     std::map<std::string, unsigned int> block_of_model;

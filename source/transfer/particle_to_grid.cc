@@ -6,7 +6,7 @@ namespace dealmpm
   {
     /** The kernel, compiled once per choice of quantities so that the usual
      * all-in-one P2G has no branch in its loop. */
-    template <int dim, bool mass_and_momentum, bool internal_force>
+    template <int dim, bool mass_and_momentum, bool internal_force, bool affine>
     void
     transfer(const BackgroundGrid<dim> &grid,
              const ParticleSet<dim>    &particles,
@@ -29,6 +29,29 @@ namespace dealmpm
             const ArrayView<const double> props = p.get_properties();
             const double                  m     = props[f.mass];
             const Tensor<1, dim> v = read_vector<dim>(&props[f.velocity]);
+            // APIC: the particle carries the affine field v + C (x - x_p)
+            // with C = B D^-1, B stored by G2P and D = sum N (x_i - x_p) (x)
+            // (x_i - x_p) at the current position: with this D the round
+            // trip conserves angular momentum exactly (Jiang et al. 2015).
+            Tensor<2, dim> C;
+            Point<dim>     x_p;
+            if (affine)
+              {
+                x_p = p.get_location();
+                Tensor<2, dim> D;
+                for (unsigned int e = stencil.begin[k];
+                     e < stencil.begin[k + 1];
+                     ++e)
+                  {
+                    const Tensor<1, dim> r =
+                      grid.node_positions[stencil.node[e]] - x_p;
+                    D += stencil.N[e] * outer_product(r, r);
+                  }
+                // D is singular only for a particle on a node line.
+                if (std::abs(determinant(D)) >
+                    1e-12 * Utilities::fixed_power<dim>(trace(D)))
+                  C = read_tensor<dim>(&props[f.affine_velocity]) * invert(D);
+              }
             // -V sigma, scaled once per particle.
             SymmetricTensor<2, dim> Vsigma;
             if (internal_force)
@@ -43,8 +66,10 @@ namespace dealmpm
                   {
                     const double mN = m * stencil.N[e];
                     mass[n] += mN;
+                    const Tensor<1, dim> v_n =
+                      affine ? v + C * (grid.node_positions[n] - x_p) : v;
                     for (unsigned int d = 0; d < dim; ++d)
-                      momentum[d][n] += mN * v[d];
+                      momentum[d][n] += mN * v_n[d];
                   }
                 if (internal_force)
                   {
@@ -77,12 +102,18 @@ namespace dealmpm
       for (unsigned int d = 0; d < dim; ++d)
         fields.force[d] = 0.;
 
-    if (mass_and_momentum && internal_force)
-      transfer<dim, true, true>(grid, particles, stencil, fields);
+    const bool affine =
+      particles.fields.affine_velocity != numbers::invalid_unsigned_int;
+    if (mass_and_momentum && internal_force && affine)
+      transfer<dim, true, true, true>(grid, particles, stencil, fields);
+    else if (mass_and_momentum && internal_force)
+      transfer<dim, true, true, false>(grid, particles, stencil, fields);
+    else if (mass_and_momentum && affine)
+      transfer<dim, true, false, true>(grid, particles, stencil, fields);
     else if (mass_and_momentum)
-      transfer<dim, true, false>(grid, particles, stencil, fields);
+      transfer<dim, true, false, false>(grid, particles, stencil, fields);
     else if (internal_force)
-      transfer<dim, false, true>(grid, particles, stencil, fields);
+      transfer<dim, false, true, false>(grid, particles, stencil, fields);
 
     if (mass_and_momentum)
       {

@@ -39,6 +39,7 @@ namespace dealmpm
     unsigned int max_steps                 = 0; ///< 0: no limit
     UpdateScheme scheme                    = UpdateScheme::USL;
     double       flip_fraction             = 1; ///< 1 FLIP, 0 PIC
+    bool         apic                      = false;
     double       relative_mass_threshold   = 1e-9;
     bool         stop_when_particles_leave = false;
 

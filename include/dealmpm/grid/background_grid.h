@@ -99,7 +99,9 @@ namespace dealmpm
     std::vector<GridCell<dim>> cells;
     /** Local (owned + ghost) indices of the effective nodes of all cells. */
     std::vector<unsigned int> cell_nodes;
-    std::vector<double>       cell_node_weights;
+    /** Position of each local (owned + ghost) node, by local index. */
+    std::vector<Point<dim>> node_positions;
+    std::vector<double>     cell_node_weights;
 
   private:
     void

@@ -24,6 +24,10 @@ namespace dealmpm
     unsigned int stress;               ///< symmetric, deal.II's unrolled order
     unsigned int body;
     unsigned int material;
+    /** APIC's B_p = sum N v_i (x) (x_i - x_p) (dim x dim), or
+     * invalid_unsigned_int when the scene does not use APIC (then no particle
+     * stores it). */
+    unsigned int affine_velocity;
   };
 
   /**
@@ -43,7 +47,8 @@ namespace dealmpm
       const Triangulation<dim>                         &tria,
       const Mapping<dim>                               &mapping,
       const std::vector<std::string>                   &model_names,
-      const std::vector<std::vector<FieldDescription>> &internal_variables);
+      const std::vector<std::vector<FieldDescription>> &internal_variables,
+      const bool affine_velocity = false);
 
     PropertyLayout layout;
     CoreFields     fields;

@@ -29,7 +29,12 @@ namespace dealmpm
    * (fields.velocity_increment, for FLIP):
    * - motion: particle velocity alpha (v_p + sum N dv) + (1 - alpha) sum N v
    *   (alpha = FLIP fraction), position and displacement += dt sum N v, and
-   *   the reference location in the old cell;
+   *   the reference location in the old cell; with APIC (the particles carry
+   *   an affine velocity) v_p = sum N v and B_p = sum N v (x) (x_i - x_p)
+   *   is stored; P2G turns it into C_p = B_p D_p^-1 at the particle's next
+   *   position (Jiang et al. 2015): this, not C_p = sum v (x) grad N, makes
+   *   the grid -> particle -> grid round trip conserve angular momentum for
+   *   any shape functions, multilinear ones included;
    * - deformation: L = sum v (x) grad N, F <- (I + dt L) F, then
    *   @p after_deformation(particle, properties, L, F, cell) (the stress
    *   update, see StressUpdate) in the same sweep: the step is bound by
@@ -56,6 +61,7 @@ namespace dealmpm
         increment[d] = fields.velocity_increment[d].begin();
       }
     const CoreFields &f = particles.fields;
+    const bool affine   = f.affine_velocity != numbers::invalid_unsigned_int;
     // Slack so that a particle sitting on a face does not trigger a sort.
     const double tolerance = 1e-12;
     bool         left_cell = false;
@@ -64,8 +70,9 @@ namespace dealmpm
     for (const GridCell<dim> &c : grid.cells)
       for (auto &p : particles.handler.particles_in_cell(c.cell))
         {
-          Tensor<1, dim> v_grid, dv;
-          Tensor<2, dim> L;
+          Tensor<1, dim>   v_grid, dv;
+          Tensor<2, dim>   L, B, D;
+          const Point<dim> x_p = p.get_location();
           for (unsigned int e = stencil.begin[k]; e < stencil.begin[k + 1]; ++e)
             {
               const unsigned int n = stencil.node[e];
@@ -81,18 +88,34 @@ namespace dealmpm
                     for (unsigned int b = 0; b < dim; ++b)
                       L[d][b] += velocity[d][n] * stencil.grad_N[e][b];
                 }
+              if (motion && affine)
+                {
+                  const Tensor<1, dim> r = grid.node_positions[n] - x_p;
+                  for (unsigned int a = 0; a < dim; ++a)
+                    for (unsigned int b = 0; b < dim; ++b)
+                      B[a][b] += N * velocity[a][n] * r[b];
+                }
             }
           const ArrayView<double> props = p.get_properties();
           if (motion)
             {
-              const Tensor<1, dim> v_old = read_vector<dim>(&props[f.velocity]);
-              write_vector<dim>(&props[f.velocity],
-                                flip_fraction * (v_old + dv) +
-                                  (1. - flip_fraction) * v_grid);
+              if (affine)
+                {
+                  write_vector<dim>(&props[f.velocity], v_grid);
+                  write_tensor<dim>(&props[f.affine_velocity], B);
+                }
+              else
+                {
+                  const Tensor<1, dim> v_old =
+                    read_vector<dim>(&props[f.velocity]);
+                  write_vector<dim>(&props[f.velocity],
+                                    flip_fraction * (v_old + dv) +
+                                      (1. - flip_fraction) * v_grid);
+                }
               const Tensor<1, dim> dx = dt * v_grid;
               write_vector<dim>(&props[f.displacement],
                                 read_vector<dim>(&props[f.displacement]) + dx);
-              const Point<dim> x = p.get_location() + dx;
+              const Point<dim> x = x_p + dx;
               p.set_location(x);
               const Point<dim> xi = c.reference_point(x);
               p.set_reference_location(xi);

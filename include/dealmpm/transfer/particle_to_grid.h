@@ -8,8 +8,9 @@
 namespace dealmpm
 {
   /**
-   * P2G: nodal mass and momentum (if @p mass_and_momentum) and internal force
-   * (if @p internal_force)
+   * P2G: nodal mass and momentum (if @p mass_and_momentum; with APIC's
+   * affine part C_p (x_i - x_p) when the particles carry it) and internal
+   * force (if @p internal_force)
    * f_int = -sum_p V_p sigma_p grad N (V_p = J_p V_p0), summed over ranks.
    * External forces are the effects' business (gravity acts on the nodal
    * mass directly, which is the same sum).
