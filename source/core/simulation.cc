@@ -396,6 +396,12 @@ namespace dealmpm
           }
       }
     particles->handler.update_cached_numbers();
+    if (!effects.empty())
+      {
+        for (const auto &effect : effects)
+          effect->initialize_particles(*particles);
+        particles->handler.sort_particles_into_subdomains_and_cells();
+      }
     const Statistics s = statistics();
     mass_threshold =
       run_settings.relative_mass_threshold * s.mass / s.n_particles;
@@ -405,7 +411,8 @@ namespace dealmpm
   Statistics
   Simulation<dim>::statistics() const
   {
-    return compute_statistics(*particles, materials, effects, comm);
+    return compute_statistics(
+      *particles, materials, effects, current_time, comm);
   }
 
   template <int dim>
@@ -449,7 +456,9 @@ namespace dealmpm
               {
                 TimerOutput::Scope t(*computing_timer,
                                      "effect: " + effect_names[e]);
-                effects[e]->add_nodal_forces(fields);
+                effects[e]->add_nodal_forces(
+                  StepState<dim>{grid, *particles, stencil, current_time},
+                  fields);
               }
             // Damping-like effects act on the total force.
             for (unsigned int e = 0; e < effects.size(); ++e)
@@ -607,10 +616,13 @@ namespace dealmpm
                        "': expected a folder that can be created and "
                        "written (" +
                        problem + ")");
-    StatisticsFile stats(s.output_directory + "/statistics.csv", dim, writer);
+    Statistics     initial = statistics();
+    StatisticsFile stats(s.output_directory + "/statistics.csv",
+                         dim,
+                         initial.has_error,
+                         writer);
     Progress progress(std::cout, s.progress_interval, writer && s.verbose);
 
-    Statistics   initial = statistics();
     const double local_particles =
       particles->handler.n_locally_owned_particles();
     const double fewest = Utilities::MPI::min(local_particles, comm);

@@ -2,6 +2,8 @@
 
 #include <dealmpm/core/statistics.h>
 
+#include <cmath>
+
 namespace dealmpm
 {
   template <int dim>
@@ -10,8 +12,14 @@ namespace dealmpm
     const ParticleSet<dim>                            &particles,
     const std::vector<std::unique_ptr<Material<dim>>> &materials,
     const std::vector<std::unique_ptr<Effect<dim>>>   &effects,
+    const double                                       time,
     const MPI_Comm                                     comm)
   {
+    const Effect<dim> *exact = nullptr;
+    for (const auto &effect : effects)
+      if (effect->has_exact_solution())
+        exact = effect.get();
+    double            squared_error = 0, volume = 0, max_error = 0;
     const CoreFields &f = particles.fields;
     // n, mass, momentum (3), kinetic, strain, gravitational
     std::array<double, 8> sums{};
@@ -35,6 +43,16 @@ namespace dealmpm
                                     particles.n_internal[mat]));
         for (const auto &effect : effects)
           sums[7] += effect->potential_energy(m, p.get_location());
+        if (exact != nullptr)
+          {
+            const Tensor<1, dim> u = read_vector<dim>(&props[f.displacement]);
+            const double         error =
+              (u - exact->exact_displacement(p.get_location() - u, time))
+                .norm();
+            squared_error += props[f.initial_volume] * error * error;
+            volume += props[f.initial_volume];
+            max_error = std::max(max_error, error);
+          }
       }
     Utilities::MPI::sum(ArrayView<const double>(sums.data(), sums.size()),
                         comm,
@@ -46,6 +64,13 @@ namespace dealmpm
     s.kinetic_energy       = sums[5];
     s.strain_energy        = sums[6];
     s.gravitational_energy = sums[7];
+    if (exact != nullptr)
+      {
+        s.has_error = true;
+        s.error_L2  = std::sqrt(Utilities::MPI::sum(squared_error, comm) /
+                               Utilities::MPI::sum(volume, comm));
+        s.error_max = Utilities::MPI::max(max_error, comm);
+      }
     return s;
   }
 
@@ -53,10 +78,12 @@ namespace dealmpm
   compute_statistics(const ParticleSet<2> &,
                      const std::vector<std::unique_ptr<Material<2>>> &,
                      const std::vector<std::unique_ptr<Effect<2>>> &,
+                     double,
                      MPI_Comm);
   template Statistics
   compute_statistics(const ParticleSet<3> &,
                      const std::vector<std::unique_ptr<Material<3>>> &,
                      const std::vector<std::unique_ptr<Effect<3>>> &,
+                     double,
                      MPI_Comm);
 } // namespace dealmpm

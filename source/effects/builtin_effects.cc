@@ -1,4 +1,5 @@
 #include <dealmpm/effects/effect.h>
+#include <dealmpm/effects/manufactured_solution.h>
 
 #include <cmath>
 
@@ -17,7 +18,8 @@ namespace dealmpm
       {}
 
       void
-      add_nodal_forces(NodalFields<dim> &fields) const override
+      add_nodal_forces(const StepState<dim> &,
+                       NodalFields<dim> &fields) const override
       {
         const unsigned int n    = fields.mass.locally_owned_size();
         const double      *mass = fields.mass.begin();
@@ -115,6 +117,35 @@ namespace dealmpm
           if (!(alpha >= 0. && alpha < 1.))
             reader.fail("Coefficient", "a number in [0, 1)");
           return std::make_unique<LocalDamping<dim>>(alpha);
+        });
+      r.add(
+        "manufactured solution",
+        "the axis-aligned manufactured solution of Wallstedt and Guilkey "
+        "(2008) on the unit square/cube: initial velocity, body force and "
+        "exact displacement for error norms (section Manufactured solution: "
+        "Amplitude, Wave speed, and the neo-Hookean material's Young's "
+        "modulus, Poisson's ratio and Density).",
+        [](ParameterHandler &prm) {
+          declare_elastic_constants(prm, 1e4, 0.3);
+          prm.declare_entry("Density",
+                            "1",
+                            Patterns::Anything(),
+                            "The material's reference density.");
+          prm.declare_entry("Amplitude",
+                            "0.05",
+                            Patterns::Anything(),
+                            "Displacement amplitude A.");
+          prm.declare_entry("Wave speed",
+                            "100",
+                            Patterns::Anything(),
+                            "c in sin(c pi t + phi): the period is 2 / c.");
+        },
+        [](SceneReader &reader) -> std::unique_ptr<Effect<dim>> {
+          return std::make_unique<ManufacturedSolution<dim>>(
+            read_elastic_constants(reader),
+            reader.get_positive("Density"),
+            reader.get_positive("Amplitude"),
+            reader.get_positive("Wave speed"));
         });
       return r;
     }();

@@ -6,8 +6,10 @@ namespace dealmpm
 {
   StatisticsFile::StatisticsFile(const std::string &path,
                                  const unsigned int dim,
+                                 const bool         errors,
                                  const bool         writer)
     : dim(dim)
+    , errors(errors)
   {
     if (!writer)
       return;
@@ -16,7 +18,10 @@ namespace dealmpm
     if (dim == 3)
       out << ",momentum_z";
     out << ",kinetic_energy,strain_energy,gravitational_energy,total_energy,"
-           "lost_particles,wall_time\n";
+           "lost_particles,wall_time";
+    if (errors)
+      out << ",error_L2,error_max";
+    out << '\n';
     out << std::setprecision(16);
   }
 
@@ -36,7 +41,9 @@ namespace dealmpm
       out << ',' << s.momentum[d];
     out << ',' << s.kinetic_energy << ',' << s.strain_energy << ','
         << s.gravitational_energy << ',' << s.total_energy() << ','
-        << n_lost_particles << ',' << wall_time << '\n'
-        << std::flush;
+        << n_lost_particles << ',' << wall_time;
+    if (errors)
+      out << ',' << s.error_L2 << ',' << s.error_max;
+    out << '\n' << std::flush;
   }
 } // namespace dealmpm

@@ -20,6 +20,11 @@ namespace dealmpm
     double                kinetic_energy       = 0;
     double                strain_energy        = 0;
     double                gravitational_energy = 0;
+    /** Displacement error against an effect's exact solution, if any:
+     * volume-weighted RMS and max over the particles. */
+    bool   has_error = false;
+    double error_L2  = 0;
+    double error_max = 0;
 
     double
     total_energy() const
@@ -34,5 +39,6 @@ namespace dealmpm
     const ParticleSet<dim>                            &particles,
     const std::vector<std::unique_ptr<Material<dim>>> &materials,
     const std::vector<std::unique_ptr<Effect<dim>>>   &effects,
+    const double                                       time,
     const MPI_Comm                                     comm);
 } // namespace dealmpm

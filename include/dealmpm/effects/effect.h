@@ -3,7 +3,10 @@
 #include <deal.II/base/point.h>
 
 #include <dealmpm/core/registry.h>
+#include <dealmpm/grid/background_grid.h>
 #include <dealmpm/grid/nodal_fields.h>
+#include <dealmpm/particles/particle_set.h>
+#include <dealmpm/transfer/stencil.h>
 
 #include <string>
 
@@ -15,15 +18,34 @@ namespace dealmpm
    * no timer section. Effects act on the summed nodal fields between P2G and
    * the grid update, on the locally owned nodes.
    */
+  /** What an effect may read during a step. */
+  template <int dim>
+  struct StepState
+  {
+    const BackgroundGrid<dim> &grid;
+    const ParticleSet<dim>    &particles;
+    const Stencil<dim>        &stencil;
+    double                     time; ///< at the start of the step
+  };
+
   template <int dim>
   class Effect
   {
   public:
     virtual ~Effect() = default;
 
-    /** Add external nodal forces (body forces, tractions). */
+    /** Set initial particle state (a velocity field, a pre-deformed state),
+     * once, after the bodies are made; particles may be moved (they are
+     * sorted into their cells afterwards). */
     virtual void
-    add_nodal_forces(NodalFields<dim> & /*fields*/) const
+    initialize_particles(ParticleSet<dim> & /*particles*/) const
+    {}
+
+    /** Add external nodal forces (body forces, tractions). An effect that
+     * writes ghost entries compresses the force vectors itself. */
+    virtual void
+    add_nodal_forces(const StepState<dim> & /*state*/,
+                     NodalFields<dim> & /*fields*/) const
     {}
 
     /** Change the total nodal forces once all are in (damping). */
@@ -36,6 +58,21 @@ namespace dealmpm
     potential_energy(const double /*mass*/, const Point<dim> & /*x*/) const
     {
       return 0;
+    }
+
+    /** Effects that bring an exact solution (manufactured solutions): the
+     * statistics then report the displacement error against it. */
+    virtual bool
+    has_exact_solution() const
+    {
+      return false;
+    }
+
+    /** Exact displacement of the material point at reference position X. */
+    virtual Tensor<1, dim>
+    exact_displacement(const Point<dim> & /*X*/, const double /*t*/) const
+    {
+      return {};
     }
   };
 

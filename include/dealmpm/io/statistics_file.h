@@ -12,8 +12,10 @@ namespace dealmpm
   class StatisticsFile
   {
   public:
+    /** @p errors: add error_L2,error_max (scenes with an exact solution). */
     StatisticsFile(const std::string &path,
                    const unsigned int dim,
+                   const bool         errors,
                    const bool         writer);
 
     void
@@ -27,5 +29,6 @@ namespace dealmpm
   private:
     std::ofstream out;
     unsigned int  dim;
+    bool          errors;
   };
 } // namespace dealmpm
