@@ -1,12 +1,7 @@
 #!/usr/bin/env bash
 # Bad input: one line on stderr naming the file/entry and what was expected,
 # exit code 2 (1 for a bad command line), and nothing written.
-set -uo pipefail
-dealmpm=$1 scene=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work"
-failures=0
+source "$(dirname "$0")/check_lib.sh"
 
 expect() { # expected_code regex args...
   local code=$1 regex=$2; shift 2
@@ -68,5 +63,4 @@ if command -v mpirun > /dev/null; then
   fi
 fi
 
-if [ $failures -gt 0 ]; then echo "$failures bad-input case(s) failed"; exit 1; fi
-echo "all bad-input cases passed"
+finish bad-input

@@ -2,13 +2,7 @@
 # The files a user opens: particles.pvd over .pvtu/.vtu with the named fields,
 # grid.pvd, statistics.csv with its columns, the particle CSV, the progress
 # line and the timing table.
-set -uo pipefail
-dealmpm=$1 scene=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work"
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+source "$(dirname "$0")/check_lib.sh"
 
 "$dealmpm" "$scene" -s "Output/Directory=out" -s "Time/End time=0.1" -s "Output/Interval=0.05" \
   -s "Output/Write grid=true" -s "Output/Particle CSV=true" -s "Output/Progress interval=1e-9" \
@@ -33,5 +27,4 @@ grep -Eq "^step +[0-9]+ +t = .* dt = .*% +ETA [0-9]+:[0-9]{2}:[0-9]{2}" log.txt 
 grep -q "G2P and stress update" log.txt || fail "no timing table"
 grep -q "M particle-steps/s" log.txt || fail "no speed line"
 
-if [ $failures -gt 0 ]; then echo "$failures output check(s) failed"; cat log.txt; exit 1; fi
-echo "all output checks passed"
+finish output

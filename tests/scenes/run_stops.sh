@@ -2,13 +2,7 @@
 # Runs that cannot go on stop with the step, the particle and the reason
 # (exit 3) and leave their last good output; particles that leave the grid
 # are removed and counted, or stop the run, as the scene says.
-set -uo pipefail
-dealmpm=$1 scene=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work"
-failures=0
-fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+source "$(dirname "$0")/check_lib.sh"
 
 # An absurd time step blows up: stop with step, particle id and location.
 "$dealmpm" "$scene" -s "Output/Directory=unstable" -s "Time/Time step=0.5" \
@@ -45,5 +39,4 @@ code=$?
 [ $code = 3 ] || fail "all particles gone: exit $code, expected 3"
 grep -q "no particles are left in the grid" err.txt || { fail "all particles gone: message"; cat err.txt; }
 
-if [ $failures -gt 0 ]; then echo "$failures case(s) failed"; exit 1; fi
-echo "all run-stop cases passed"
+finish run-stop
