@@ -147,6 +147,15 @@ namespace dealmpm
                       "the updated particles: robust where nodes carry "
                       "little mass, one more P2G and G2P).");
     prm.declare_entry(
+      "Shape function",
+      "linear",
+      Patterns::Selection("linear|uGIMP|cpGIMP"),
+      "Particle-node weights: 'linear' (the grid's Q1 functions at the "
+      "particle), 'uGIMP' (their average over a fixed particle domain of "
+      "one particle spacing: no cell-crossing noise), 'cpGIMP' (the domain "
+      "stretches with F's diagonal). GIMP needs a grid of axis-aligned "
+      "boxes; it adds dim doubles per particle.");
+    prm.declare_entry(
       "Velocity update",
       "FLIP",
       Patterns::Selection("FLIP|PIC|blend|APIC"),
@@ -220,6 +229,18 @@ namespace dealmpm
     SceneReader reader(prm, scene_file);
     read_run_settings(reader);
     grid.create(reader);
+    if (run_settings.shape_function != "linear")
+      {
+        if (!grid.cartesian)
+          {
+            SectionScope mpm(reader, "MPM");
+            reader.fail(
+              "Shape function",
+              "'linear' on this grid: GIMP needs cells that are "
+              "axis-aligned boxes (a rectangle grid, or such a mesh)");
+          }
+        grid.find_neighbors();
+      }
     boundary_conditions.setup(grid,
                               BoundaryConditions<dim>::read(
                                 reader, grid.triangulation.get_boundary_ids()));
@@ -256,8 +277,9 @@ namespace dealmpm
     {
       SectionScope      mpm(reader, "MPM");
       const std::string update = reader.get("Velocity update");
-      s.scheme = parse_update_scheme(reader.get("Stress update"));
-      s.apic   = update == "APIC";
+      s.scheme         = parse_update_scheme(reader.get("Stress update"));
+      s.apic           = update == "APIC";
+      s.shape_function = reader.get("Shape function");
       s.flip_fraction =
         update == "FLIP" ?
           1. :
@@ -356,11 +378,14 @@ namespace dealmpm
     std::vector<std::vector<FieldDescription>> internal;
     for (const auto &m : materials)
       internal.push_back(m->internal_variables());
-    particles = std::make_unique<ParticleSet<dim>>(grid.triangulation,
-                                                   *grid.mapping,
-                                                   material_models,
-                                                   internal,
-                                                   run_settings.apic);
+    particles =
+      std::make_unique<ParticleSet<dim>>(grid.triangulation,
+                                         *grid.mapping,
+                                         material_models,
+                                         internal,
+                                         run_settings.apic,
+                                         run_settings.shape_function !=
+                                           "linear");
     particles->handler.signals.particle_lost.connect(
       [this](const typename Particles::ParticleIterator<dim> &p,
              const typename Triangulation<dim>::active_cell_iterator &) {
@@ -431,7 +456,13 @@ namespace dealmpm
   {
     {
       TimerOutput::Scope t(*computing_timer, "stencil");
-      compute_linear_stencil(grid, *particles, stencil);
+      if (run_settings.shape_function == "linear")
+        compute_linear_stencil(grid, *particles, stencil);
+      else
+        compute_gimp_stencil(grid,
+                             *particles,
+                             run_settings.shape_function == "cpGIMP",
+                             stencil);
     }
     bool              left_cell = false;
     StressUpdate<dim> stress_update(materials, *particles, dt);

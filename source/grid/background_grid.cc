@@ -197,6 +197,7 @@ namespace dealmpm
     }
 
     cells.clear();
+    ghost_cells.clear();
     cell_nodes.clear();
     cell_node_weights.clear();
     constexpr unsigned int               n_vertices = GridCell<dim>::n_vertices;
@@ -206,7 +207,7 @@ namespace dealmpm
     bool                                 first = true;
     for (const auto &dof_cell : dof_handler.active_cell_iterators())
       {
-        if (!dof_cell->is_locally_owned())
+        if (!dof_cell->is_locally_owned() && !dof_cell->is_ghost())
           continue;
         GridCell<dim> c;
         c.cell = dof_cell;
@@ -307,8 +308,9 @@ namespace dealmpm
               }
             first = false;
           }
-        cells.push_back(c);
+        (dof_cell->is_locally_owned() ? cells : ghost_cells).push_back(c);
       }
+    neighbors.clear();
 
     cartesian = Utilities::MPI::min(all_boxes ? 1 : 0, comm) == 1;
     if (cartesian)
@@ -322,6 +324,34 @@ namespace dealmpm
         upper[d] = Utilities::MPI::max(first ? -1e300 : upper[d], comm);
       }
     bounding_box = BoundingBox<dim>({lower, upper});
+  }
+
+  template <int dim>
+  void
+  BackgroundGrid<dim>::find_neighbors()
+  {
+    if (!neighbors.empty() || cells.empty())
+      return;
+    std::map<unsigned int, const GridCell<dim> *> by_index;
+    for (const auto *list : {&cells, &ghost_cells})
+      for (const GridCell<dim> &c : *list)
+        by_index[c.cell->active_cell_index()] = &c;
+    const auto vertex_to_cells = GridTools::vertex_to_cell_map(triangulation);
+    neighbors.resize(cells.size());
+    for (unsigned int i = 0; i < cells.size(); ++i)
+      {
+        for (const unsigned int v : cells[i].cell->vertex_indices())
+          for (const auto &other :
+               vertex_to_cells[cells[i].cell->vertex_index(v)])
+            {
+              const auto it = by_index.find(other->active_cell_index());
+              if (it != by_index.end() &&
+                  std::find(neighbors[i].begin(),
+                            neighbors[i].end(),
+                            it->second) == neighbors[i].end())
+                neighbors[i].push_back(it->second);
+            }
+      }
   }
 
   template class BackgroundGrid<2>;

@@ -321,6 +321,12 @@ namespace dealmpm
             write_vector<dim>(&properties[f.velocity], body.velocity);
             write_tensor<dim>(&properties[f.deformation_gradient],
                               unit_symmetric_tensor<dim>());
+            if (f.domain_half_length != numbers::invalid_unsigned_int)
+              for (unsigned int d = 0; d < dim; ++d)
+                properties[f.domain_half_length + d] =
+                  (c.vertices[GridCell<dim>::n_vertices - 1][d] -
+                   c.vertices[0][d]) /
+                  (2. * n);
             properties[f.body]     = body_index;
             properties[f.material] = body.material;
             std::copy(initial_internal_variables.begin(),

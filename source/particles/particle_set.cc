@@ -34,9 +34,13 @@ namespace dealmpm
     const Mapping<dim>                               &mapping,
     const std::vector<std::string>                   &model_names,
     const std::vector<std::vector<FieldDescription>> &internal_variables,
-    const bool                                        affine_velocity)
+    const bool                                        affine_velocity,
+    const bool                                        particle_domain)
     : layout(core_layout<dim>(fields))
   {
+    fields.domain_half_length = particle_domain ?
+                                  layout.add("domain_half_length", dim) :
+                                  numbers::invalid_unsigned_int;
     fields.affine_velocity = affine_velocity ? layout.add("apic_B", dim * dim) :
                                                numbers::invalid_unsigned_int;
     // One block of internal variables per model in use, shared by the

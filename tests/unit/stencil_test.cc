@@ -119,3 +119,88 @@ TEST(GridCell, DistortedCellMapRoundTrip)
   EXPECT_NEAR(identity[0][1], 0., 1e-8);
   EXPECT_NEAR(identity[1][0], 0., 1e-8);
 }
+
+namespace
+{
+  /** Bardenhagen and Kober (2004), uGIMP in 1D: node at distance x, cell
+   * size h, particle half-length l. */
+  double
+  gimp_closed_form(const double x, const double h, const double l)
+  {
+    const double r = std::abs(x);
+    if (r < l)
+      return 1. - (r * r + l * l) / (2. * h * l);
+    if (r < h - l)
+      return 1. - r / h;
+    if (r < h + l)
+      return (h + l - r) * (h + l - r) / (4. * h * l);
+    return 0.;
+  }
+} // namespace
+
+TEST(Stencil, GIMPMatchesClosedFormOnUniformGrid)
+{
+  auto simulation = test::make_simulation<2>(
+    "subsection Grid\n set Cells = 8, 8\nend\n"
+    "subsection Body 1\n set Lower corner = 0.25, 0.25\n"
+    " set Upper corner = 0.75, 0.75\nend\n"
+    "subsection MPM\n set Shape function = uGIMP\nend\n");
+  std::mt19937 rng(11);
+  test::scatter_particles_in_cells(*simulation, rng);
+  Stencil<2> stencil;
+  compute_gimp_stencil(simulation->background_grid(),
+                       simulation->particle_set(),
+                       false,
+                       stencil);
+  const auto  &grid = simulation->background_grid();
+  const double h = 1. / 8, l = h / 4; // 2 particles per cell and direction
+  std::size_t  k = 0;
+  for (const auto &c : grid.cells)
+    for (const auto &p :
+         simulation->particle_set().handler.particles_in_cell(c.cell))
+      {
+        double sum = 0;
+        for (unsigned int e = stencil.begin[k]; e < stencil.begin[k + 1]; ++e)
+          {
+            const Tensor<1, 2> r =
+              grid.node_positions[stencil.node[e]] - p.get_location();
+            EXPECT_NEAR(stencil.N[e],
+                        gimp_closed_form(r[0], h, l) *
+                          gimp_closed_form(r[1], h, l),
+                        1e-14);
+            sum += stencil.N[e];
+          }
+        EXPECT_NEAR(sum, 1., 1e-14);
+        ++k;
+      }
+}
+
+TEST(Stencil, GIMPPartitionOfUnityWithHangingNodes)
+{
+  for (const std::string kernel : {"uGIMP", "cpGIMP"})
+    {
+      auto simulation = test::make_simulation<2>(
+        refined_scene<2>() + "subsection MPM\n set Shape function = " + kernel +
+        "\nend\n");
+      std::mt19937 rng(3);
+      test::scatter_particles_in_cells(*simulation, rng);
+      Stencil<2> stencil;
+      compute_gimp_stencil(simulation->background_grid(),
+                           simulation->particle_set(),
+                           kernel == "cpGIMP",
+                           stencil);
+      for (std::size_t k = 0; k < stencil.n_particles(); ++k)
+        {
+          double       sum = 0, scale = 0;
+          Tensor<1, 2> gradient_sum;
+          for (unsigned int e = stencil.begin[k]; e < stencil.begin[k + 1]; ++e)
+            {
+              sum += stencil.N[e];
+              gradient_sum += stencil.grad_N[e];
+              scale = std::max(scale, stencil.grad_N[e].norm());
+            }
+          EXPECT_NEAR(sum, 1., 1e-13);
+          EXPECT_LT(gradient_sum.norm(), 1e-12 * scale);
+        }
+    }
+}

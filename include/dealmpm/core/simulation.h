@@ -32,16 +32,18 @@ namespace dealmpm
   /** Time stepping, transfer and output settings of a run. */
   struct RunSettings
   {
-    double       end_time                  = 1;
-    bool         cfl_time_step             = true;
-    double       fixed_time_step           = 1e-3;
-    double       cfl_number                = 0.5;
-    unsigned int max_steps                 = 0; ///< 0: no limit
-    UpdateScheme scheme                    = UpdateScheme::USL;
-    double       flip_fraction             = 1; ///< 1 FLIP, 0 PIC
-    bool         apic                      = false;
-    double       relative_mass_threshold   = 1e-9;
-    bool         stop_when_particles_leave = false;
+    double       end_time        = 1;
+    bool         cfl_time_step   = true;
+    double       fixed_time_step = 1e-3;
+    double       cfl_number      = 0.5;
+    unsigned int max_steps       = 0; ///< 0: no limit
+    UpdateScheme scheme          = UpdateScheme::USL;
+    double       flip_fraction   = 1; ///< 1 FLIP, 0 PIC
+    bool         apic            = false;
+    /** "linear", "uGIMP" or "cpGIMP". */
+    std::string shape_function            = "linear";
+    double      relative_mass_threshold   = 1e-9;
+    bool        stop_when_particles_leave = false;
 
     std::string output_directory   = "output";
     double      output_interval    = 0.1;

@@ -97,6 +97,16 @@ namespace dealmpm
 
     /** Locally owned active cells, in the order every kernel visits them. */
     std::vector<GridCell<dim>> cells;
+    /** The ghost layer's cells (same data), for kernels that reach into
+     * neighbour cells. */
+    std::vector<GridCell<dim>> ghost_cells;
+    /** Per locally owned cell (same order as cells): the owned or ghost
+     * cells that share a vertex with it, itself included. Empty until
+     * find_neighbors(); only kernels with particle domains need it. */
+    std::vector<std::vector<const GridCell<dim> *>> neighbors;
+
+    void
+    find_neighbors();
     /** Local (owned + ghost) indices of the effective nodes of all cells. */
     std::vector<unsigned int> cell_nodes;
     /** Position of each local (owned + ghost) node, by local index. */

@@ -28,6 +28,9 @@ namespace dealmpm
      * invalid_unsigned_int when the scene does not use APIC (then no particle
      * stores it). */
     unsigned int affine_velocity;
+    /** GIMP's initial particle-domain half-lengths (dim), or
+     * invalid_unsigned_int for kernels without a particle domain. */
+    unsigned int domain_half_length;
   };
 
   /**
@@ -48,7 +51,8 @@ namespace dealmpm
       const Mapping<dim>                               &mapping,
       const std::vector<std::string>                   &model_names,
       const std::vector<std::vector<FieldDescription>> &internal_variables,
-      const bool affine_velocity = false);
+      const bool                                        affine_velocity = false,
+      const bool particle_domain = false);
 
     PropertyLayout layout;
     CoreFields     fields;

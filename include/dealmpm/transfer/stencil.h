@@ -37,4 +37,19 @@ namespace dealmpm
   compute_linear_stencil(const BackgroundGrid<dim> &grid,
                          const ParticleSet<dim>    &particles,
                          Stencil<dim>              &stencil);
+
+  /**
+   * GIMP weights (Bardenhagen and Kober 2004) on grids of axis-aligned boxes:
+   * S_i = (1 / V) int over the particle domain of N_i, grad S_i = (1 / V) int
+   * of grad N_i, summed over the (owned or ghost) cells the domain overlaps,
+   * with hanging nodes resolved, V the covered volume. The domain is the box
+   * of half-lengths domain_half_length (uGIMP), stretched by F_dd when
+   * @p follow_deformation (cpGIMP). Needs grid.find_neighbors().
+   */
+  template <int dim>
+  void
+  compute_gimp_stencil(const BackgroundGrid<dim> &grid,
+                       const ParticleSet<dim>    &particles,
+                       const bool                 follow_deformation,
+                       Stencil<dim>              &stencil);
 } // namespace dealmpm

@@ -1,0 +1,158 @@
+#include <dealmpm/transfer/stencil.h>
+
+#include <algorithm>
+
+namespace dealmpm
+{
+  namespace
+  {
+    /** Integrals over [a, b] of the 1D hats of a cell [x0, x1]: the one
+     * that is 1 at x0 (lower) and the one that is 1 at x1 (upper). */
+    inline void
+    hat_integrals(const double a,
+                  const double b,
+                  const double x0,
+                  const double x1,
+                  double      &lower,
+                  double      &upper)
+    {
+      const double h = x1 - x0;
+      upper          = ((b - x0) * (b - x0) - (a - x0) * (a - x0)) / (2. * h);
+      lower          = ((x1 - a) * (x1 - a) - (x1 - b) * (x1 - b)) / (2. * h);
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  compute_gimp_stencil(const BackgroundGrid<dim> &grid,
+                       const ParticleSet<dim>    &particles,
+                       const bool                 follow_deformation,
+                       Stencil<dim>              &stencil)
+  {
+    constexpr unsigned int n_vertices = GridCell<dim>::n_vertices;
+    const CoreFields      &f          = particles.fields;
+    const std::size_t n_local = particles.handler.n_locally_owned_particles();
+    stencil.begin.resize(n_local + 1);
+    std::size_t k = 0, e = 0;
+
+    // The particle's nodes, merged over the cells its domain overlaps.
+    std::vector<unsigned int>   nodes;
+    std::vector<double>         weights;
+    std::vector<Tensor<1, dim>> gradients;
+    for (unsigned int i = 0; i < grid.cells.size(); ++i)
+      for (const auto &p :
+           particles.handler.particles_in_cell(grid.cells[i].cell))
+        {
+          const auto       props = p.get_properties();
+          const Point<dim> x     = p.get_location();
+          Tensor<1, dim>   l;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              l[d] = props[f.domain_half_length + d];
+              if (follow_deformation)
+                l[d] *=
+                  std::max(props[f.deformation_gradient + d * dim + d], 1e-3);
+            }
+          nodes.clear();
+          weights.clear();
+          gradients.clear();
+          double covered = 0;
+          for (const GridCell<dim> *c : grid.neighbors[i])
+            {
+              const Point<dim> &x0 = c->vertices[0];
+              const Point<dim> &x1 = c->vertices[n_vertices - 1];
+              double            lower[dim], upper[dim], length[dim];
+              bool              overlaps = true;
+              double            volume   = 1;
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  const double a = std::max(x[d] - l[d], x0[d]);
+                  const double b = std::min(x[d] + l[d], x1[d]);
+                  if (!(b > a))
+                    {
+                      overlaps = false;
+                      break;
+                    }
+                  hat_integrals(a, b, x0[d], x1[d], lower[d], upper[d]);
+                  length[d] = b - a;
+                  volume *= length[d];
+                }
+              if (!overlaps)
+                continue;
+              covered += volume;
+              for (unsigned int v = 0; v < n_vertices; ++v)
+                {
+                  // Integral of N_v and of grad N_v over the overlap.
+                  double         S = 1;
+                  Tensor<1, dim> G;
+                  for (unsigned int d = 0; d < dim; ++d)
+                    {
+                      const bool up = (v >> d) & 1u;
+                      S *= up ? upper[d] : lower[d];
+                      double g = (up ? 1. : -1.) / (x1[d] - x0[d]) * length[d];
+                      for (unsigned int b = 0; b < dim; ++b)
+                        if (b != d)
+                          g *= ((v >> b) & 1u) ? upper[b] : lower[b];
+                      G[d] = g;
+                    }
+                  // Onto the cell's effective nodes (hanging nodes resolved).
+                  for (unsigned int n = 0; n < c->n_nodes; ++n)
+                    {
+                      const double w =
+                        c->first_weight == numbers::invalid_unsigned_int ?
+                          (n == v ? 1. : 0.) :
+                          grid.cell_node_weights[c->first_weight +
+                                                 n * n_vertices + v];
+                      if (w == 0.)
+                        continue;
+                      const unsigned int node =
+                        grid.cell_nodes[c->first_node + n];
+                      const auto it =
+                        std::find(nodes.begin(), nodes.end(), node);
+                      if (it == nodes.end())
+                        {
+                          nodes.push_back(node);
+                          weights.push_back(w * S);
+                          gradients.push_back(w * G);
+                        }
+                      else
+                        {
+                          weights[it - nodes.begin()] += w * S;
+                          gradients[it - nodes.begin()] += w * G;
+                        }
+                    }
+                }
+            }
+          // Normalise by the covered volume: the partition of unity holds
+          // even where a domain reaches past the grid.
+          stencil.begin[k] = e;
+          if (stencil.node.size() < e + nodes.size())
+            {
+              const std::size_t capacity = (e + nodes.size()) * 3 / 2 + 64;
+              stencil.node.resize(capacity);
+              stencil.N.resize(capacity);
+              stencil.grad_N.resize(capacity);
+            }
+          for (unsigned int n = 0; n < nodes.size(); ++n, ++e)
+            {
+              stencil.node[e]   = nodes[n];
+              stencil.N[e]      = weights[n] / covered;
+              stencil.grad_N[e] = gradients[n] / covered;
+            }
+          ++k;
+        }
+    stencil.begin[k] = e;
+    AssertThrow(k == n_local, ExcInternalError());
+  }
+
+  template void
+  compute_gimp_stencil(const BackgroundGrid<2> &,
+                       const ParticleSet<2> &,
+                       bool,
+                       Stencil<2> &);
+  template void
+  compute_gimp_stencil(const BackgroundGrid<3> &,
+                       const ParticleSet<3> &,
+                       bool,
+                       Stencil<3> &);
+} // namespace dealmpm
