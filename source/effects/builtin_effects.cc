@@ -1,4 +1,5 @@
 #include <dealmpm/effects/effect.h>
+#include <dealmpm/effects/generalized_vortex.h>
 #include <dealmpm/effects/manufactured_solution.h>
 
 #include <cmath>
@@ -143,6 +144,39 @@ namespace dealmpm
         [](SceneReader &reader) -> std::unique_ptr<Effect<dim>> {
           return std::make_unique<ManufacturedSolution<dim>>(
             read_elastic_constants(reader),
+            reader.get_positive("Density"),
+            reader.get_positive("Amplitude"),
+            reader.get_positive("Wave speed"));
+        });
+      r.add(
+        "generalized vortex",
+        "the generalized vortex on the annulus 0.75 < R < 1.25 (2D): "
+        "initial velocity, body force and exact displacement for error "
+        "norms (section Generalized vortex: Amplitude, Wave speed, and the "
+        "neo-Hookean material's Young's modulus, Poisson's ratio and "
+        "Density).",
+        [](ParameterHandler &prm) {
+          declare_elastic_constants(prm, 1e3, 0.3);
+          prm.declare_entry("Density",
+                            "1000",
+                            Patterns::Anything(),
+                            "The material's reference density.");
+          prm.declare_entry("Amplitude",
+                            "1",
+                            Patterns::Anything(),
+                            "A in alpha = A sin(c pi t) h(R).");
+          prm.declare_entry("Wave speed",
+                            "1",
+                            Patterns::Anything(),
+                            "c in sin(c pi t): the period is 2 / c.");
+        },
+        [](SceneReader &reader) -> std::unique_ptr<Effect<dim>> {
+          if (dim != 2)
+            reader.fail(
+              "Amplitude",
+              "Dimension = 2: the generalized vortex is a 2D problem");
+          return std::make_unique<GeneralizedVortex<dim>>(
+            read_elastic_constants(reader).mu,
             reader.get_positive("Density"),
             reader.get_positive("Amplitude"),
             reader.get_positive("Wave speed"));

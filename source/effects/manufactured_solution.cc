@@ -100,32 +100,9 @@ namespace dealmpm
   ManufacturedSolution<dim>::add_nodal_forces(const StepState<dim> &state,
                                               NodalFields<dim> &fields) const
   {
-    // f_i += sum_p N_ip m_p b(X_p, t): a sweep of its own, only in scenes
-    // that list this effect.
-    const CoreFields &f = state.particles.fields;
-    double           *force[dim];
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        fields.force[d].zero_out_ghost_values();
-        force[d] = fields.force[d].begin();
-      }
-    std::size_t k = 0;
-    for (const GridCell<dim> &c : state.grid.cells)
-      for (const auto &p : state.particles.handler.particles_in_cell(c.cell))
-        {
-          const auto       props = p.get_properties();
-          const Point<dim> X =
-            p.get_location() - read_vector<dim>(&props[f.displacement]);
-          const Tensor<1, dim> mb = props[f.mass] * body_force(X, state.time);
-          for (unsigned int e = state.stencil.begin[k];
-               e < state.stencil.begin[k + 1];
-               ++e)
-            for (unsigned int d = 0; d < dim; ++d)
-              force[d][state.stencil.node[e]] += state.stencil.N[e] * mb[d];
-          ++k;
-        }
-    for (unsigned int d = 0; d < dim; ++d)
-      fields.force[d].compress(VectorOperation::add);
+    add_particle_body_force(state, fields, [this, &state](const Point<dim> &X) {
+      return body_force(X, state.time);
+    });
   }
 
   template class ManufacturedSolution<2>;

@@ -41,14 +41,18 @@ namespace dealmpm
     class BallShape : public Shape<dim>
     {
     public:
-      BallShape(const Point<dim> &center, const double radius)
+      BallShape(const Point<dim> &center,
+                const double      radius,
+                const double      inner_radius)
         : center(center)
         , radius(radius)
+        , inner_radius(inner_radius)
       {}
       bool
       contains(const Point<dim> &p) const override
       {
-        return p.distance(center) <= radius;
+        const double r = p.distance(center);
+        return r <= radius && r >= inner_radius;
       }
       BoundingBox<dim>
       bounding_box() const override
@@ -65,6 +69,7 @@ namespace dealmpm
     private:
       Point<dim> center;
       double     radius;
+      double     inner_radius;
     };
 
     /** 3D: a circular cylinder along a coordinate axis, centred at center. */
@@ -176,6 +181,11 @@ namespace dealmpm
                       repeat_value<dim>("0"),
                       Patterns::Anything(),
                       "Ball, cylinder: centre.");
+    prm.declare_entry("Inner radius",
+                      "0",
+                      Patterns::Anything(),
+                      "Ball: the radius of a hole at the centre (an annulus "
+                      "or hollow sphere); 0: none.");
     prm.declare_entry("Radius",
                       "0.5",
                       Patterns::Anything(),
@@ -225,9 +235,16 @@ namespace dealmpm
         body.shape = std::make_unique<BoxShape<dim>>(lower, upper);
       }
     else if (shape == "ball")
-      body.shape =
-        std::make_unique<BallShape<dim>>(reader.get_point<dim>("Center"),
-                                         reader.get_positive("Radius"));
+      {
+        const double radius = reader.get_positive("Radius");
+        const double inner  = reader.get_nonnegative("Inner radius");
+        if (!(inner < radius))
+          reader.fail("Inner radius", "a number below Radius");
+        body.shape =
+          std::make_unique<BallShape<dim>>(reader.get_point<dim>("Center"),
+                                           radius,
+                                           inner);
+      }
     else if (shape == "cylinder")
       {
         if (dim != 3)

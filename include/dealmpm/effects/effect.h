@@ -77,6 +77,43 @@ namespace dealmpm
   };
 
   /**
+   * f_i += sum_p N_ip m_p b(X_p) for a body force per unit mass given at the
+   * particles' reference positions X_p: a sweep over the particles of its
+   * own, so only scenes with such an effect pay for it.
+   */
+  template <int dim, typename BodyForce>
+  void
+  add_particle_body_force(const StepState<dim> &state,
+                          NodalFields<dim>     &fields,
+                          const BodyForce      &body_force)
+  {
+    const CoreFields &f = state.particles.fields;
+    double           *force[dim];
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        fields.force[d].zero_out_ghost_values();
+        force[d] = fields.force[d].begin();
+      }
+    std::size_t k = 0;
+    for (const GridCell<dim> &c : state.grid.cells)
+      for (const auto &p : state.particles.handler.particles_in_cell(c.cell))
+        {
+          const auto       props = p.get_properties();
+          const Point<dim> X =
+            p.get_location() - read_vector<dim>(&props[f.displacement]);
+          const Tensor<1, dim> mb = props[f.mass] * body_force(X);
+          for (unsigned int e = state.stencil.begin[k];
+               e < state.stencil.begin[k + 1];
+               ++e)
+            for (unsigned int d = 0; d < dim; ++d)
+              force[d][state.stencil.node[e]] += state.stencil.N[e] * mb[d];
+          ++k;
+        }
+    for (unsigned int d = 0; d < dim; ++d)
+      fields.force[d].compress(VectorOperation::add);
+  }
+
+  /**
    * Registered effects. Each reads its parameters from a subsection titled
    * after it ("Gravity" for "gravity").
    */
