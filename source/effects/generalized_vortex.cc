@@ -91,16 +91,6 @@ namespace dealmpm
       }
   }
 
-  template <int dim>
-  void
-  GeneralizedVortex<dim>::add_nodal_forces(const StepState<dim> &state,
-                                           NodalFields<dim>     &fields) const
-  {
-    add_particle_body_force(state, fields, [this, &state](const Point<dim> &X) {
-      return body_force(X, state.time);
-    });
-  }
-
   template class GeneralizedVortex<2>;
   template class GeneralizedVortex<3>;
 } // namespace dealmpm

@@ -95,16 +95,6 @@ namespace dealmpm
       }
   }
 
-  template <int dim>
-  void
-  ManufacturedSolution<dim>::add_nodal_forces(const StepState<dim> &state,
-                                              NodalFields<dim> &fields) const
-  {
-    add_particle_body_force(state, fields, [this, &state](const Point<dim> &X) {
-      return body_force(X, state.time);
-    });
-  }
-
   template class ManufacturedSolution<2>;
   template class ManufacturedSolution<3>;
 } // namespace dealmpm

@@ -1,6 +1,6 @@
 #pragma once
 
-#include <dealmpm/effects/effect.h>
+#include <dealmpm/effects/exact_solution.h>
 #include <dealmpm/materials/material.h>
 
 namespace dealmpm
@@ -15,7 +15,7 @@ namespace dealmpm
    * error norms. Its constants must be the material's.
    */
   template <int dim>
-  class GeneralizedVortex : public Effect<dim>
+  class GeneralizedVortex : public ExactSolution<dim>
   {
   public:
     GeneralizedVortex(const double mu,
@@ -26,22 +26,12 @@ namespace dealmpm
     void
     initialize_particles(ParticleSet<dim> &particles) const override;
 
-    void
-    add_nodal_forces(const StepState<dim> &state,
-                     NodalFields<dim>     &fields) const override;
-
-    bool
-    has_exact_solution() const override
-    {
-      return true;
-    }
 
     Tensor<1, dim>
     exact_displacement(const Point<dim> &X, const double t) const override;
 
-    /** Body force per unit mass at reference position X and time t. */
     Tensor<1, dim>
-    body_force(const Point<dim> &X, const double t) const;
+    body_force(const Point<dim> &X, const double t) const override;
 
   private:
     double mu, density, amplitude, wave_speed;

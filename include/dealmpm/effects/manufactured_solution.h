@@ -1,6 +1,6 @@
 #pragma once
 
-#include <dealmpm/effects/effect.h>
+#include <dealmpm/effects/exact_solution.h>
 #include <dealmpm/materials/material.h>
 
 namespace dealmpm
@@ -16,7 +16,7 @@ namespace dealmpm
    * square/cube needs a slip condition (u_i = 0 where X_i = 0 or 1).
    */
   template <int dim>
-  class ManufacturedSolution : public Effect<dim>
+  class ManufacturedSolution : public ExactSolution<dim>
   {
   public:
     ManufacturedSolution(const LameParameters &lame,
@@ -27,22 +27,12 @@ namespace dealmpm
     void
     initialize_particles(ParticleSet<dim> &particles) const override;
 
-    void
-    add_nodal_forces(const StepState<dim> &state,
-                     NodalFields<dim>     &fields) const override;
-
-    bool
-    has_exact_solution() const override
-    {
-      return true;
-    }
 
     Tensor<1, dim>
     exact_displacement(const Point<dim> &X, const double t) const override;
 
-    /** Body force per unit mass at reference position X and time t. */
     Tensor<1, dim>
-    body_force(const Point<dim> &X, const double t) const;
+    body_force(const Point<dim> &X, const double t) const override;
 
   private:
     static double

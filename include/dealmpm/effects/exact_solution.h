@@ -1,0 +1,36 @@
+#pragma once
+
+#include <dealmpm/effects/effect.h>
+
+namespace dealmpm
+{
+  /**
+   * An effect that brings a known motion (a manufactured solution): the body
+   * force that makes it exact, applied in a sweep over the particles, and
+   * the exact displacement for the error norms. Subclasses give the two,
+   * and the initial state in initialize_particles().
+   */
+  template <int dim>
+  class ExactSolution : public Effect<dim>
+  {
+  public:
+    /** Body force per unit mass at reference position X and time t. */
+    virtual Tensor<1, dim>
+    body_force(const Point<dim> &X, const double t) const = 0;
+
+    void
+    add_nodal_forces(const StepState<dim> &state,
+                     NodalFields<dim>     &fields) const override
+    {
+      add_particle_body_force(state, fields, [&](const Point<dim> &X) {
+        return body_force(X, state.time);
+      });
+    }
+
+    bool
+    has_exact_solution() const override
+    {
+      return true;
+    }
+  };
+} // namespace dealmpm
