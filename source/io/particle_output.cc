@@ -35,11 +35,12 @@ namespace dealmpm
     add("J", 1, DataComponentInterpretation::component_is_scalar);
     add("volume", 1, DataComponentInterpretation::component_is_scalar);
     add("mass", 1, DataComponentInterpretation::component_is_scalar);
-    const unsigned int first_internal = names.size();
-    // Internal variables: every field of the layout after the core fields.
+    // Every field of the layout after the core ones: the materials'
+    // internal variables and the kernels' and transfers' own (apic_B,
+    // domain_half_length), named as in the layout.
     std::vector<PropertyLayout::Field> internal;
     for (const auto &field : particles.layout.fields())
-      if (field.offset >= particles.fields.material + 1)
+      if (field.offset > particles.fields.material)
         {
           internal.push_back(field);
           add(field.name,
@@ -74,7 +75,6 @@ namespace dealmpm
         patch.data(c++, 0) = J;
         patch.data(c++, 0) = J * props[f.initial_volume];
         patch.data(c++, 0) = props[f.mass];
-        (void)first_internal;
         for (const auto &field : internal)
           for (unsigned int k = 0; k < field.n_components; ++k)
             patch.data(c++, 0) = props[field.offset + k];
