@@ -73,6 +73,33 @@ namespace dealmpm
     private:
       double alpha;
     };
+
+    /** The entries of an effect with a known motion: the neo-Hookean
+     * material's constants (which must equal the material's), its
+     * amplitude and its wave speed. */
+    void
+    declare_known_motion(ParameterHandler  &prm,
+                         const double       youngs_modulus,
+                         const std::string &density,
+                         const std::string &amplitude,
+                         const std::string &wave_speed,
+                         const std::string &amplitude_doc,
+                         const std::string &wave_speed_doc)
+    {
+      declare_elastic_constants(prm, youngs_modulus, 0.3);
+      prm.declare_entry("Density",
+                        density,
+                        Patterns::Anything(),
+                        "The material's reference density.");
+      prm.declare_entry("Amplitude",
+                        amplitude,
+                        Patterns::Anything(),
+                        amplitude_doc);
+      prm.declare_entry("Wave speed",
+                        wave_speed,
+                        Patterns::Anything(),
+                        wave_speed_doc);
+    }
   } // namespace
 
   std::string
@@ -127,19 +154,13 @@ namespace dealmpm
         "Amplitude, Wave speed, and the neo-Hookean material's Young's "
         "modulus, Poisson's ratio and Density).",
         [](ParameterHandler &prm) {
-          declare_elastic_constants(prm, 1e4, 0.3);
-          prm.declare_entry("Density",
-                            "1",
-                            Patterns::Anything(),
-                            "The material's reference density.");
-          prm.declare_entry("Amplitude",
-                            "0.05",
-                            Patterns::Anything(),
-                            "Displacement amplitude A.");
-          prm.declare_entry("Wave speed",
-                            "100",
-                            Patterns::Anything(),
-                            "c in sin(c pi t + phi): the period is 2 / c.");
+          declare_known_motion(prm,
+                               1e4,
+                               "1",
+                               "0.05",
+                               "100",
+                               "Displacement amplitude A.",
+                               "c in sin(c pi t + phi): the period is 2 / c.");
         },
         [](SceneReader &reader) -> std::unique_ptr<Effect<dim>> {
           return std::make_unique<ManufacturedSolution<dim>>(
@@ -156,19 +177,13 @@ namespace dealmpm
         "neo-Hookean material's Young's modulus, Poisson's ratio and "
         "Density).",
         [](ParameterHandler &prm) {
-          declare_elastic_constants(prm, 1e3, 0.3);
-          prm.declare_entry("Density",
-                            "1000",
-                            Patterns::Anything(),
-                            "The material's reference density.");
-          prm.declare_entry("Amplitude",
-                            "1",
-                            Patterns::Anything(),
-                            "A in alpha = A sin(c pi t) h(R).");
-          prm.declare_entry("Wave speed",
-                            "1",
-                            Patterns::Anything(),
-                            "c in sin(c pi t): the period is 2 / c.");
+          declare_known_motion(prm,
+                               1e3,
+                               "1000",
+                               "1",
+                               "1",
+                               "A in alpha = A sin(c pi t) h(R).",
+                               "c in sin(c pi t): the period is 2 / c.");
         },
         [](SceneReader &reader) -> std::unique_ptr<Effect<dim>> {
           if (dim != 2)

@@ -49,11 +49,6 @@ namespace dealmpm
     void
     project(std::array<NodalVector, dim> &vector) const;
 
-    std::size_t
-    n_constrained_nodes() const
-    {
-      return nodes.size();
-    }
 
   private:
     struct Node
