@@ -149,12 +149,16 @@ namespace dealmpm
     prm.declare_entry(
       "Shape function",
       "linear",
-      Patterns::Selection("linear|uGIMP|cpGIMP"),
+      Patterns::Selection(shape_function_pattern()),
       "Particle-node weights: 'linear' (the grid's Q1 functions at the "
-      "particle), 'uGIMP' (their average over a fixed particle domain of "
-      "one particle spacing: no cell-crossing noise), 'cpGIMP' (the domain "
-      "stretches with F's diagonal). GIMP needs a grid of axis-aligned "
-      "boxes; it adds dim doubles per particle.");
+      "particle; cheapest, but noisy when particles cross cells), 'uGIMP' "
+      "(their average over a fixed particle domain of one particle "
+      "spacing), 'cpGIMP' (the domain stretches with F's diagonal), 'CPDI' "
+      "(the domain is the parallelogram F maps it to; for large shear and "
+      "rotation, any quadrilateral grid), 'quadratic B-spline' (smooth, "
+      "3^dim nodes per particle; a uniform box grid without local "
+      "refinement). GIMP needs axis-aligned box cells. GIMP and CPDI add "
+      "dim doubles per particle.");
     prm.declare_entry(
       "Velocity update",
       "FLIP",
@@ -229,18 +233,15 @@ namespace dealmpm
     SceneReader reader(prm, scene_file);
     read_run_settings(reader);
     grid.create(reader);
-    if (run_settings.shape_function != "linear")
-      {
-        if (!grid.cartesian)
-          {
-            SectionScope mpm(reader, "MPM");
-            reader.fail(
-              "Shape function",
-              "'linear' on this grid: GIMP needs cells that are "
-              "axis-aligned boxes (a rectangle grid, or such a mesh)");
-          }
-        grid.find_neighbors();
-      }
+    {
+      const std::string problem =
+        kernel.setup(run_settings.shape_function, grid);
+      if (!problem.empty())
+        {
+          SectionScope mpm(reader, "MPM");
+          reader.fail("Shape function", problem);
+        }
+    }
     boundary_conditions.setup(grid,
                               BoundaryConditions<dim>::read(
                                 reader, grid.triangulation.get_boundary_ids()));
@@ -279,7 +280,7 @@ namespace dealmpm
       const std::string update = reader.get("Velocity update");
       s.scheme         = parse_update_scheme(reader.get("Stress update"));
       s.apic           = update == "APIC";
-      s.shape_function = reader.get("Shape function");
+      s.shape_function = parse_shape_function(reader.get("Shape function"));
       s.flip_fraction =
         update == "FLIP" ?
           1. :
@@ -384,8 +385,8 @@ namespace dealmpm
                                          material_models,
                                          internal,
                                          run_settings.apic,
-                                         run_settings.shape_function !=
-                                           "linear");
+                                         has_particle_domain(
+                                           run_settings.shape_function));
     particles->handler.signals.particle_lost.connect(
       [this](const typename Particles::ParticleIterator<dim> &p,
              const typename Triangulation<dim>::active_cell_iterator &) {
@@ -456,14 +457,14 @@ namespace dealmpm
   {
     {
       TimerOutput::Scope t(*computing_timer, "stencil");
-      if (run_settings.shape_function == "linear")
-        compute_linear_stencil(grid, *particles, stencil);
-      else
-        compute_gimp_stencil(grid,
-                             *particles,
-                             run_settings.shape_function == "cpGIMP",
-                             stencil);
+      kernel.compute_stencil(grid, *particles, stencil);
     }
+    if (Utilities::MPI::logical_or(stencil.failed, comm))
+      stop_on_particle(stencil.failed,
+                       stencil.failed_particle,
+                       stencil.failed_location,
+                       stencil.failure,
+                       dt);
     bool              left_cell = false;
     StressUpdate<dim> stress_update(materials, *particles, dt);
     const double      flip = run_settings.flip_fraction;
@@ -536,20 +537,9 @@ namespace dealmpm
 
     const ParticleCheck<dim> &check = stress_update.check;
     max_signal_rate = Utilities::MPI::max(check.max_signal_rate, comm);
-    const std::string failure =
-      first_message(check.failed ?
-                      "particle " + std::to_string(check.particle) + " at " +
-                        format_point(&check.location[0], dim) + ": " +
-                        check.reason :
-                      "",
-                    comm);
-    if (!failure.empty())
-      {
-        std::ostringstream message;
-        message << "step " << step + 1 << " (t = " << current_time + dt
-                << "): " << failure;
-        throw RunError(message.str());
-      }
+    if (Utilities::MPI::logical_or(check.failed, comm))
+      stop_on_particle(
+        check.failed, check.particle, check.location, check.reason, dt);
     current_time += dt;
     ++step;
     if (Utilities::MPI::logical_or(left_cell, comm))
@@ -557,6 +547,26 @@ namespace dealmpm
         TimerOutput::Scope t(*computing_timer, "relocate");
         relocate_particles();
       }
+  }
+
+  template <int dim>
+  void
+  Simulation<dim>::stop_on_particle(const bool                  failed_here,
+                                    const types::particle_index particle,
+                                    const Point<dim>           &location,
+                                    const std::string          &reason,
+                                    const double                dt) const
+  {
+    const std::string failure =
+      first_message(failed_here ?
+                      "particle " + std::to_string(particle) + " at " +
+                        format_point(&location[0], dim) + ": " + reason :
+                      "",
+                    comm);
+    std::ostringstream message;
+    message << "step " << step + 1 << " (t = " << current_time + dt
+            << "): " << failure;
+    throw RunError(message.str());
   }
 
   template <int dim>

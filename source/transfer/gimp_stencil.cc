@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "node_accumulator.h"
+
 namespace dealmpm
 {
   namespace
@@ -35,10 +37,9 @@ namespace dealmpm
     stencil.begin.resize(n_local + 1);
     std::size_t k = 0, e = 0;
 
-    // The particle's nodes, merged over the cells its domain overlaps.
-    std::vector<unsigned int>   nodes;
-    std::vector<double>         weights;
-    std::vector<Tensor<1, dim>> gradients;
+    NodeAccumulator<dim> gathered;
+    double               S[n_vertices];
+    Tensor<1, dim>       G[n_vertices];
     for (unsigned int i = 0; i < grid.cells.size(); ++i)
       for (const auto &p :
            particles.handler.particles_in_cell(grid.cells[i].cell))
@@ -53,9 +54,7 @@ namespace dealmpm
                 l[d] *=
                   std::max(props[f.deformation_gradient + d * dim + d], 1e-3);
             }
-          nodes.clear();
-          weights.clear();
-          gradients.clear();
+          gathered.clear();
           double covered = 0;
           for (const GridCell<dim> *c : grid.neighbors[i])
             {
@@ -80,65 +79,26 @@ namespace dealmpm
               if (!overlaps)
                 continue;
               covered += volume;
+              // Integrals of N_v and of grad N_v over the overlap.
               for (unsigned int v = 0; v < n_vertices; ++v)
                 {
-                  // Integral of N_v and of grad N_v over the overlap.
-                  double         S = 1;
-                  Tensor<1, dim> G;
+                  S[v] = 1;
                   for (unsigned int d = 0; d < dim; ++d)
                     {
                       const bool up = (v >> d) & 1u;
-                      S *= up ? upper[d] : lower[d];
+                      S[v] *= up ? upper[d] : lower[d];
                       double g = (up ? 1. : -1.) / (x1[d] - x0[d]) * length[d];
                       for (unsigned int b = 0; b < dim; ++b)
                         if (b != d)
                           g *= ((v >> b) & 1u) ? upper[b] : lower[b];
-                      G[d] = g;
-                    }
-                  // Onto the cell's effective nodes (hanging nodes resolved).
-                  for (unsigned int n = 0; n < c->n_nodes; ++n)
-                    {
-                      const double w =
-                        c->first_weight == numbers::invalid_unsigned_int ?
-                          (n == v ? 1. : 0.) :
-                          grid.cell_node_weights[c->first_weight +
-                                                 n * n_vertices + v];
-                      if (w == 0.)
-                        continue;
-                      const unsigned int node =
-                        grid.cell_nodes[c->first_node + n];
-                      const auto it =
-                        std::find(nodes.begin(), nodes.end(), node);
-                      if (it == nodes.end())
-                        {
-                          nodes.push_back(node);
-                          weights.push_back(w * S);
-                          gradients.push_back(w * G);
-                        }
-                      else
-                        {
-                          weights[it - nodes.begin()] += w * S;
-                          gradients[it - nodes.begin()] += w * G;
-                        }
+                      G[v][d] = g;
                     }
                 }
+              gathered.add_cell(grid, *c, S, G);
             }
           // Normalise by the covered volume: the partition of unity holds
           // even where a domain reaches past the grid.
-          stencil.begin[k] = e;
-          if (stencil.node.size() < e + nodes.size())
-            {
-              const std::size_t capacity = (e + nodes.size()) * 3 / 2 + 64;
-              stencil.node.resize(capacity);
-              stencil.N.resize(capacity);
-              stencil.grad_N.resize(capacity);
-            }
-          for (unsigned int n = 0; n < nodes.size(); ++n, ++e)
-            {
-              stencil.node[e]   = nodes[n];
-              stencil.N[e]      = weights[n] / covered;
-              stencil.grad_N[e] = gradients[n] / covered;
-            }
+          gathered.append_to(stencil, k, e, 1. / covered);
           ++k;
         }
     stencil.begin[k] = e;

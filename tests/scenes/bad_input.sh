@@ -43,6 +43,14 @@ expect 2 "custom_material.prm: Line <[0-9]+> .*Saint Venant-Kirchhoff for the en
 data="$(dirname "$scene")/../tests/data"
 expect 2 "Grid/Mesh file.*quadrilaterals \(2D\) or hexahedra \(3D\), not triangles" "$scene" "${s[@]}" \
   -s "Grid/Type=mesh file" -s "Grid/Mesh file=$data/triangles.msh"
+# Kernels that need a kind of grid say which, and what to use instead.
+expect 2 "MPM/Shape function.*B-spline needs a grid without hanging nodes" "$scene" "${s[@]}" \
+  -s "MPM/Shape function=quadratic B-spline" -s "Grid/Local refinement/Levels=1" \
+  -s "Grid/Local refinement/Lower corner=-0.25, -0.5" -s "Grid/Local refinement/Upper corner=0.25, 0.5"
+expect 2 "MPM/Shape function.*GIMP needs cells that are axis-aligned boxes" "$scene" "${s[@]}" \
+  -s "MPM/Shape function=cpGIMP" -s "Grid/Type=mesh file" -s "Grid/Mesh file=$data/distorted_square.msh"
+expect 2 "MPM/Shape function.*B-spline needs cells that are axis-aligned boxes" "$scene" "${s[@]}" \
+  -s "MPM/Shape function=quadratic B-spline" -s "Grid/Type=mesh file" -s "Grid/Mesh file=$data/kinked_square.msh"
 expect 2 "Body 1/Mesh file.*quadrilaterals" "$scene" "${s[@]}" -s "Body 1/Shape=mesh" -s "Body 1/Mesh file=$data/triangles.msh"
 expect 2 "Grid/Boundary conditions.*boundary ids the grid has \(0, 1, 2, 3\), not 4" "$scene" "${s[@]}" \
   -s "Grid/Boundary conditions=0: slip, 4: no-slip"

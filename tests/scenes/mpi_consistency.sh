@@ -7,6 +7,8 @@
 #   the other rank);
 # - cpGIMP with MUSL on the refined grid (particle domains reach into ghost
 #   cells);
+# - CPDI on the refined grid (corners located in ghost cells) and the
+#   quadratic B-spline (3 x 3 node blocks reaching into ghost cells);
 # - the 3D elastic column settling (slip walls, gravity, damping, CFL step).
 # Every run must have particles on both ranks.
 set -euo pipefail
@@ -35,4 +37,8 @@ compare_ranks refined "$disks" "${fast[@]}" -s "Grid/Local refinement/Levels=1" 
 compare_ranks gimp "$disks" "${fast[@]}" -s "MPM/Shape function=cpGIMP" -s "MPM/Stress update=MUSL" \
   -s "Grid/Local refinement/Levels=1" -s "Grid/Local refinement/Lower corner=-0.25, -0.5" \
   -s "Grid/Local refinement/Upper corner=0.25, 0.5"
+compare_ranks cpdi "$disks" "${fast[@]}" -s "MPM/Shape function=CPDI" \
+  -s "Grid/Local refinement/Levels=1" -s "Grid/Local refinement/Lower corner=-0.25, -0.5" \
+  -s "Grid/Local refinement/Upper corner=0.25, 0.5"
+compare_ranks bspline "$disks" "${fast[@]}" -s "MPM/Shape function=quadratic B-spline"
 compare_ranks column "$column" -s "Time/End time=0.3" -s "Output/Interval=0.02"

@@ -39,4 +39,14 @@ code=$?
 [ $code = 3 ] || fail "all particles gone: exit $code, expected 3"
 grep -q "no particles are left in the grid" err.txt || { fail "all particles gone: message"; cat err.txt; }
 
+# CPDI domains sheared past the cells next to theirs (the vortex twisted by
+# a full radian): a stop naming the particle, not wrong weights.
+"$dealmpm" "$(dirname "$scene")/generalized_vortex.prm" -s "Output/Directory=cpdi" \
+  -s "MPM/Shape function=CPDI" -s "Generalized vortex/Amplitude=1" \
+  -s "Grid/Cells=24, 24" -s "Output/Write particles=false" > out.txt 2> err.txt
+code=$?
+[ $code = 3 ] || fail "CPDI domain: exit $code, expected 3"
+grep -q "particle [0-9]* at (.*): its CPDI domain reaches past the cells" err.txt \
+  || { fail "CPDI domain: message"; cat err.txt; }
+
 finish run-stop

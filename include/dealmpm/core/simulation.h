@@ -13,7 +13,7 @@
 #include <dealmpm/particles/body.h>
 #include <dealmpm/particles/particle_set.h>
 #include <dealmpm/schemes/update_scheme.h>
-#include <dealmpm/transfer/stencil.h>
+#include <dealmpm/transfer/kernel.h>
 
 #include <memory>
 #include <string>
@@ -41,9 +41,9 @@ namespace dealmpm
     double       flip_fraction   = 1; ///< 1 FLIP, 0 PIC
     bool         apic            = false;
     /** "linear", "uGIMP" or "cpGIMP". */
-    std::string shape_function            = "linear";
-    double      relative_mass_threshold   = 1e-9;
-    bool        stop_when_particles_leave = false;
+    ShapeFunction shape_function            = ShapeFunction::linear;
+    double        relative_mass_threshold   = 1e-9;
+    bool          stop_when_particles_leave = false;
 
     std::string output_directory   = "output";
     double      output_interval    = 0.1;
@@ -119,6 +119,12 @@ namespace dealmpm
     {
       return fields;
     }
+    /** The scene's shape function, set up for the grid. */
+    const Kernel<dim> &
+    get_kernel() const
+    {
+      return kernel;
+    }
     /** Particles removed because they left the grid (all ranks). */
     double
     n_lost_particles() const
@@ -142,6 +148,14 @@ namespace dealmpm
     create_particles(SceneReader &reader, const SceneShape &shape);
     void
     relocate_particles();
+    /** Throw the RunError for the first particle (over all ranks) that
+     * stopped the step; collective, called when any rank has one. */
+    [[noreturn]] void
+    stop_on_particle(const bool                  failed_here,
+                     const types::particle_index particle,
+                     const Point<dim>           &location,
+                     const std::string          &reason,
+                     const double                dt) const;
     void
     write_output();
 
@@ -158,6 +172,7 @@ namespace dealmpm
     std::vector<Body<dim>>                      bodies;
     std::unique_ptr<ParticleSet<dim>>           particles;
     NodalFields<dim>                            fields;
+    Kernel<dim>                                 kernel;
     Stencil<dim>                                stencil;
     std::vector<Stage>                          stages;
     double                                      mass_threshold = 0;

@@ -5,6 +5,7 @@
 #include <dealmpm/grid/background_grid.h>
 #include <dealmpm/particles/particle_set.h>
 
+#include <string>
 #include <vector>
 
 namespace dealmpm
@@ -23,6 +24,13 @@ namespace dealmpm
     std::vector<unsigned int>   node;  ///< local index into nodal vectors
     std::vector<double>         N;
     std::vector<Tensor<1, dim>> grad_N;
+
+    /** The first particle whose weights could not be computed (a CPDI
+     * domain reaching past the cells next to its own); the run stops. */
+    bool                  failed          = false;
+    types::particle_index failed_particle = 0;
+    Point<dim>            failed_location;
+    std::string           failure;
 
     std::size_t
     n_particles() const
@@ -51,5 +59,23 @@ namespace dealmpm
   compute_gimp_stencil(const BackgroundGrid<dim> &grid,
                        const ParticleSet<dim>    &particles,
                        const bool                 follow_deformation,
+                       Stencil<dim>              &stencil);
+
+  /**
+   * CPDI weights (Sadeghirad, Brannon and Burghardt 2011): the particle
+   * domain is the parallelogram (parallelepiped) spanned by r_d = F e_d l_d
+   * around the particle; the grid's Q1 functions are interpolated
+   * multilinearly from its 2^dim corners, so S_i = mean of N_i at the
+   * corners and grad S_i = sum_c N_i(x_c) R^{-T} s_c / 2^dim (R = [r_d],
+   * s_c the corner's signs). Corners may lie in any owned or ghost cell that
+   * shares a vertex with the particle's cell; a corner just past the grid's
+   * boundary uses the nearest cell's functions extrapolated (they still sum
+   * to one and reproduce linear fields). Works on any quadrilateral or
+   * hexahedral grid, also with hanging nodes. Needs grid.find_neighbors().
+   */
+  template <int dim>
+  void
+  compute_cpdi_stencil(const BackgroundGrid<dim> &grid,
+                       const ParticleSet<dim>    &particles,
                        Stencil<dim>              &stencil);
 } // namespace dealmpm

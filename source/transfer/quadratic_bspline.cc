@@ -1,0 +1,225 @@
+#include <deal.II/base/mpi.h>
+
+#include <dealmpm/transfer/quadratic_bspline.h>
+
+#include <cmath>
+
+namespace dealmpm
+{
+  template <int dim>
+  std::string
+  QuadraticBSplineGrid<dim>::check(const BackgroundGrid<dim> &grid)
+  {
+    const MPI_Comm comm        = grid.comm;
+    bool           has_hanging = false;
+    Tensor<1, dim> h_min, h_max;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        h_min[d] = std::numeric_limits<double>::max();
+        h_max[d] = 0;
+      }
+    for (const GridCell<dim> &c : grid.cells)
+      {
+        has_hanging =
+          has_hanging || c.first_weight != numbers::invalid_unsigned_int;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            const double length =
+              c.vertices[GridCell<dim>::n_vertices - 1][d] - c.vertices[0][d];
+            h_min[d] = std::min(h_min[d], length);
+            h_max[d] = std::max(h_max[d], length);
+          }
+      }
+    if (!grid.cartesian)
+      return "cells that are axis-aligned boxes";
+    if (Utilities::MPI::logical_or(has_hanging, comm))
+      return "a grid without hanging nodes (no local refinement)";
+    double n_boxes = 1;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        const double lo = Utilities::MPI::min(h_min[d], comm);
+        const double hi = Utilities::MPI::max(h_max[d], comm);
+        if (hi - lo > 1e-10 * hi)
+          return "cells of equal size";
+        n_boxes *=
+          std::round((grid.bounding_box.get_boundary_points().second[d] -
+                      grid.bounding_box.get_boundary_points().first[d]) /
+                     hi);
+      }
+    if (n_boxes != double(grid.triangulation.n_global_active_cells()))
+      return "a grid that fills its bounding box (a rectangle or box)";
+    return "";
+  }
+
+  template <int dim>
+  void
+  QuadraticBSplineGrid<dim>::setup(const BackgroundGrid<dim> &grid)
+  {
+    const auto &[lower, upper] = grid.bounding_box.get_boundary_points();
+    origin                     = lower;
+    const GridCell<dim> &any =
+      grid.cells.empty() ? grid.ghost_cells.front() : grid.cells.front();
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        h[d] =
+          any.vertices[GridCell<dim>::n_vertices - 1][d] - any.vertices[0][d];
+        n_cells[d] = int(std::round((upper[d] - lower[d]) / h[d]));
+      }
+    const auto index_of = [&](const Point<dim> &x) {
+      std::array<int, dim> index;
+      for (unsigned int d = 0; d < dim; ++d)
+        index[d] = int(std::round((x[d] - origin[d]) / h[d]));
+      return index;
+    };
+
+    lower_index.resize(grid.cells.size());
+    block_nodes.assign(grid.cells.size() * block_size,
+                       numbers::invalid_unsigned_int);
+    for (unsigned int i = 0; i < grid.cells.size(); ++i)
+      {
+        lower_index[i] = index_of(grid.cells[i].vertices[0]);
+        for (const GridCell<dim> *c : grid.neighbors[i])
+          for (unsigned int v = 0; v < GridCell<dim>::n_vertices; ++v)
+            {
+              const std::array<int, dim> index    = index_of(c->vertices[v]);
+              unsigned int               position = 0, stride = 1;
+              for (unsigned int d = 0; d < dim; ++d, stride *= 4)
+                position += (index[d] - lower_index[i][d] + 1) * stride;
+              block_nodes[i * block_size + position] =
+                grid.cell_nodes[c->first_node + v];
+            }
+      }
+  }
+
+  namespace
+  {
+    /**
+     * The 1D weights along one direction at t (in cell lengths from the
+     * grid's origin) for a particle in the cell whose lower node is J, of n
+     * cells: up to three (position in the 4-node block, value, derivative
+     * times h).
+     */
+    inline unsigned int
+    weights_1d(const double t,
+               const int    J,
+               const int    n,
+               unsigned int position[3],
+               double       value[3],
+               double       derivative[3])
+    {
+      if (t < 0.5 || t >= n - 0.5)
+        {
+          // The half cell next to a boundary: linear hats.
+          const double s = t - J;
+          position[0]    = 1;
+          position[1]    = 2;
+          value[0]       = 1. - s;
+          value[1]       = s;
+          derivative[0]  = -1.;
+          derivative[1]  = 1.;
+          return 2;
+        }
+      const int nearest = int(std::floor(t + 0.5));
+      for (int m = -1; m <= 1; ++m)
+        {
+          const double r  = t - (nearest + m);
+          const double a  = std::abs(r);
+          position[m + 1] = nearest + m - J + 1;
+          if (a < 0.5)
+            {
+              value[m + 1]      = 0.75 - r * r;
+              derivative[m + 1] = -2. * r;
+            }
+          else
+            {
+              value[m + 1]      = 0.5 * (1.5 - a) * (1.5 - a);
+              derivative[m + 1] = -(1.5 - a) * (r > 0 ? 1. : -1.);
+            }
+        }
+      return 3;
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  compute_bspline_stencil(const BackgroundGrid<dim>       &grid,
+                          const QuadraticBSplineGrid<dim> &spline,
+                          const ParticleSet<dim>          &particles,
+                          Stencil<dim>                    &stencil)
+  {
+    constexpr unsigned int max_entries = Utilities::pow(3, dim);
+    const std::size_t n_local = particles.handler.n_locally_owned_particles();
+    stencil.begin.resize(n_local + 1);
+    if (stencil.node.size() < n_local * max_entries)
+      {
+        stencil.node.resize(n_local * max_entries);
+        stencil.N.resize(n_local * max_entries);
+        stencil.grad_N.resize(n_local * max_entries);
+      }
+    std::size_t  k = 0, e = 0;
+    unsigned int position[dim][3], count[dim];
+    double       value[dim][3], derivative[dim][3];
+    for (unsigned int i = 0; i < grid.cells.size(); ++i)
+      {
+        const unsigned int *block =
+          &spline.block_nodes[i * QuadraticBSplineGrid<dim>::block_size];
+        for (const auto &p :
+             particles.handler.particles_in_cell(grid.cells[i].cell))
+          {
+            const Point<dim> x = p.get_location();
+            for (unsigned int d = 0; d < dim; ++d)
+              count[d] = weights_1d((x[d] - spline.origin[d]) / spline.h[d],
+                                    spline.lower_index[i][d],
+                                    spline.n_cells[d],
+                                    position[d],
+                                    value[d],
+                                    derivative[d]);
+            stencil.begin[k] = e;
+            // The tensor product over the directions.
+            unsigned int       m[3] = {0, 0, 0};
+            const unsigned int n_entries =
+              count[0] * count[1] * (dim == 3 ? count[dim - 1] : 1);
+            for (unsigned int q = 0; q < n_entries; ++q, ++e)
+              {
+                unsigned int rest = q, node_position = 0, stride = 1;
+                for (unsigned int d = 0; d < dim; ++d, stride *= 4)
+                  {
+                    m[d] = rest % count[d];
+                    rest /= count[d];
+                    node_position += position[d][m[d]] * stride;
+                  }
+                double         N = 1;
+                Tensor<1, dim> grad;
+                for (unsigned int d = 0; d < dim; ++d)
+                  {
+                    N *= value[d][m[d]];
+                    double g = derivative[d][m[d]] / spline.h[d];
+                    for (unsigned int b = 0; b < dim; ++b)
+                      if (b != d)
+                        g *= value[b][m[b]];
+                    grad[d] = g;
+                  }
+                stencil.node[e]   = block[node_position];
+                stencil.N[e]      = N;
+                stencil.grad_N[e] = grad;
+              }
+            ++k;
+          }
+      }
+    stencil.begin[k] = e;
+    AssertThrow(k == n_local, ExcInternalError());
+  }
+
+  template struct QuadraticBSplineGrid<2>;
+  template struct QuadraticBSplineGrid<3>;
+  template void
+  compute_bspline_stencil(const BackgroundGrid<2> &,
+                          const QuadraticBSplineGrid<2> &,
+                          const ParticleSet<2> &,
+                          Stencil<2> &);
+  template void
+  compute_bspline_stencil(const BackgroundGrid<3> &,
+                          const QuadraticBSplineGrid<3> &,
+                          const ParticleSet<3> &,
+                          Stencil<3> &);
+} // namespace dealmpm
