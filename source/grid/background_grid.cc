@@ -352,6 +352,34 @@ namespace dealmpm
                 neighbors[i].push_back(it->second);
             }
       }
+
+    neighbor_by_side.clear();
+    if (!cartesian)
+      return;
+    constexpr unsigned int n_vertices = GridCell<dim>::n_vertices;
+    neighbor_by_side.resize(cells.size());
+    for (unsigned int i = 0; i < cells.size(); ++i)
+      {
+        const GridCell<dim> &own = cells[i];
+        neighbor_by_side[i].fill(nullptr);
+        for (const GridCell<dim> *c : neighbors[i])
+          {
+            unsigned int index = 0, stride = 1;
+            for (unsigned int d = 0; d < dim; ++d, stride *= 3)
+              {
+                const double tolerance = 1e-10 * own.h;
+                if (c->vertices[n_vertices - 1][d] <=
+                    own.vertices[0][d] + tolerance)
+                  index += 0;
+                else if (c->vertices[0][d] >=
+                         own.vertices[n_vertices - 1][d] - tolerance)
+                  index += 2 * stride;
+                else
+                  index += stride;
+              }
+            neighbor_by_side[i][index] = c;
+          }
+      }
   }
 
   template class BackgroundGrid<2>;

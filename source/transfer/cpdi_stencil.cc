@@ -11,40 +11,76 @@ namespace dealmpm
   {
     /** How far unit-cell point xi lies outside [0,1]^dim (0 inside). */
     template <int dim>
-    double
+    inline double
     distance_outside(const Point<dim> &xi)
     {
       double outside = 0;
       for (unsigned int d = 0; d < dim; ++d)
-        outside = std::max({outside, -xi[d], xi[d] - 1.});
+        {
+          outside = std::max(outside, -xi[d]);
+          outside = std::max(outside, xi[d] - 1.);
+        }
       return outside;
     }
 
+    /** Unit-cell coordinates of x in c; for boxes without the general
+     * (Newton or matrix) inverse map. */
+    template <int dim, bool boxes>
+    inline Point<dim>
+    unit_point(const GridCell<dim> &c, const Point<dim> &x)
+    {
+      if (!boxes)
+        return c.reference_point(x);
+      Point<dim> xi;
+      for (unsigned int d = 0; d < dim; ++d)
+        xi[d] = (x[d] - c.vertices[0][d]) * c.inverse_jacobian[d][d];
+      return xi;
+    }
+
     /**
-     * The cell among the particle's cell and its neighbours that holds x
-     * (the particle's own cell first: most corners are there), or, when
-     * none does, the one x is least outside of. Returns x's unit-cell
+     * The cell among the particle's (i-th) cell and its neighbours that
+     * holds x (the particle's own cell first: most corners are there), or,
+     * when none does, the one x is least outside of. Returns x's unit-cell
      * coordinates there and how far outside they are.
      */
-    template <int dim>
-    const GridCell<dim> *
-    locate(const GridCell<dim>                      &own,
-           const std::vector<const GridCell<dim> *> &neighbors,
-           const Point<dim>                         &x,
-           Point<dim>                               &xi,
-           double                                   &outside)
+    template <int dim, bool boxes>
+    inline const GridCell<dim> *
+    locate(const BackgroundGrid<dim> &grid,
+           const unsigned int         i,
+           const Point<dim>          &x,
+           Point<dim>                &xi,
+           double                    &outside)
     {
-      constexpr double tolerance = 1e-12;
-      xi                         = own.reference_point(x);
-      outside                    = distance_outside(xi);
+      constexpr double     tolerance = 1e-12;
+      const GridCell<dim> &own       = grid.cells[i];
+      xi                             = unit_point<dim, boxes>(own, x);
+      outside                        = distance_outside(xi);
       if (outside <= tolerance)
         return &own;
+      // On boxes, the side x lies on names the likely cell.
+      if (boxes)
+        {
+          unsigned int index = 0, stride = 1;
+          for (unsigned int d = 0; d < dim; ++d, stride *= 3)
+            index += (xi[d] < 0. ? 0 : (xi[d] > 1. ? 2 : 1)) * stride;
+          const GridCell<dim> *guess = grid.neighbor_by_side[i][index];
+          if (guess != nullptr)
+            {
+              const Point<dim> candidate = unit_point<dim, boxes>(*guess, x);
+              if (distance_outside(candidate) <= tolerance)
+                {
+                  xi      = candidate;
+                  outside = 0;
+                  return guess;
+                }
+            }
+        }
       const GridCell<dim> *best = &own;
-      for (const GridCell<dim> *c : neighbors)
+      for (const GridCell<dim> *c : grid.neighbors[i])
         {
           if (c == &own)
             continue;
-          const Point<dim> candidate = c->reference_point(x);
+          const Point<dim> candidate = unit_point<dim, boxes>(*c, x);
           const double     d         = distance_outside(candidate);
           if (d < outside)
             {
@@ -57,6 +93,96 @@ namespace dealmpm
         }
       return best;
     }
+
+    template <int dim, bool boxes>
+    void
+    compute(const BackgroundGrid<dim> &grid,
+            const ParticleSet<dim>    &particles,
+            Stencil<dim>              &stencil)
+    {
+      constexpr unsigned int n_corners = GridCell<dim>::n_vertices;
+      // A corner further than this (in unit-cell lengths) from every cell
+      // next to the particle's: the domain has outgrown its neighbourhood.
+      constexpr double  max_extrapolation = 0.5;
+      const CoreFields &f                 = particles.fields;
+      const std::size_t n_local = particles.handler.n_locally_owned_particles();
+      stencil.begin.resize(n_local + 1);
+      std::size_t k = 0, e = 0;
+
+      NodeAccumulator<dim> gathered;
+      // The corners' cells, each once, with the sum over its corners of
+      // N_v(x_c) / 2^dim and N_v(x_c) R^{-T} s_c / 2^dim per vertex v.
+      const GridCell<dim> *cells[n_corners];
+      double               N[n_corners][n_corners];
+      Tensor<1, dim>       G[n_corners][n_corners];
+      double               N_corner[n_corners];
+      for (unsigned int i = 0; i < grid.cells.size(); ++i)
+        for (const auto &p :
+             particles.handler.particles_in_cell(grid.cells[i].cell))
+          {
+            const auto       props = p.get_properties();
+            const Point<dim> x     = p.get_location();
+            // R's columns are the domain's half-edge vectors r_d = F e_d l_d.
+            const Tensor<2, dim> F =
+              read_tensor<dim>(&props[f.deformation_gradient]);
+            Tensor<2, dim> R;
+            for (unsigned int a = 0; a < dim; ++a)
+              for (unsigned int d = 0; d < dim; ++d)
+                R[a][d] = F[a][d] * props[f.domain_half_length + d];
+            const Tensor<2, dim> R_inverse_transpose =
+              determinant(R) > 0 ? transpose(invert(R)) : Tensor<2, dim>();
+
+            unsigned int n_cells = 0;
+            for (unsigned int corner = 0; corner < n_corners; ++corner)
+              {
+                Tensor<1, dim> sign;
+                for (unsigned int d = 0; d < dim; ++d)
+                  sign[d] = ((corner >> d) & 1u) ? 1. : -1.;
+                Point<dim>           xi;
+                double               outside;
+                const GridCell<dim> *c =
+                  locate<dim, boxes>(grid, i, x + R * sign, xi, outside);
+                if (!(outside <= max_extrapolation) && !stencil.failed)
+                  {
+                    stencil.failed          = true;
+                    stencil.failed_particle = p.get_id();
+                    stencil.failed_location = x;
+                    stencil.failure =
+                      "its CPDI domain reaches past the cells next to its "
+                      "own (stretched to more than a cell, or far past the "
+                      "grid's boundary); use more particles per cell or "
+                      "cpGIMP";
+                  }
+                unsigned int j = 0;
+                while (j < n_cells && cells[j] != c)
+                  ++j;
+                if (j == n_cells)
+                  {
+                    cells[n_cells++] = c;
+                    for (unsigned int v = 0; v < n_corners; ++v)
+                      {
+                        N[j][v] = 0;
+                        G[j][v] = Tensor<1, dim>();
+                      }
+                  }
+                q1_values<dim>(xi, N_corner, nullptr);
+                const Tensor<1, dim> g =
+                  R_inverse_transpose * sign / double(n_corners);
+                for (unsigned int v = 0; v < n_corners; ++v)
+                  {
+                    N[j][v] += N_corner[v] / n_corners;
+                    G[j][v] += N_corner[v] * g;
+                  }
+              }
+            gathered.clear();
+            for (unsigned int j = 0; j < n_cells; ++j)
+              gathered.add_cell(grid, *cells[j], N[j], G[j]);
+            gathered.append_to(stencil, k, e);
+            ++k;
+          }
+      stencil.begin[k] = e;
+      AssertThrow(k == n_local, ExcInternalError());
+    }
   } // namespace
 
   template <int dim>
@@ -65,73 +191,11 @@ namespace dealmpm
                        const ParticleSet<dim>    &particles,
                        Stencil<dim>              &stencil)
   {
-    constexpr unsigned int n_corners = GridCell<dim>::n_vertices;
-    // A corner further than this (in unit-cell lengths) from every cell next
-    // to the particle's: the domain has outgrown its neighbourhood.
-    constexpr double  max_extrapolation = 0.5;
-    const CoreFields &f                 = particles.fields;
-    const std::size_t n_local = particles.handler.n_locally_owned_particles();
-    stencil.begin.resize(n_local + 1);
     stencil.failed = false;
-    std::size_t k = 0, e = 0;
-
-    NodeAccumulator<dim> gathered;
-    double               N[n_corners];
-    Tensor<1, dim>       G[n_corners];
-    for (unsigned int i = 0; i < grid.cells.size(); ++i)
-      for (const auto &p :
-           particles.handler.particles_in_cell(grid.cells[i].cell))
-        {
-          const auto       props = p.get_properties();
-          const Point<dim> x     = p.get_location();
-          // R's columns are the domain's half-edge vectors r_d = F e_d l_d.
-          const Tensor<2, dim> F =
-            read_tensor<dim>(&props[f.deformation_gradient]);
-          Tensor<2, dim> R;
-          for (unsigned int a = 0; a < dim; ++a)
-            for (unsigned int d = 0; d < dim; ++d)
-              R[a][d] = F[a][d] * props[f.domain_half_length + d];
-          const double         det = determinant(R);
-          const Tensor<2, dim> R_inverse_transpose =
-            det > 0 ? transpose(invert(R)) : Tensor<2, dim>();
-
-          gathered.clear();
-          for (unsigned int corner = 0; corner < n_corners; ++corner)
-            {
-              Tensor<1, dim> sign;
-              for (unsigned int d = 0; d < dim; ++d)
-                sign[d] = ((corner >> d) & 1u) ? 1. : -1.;
-              const Point<dim>     x_c = x + R * sign;
-              Point<dim>           xi;
-              double               outside;
-              const GridCell<dim> *c =
-                locate(grid.cells[i], grid.neighbors[i], x_c, xi, outside);
-              if (!(outside <= max_extrapolation) && !stencil.failed)
-                {
-                  stencil.failed          = true;
-                  stencil.failed_particle = p.get_id();
-                  stencil.failed_location = x;
-                  stencil.failure =
-                    "its CPDI domain reaches past the cells next to its own "
-                    "(stretched to more than a cell, or far past the grid's "
-                    "boundary); use more particles per cell or cpGIMP";
-                }
-              // N_i(x_c) / 2^dim, and N_i(x_c) R^{-T} s_c / 2^dim.
-              q1_values<dim>(xi, N, nullptr);
-              const Tensor<1, dim> g =
-                R_inverse_transpose * sign / double(n_corners);
-              for (unsigned int v = 0; v < n_corners; ++v)
-                {
-                  G[v] = N[v] * g;
-                  N[v] /= n_corners;
-                }
-              gathered.add_cell(grid, *c, N, G);
-            }
-          gathered.append_to(stencil, k, e);
-          ++k;
-        }
-    stencil.begin[k] = e;
-    AssertThrow(k == n_local, ExcInternalError());
+    if (grid.cartesian)
+      compute<dim, true>(grid, particles, stencil);
+    else
+      compute<dim, false>(grid, particles, stencil);
   }
 
   template void

@@ -56,6 +56,13 @@ namespace dealmpm
       const unsigned int *cell_nodes = &grid.cell_nodes[c.first_node];
       if (c.first_weight == numbers::invalid_unsigned_int)
         {
+          if (nodes.empty()) // the first cell: nothing to merge with
+            {
+              nodes.assign(cell_nodes, cell_nodes + n_vertices);
+              N.assign(vertex_value, vertex_value + n_vertices);
+              grad_N.assign(vertex_gradient, vertex_gradient + n_vertices);
+              return;
+            }
           for (unsigned int v = 0; v < n_vertices; ++v)
             add(cell_nodes[v], vertex_value[v], vertex_gradient[v]);
           return;

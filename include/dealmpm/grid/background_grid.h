@@ -105,6 +105,14 @@ namespace dealmpm
      * find_neighbors(); only kernels with particle domains need it. */
     std::vector<std::vector<const GridCell<dim> *>> neighbors;
 
+    /** On grids of boxes, per locally owned cell: the neighbour lying below
+     * (0), level with (1) or above (2) it along each axis, at index
+     * sum_d side_d 3^d; nullptr where there is none. A first guess for point
+     * location (next to hanging nodes a side may hold several cells: check
+     * the guess, then search neighbors). Filled by find_neighbors(). */
+    std::vector<std::array<const GridCell<dim> *, Utilities::pow(3, dim)>>
+      neighbor_by_side;
+
     void
     find_neighbors();
     /** Local (owned + ghost) indices of the effective nodes of all cells. */
