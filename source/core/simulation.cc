@@ -443,6 +443,16 @@ namespace dealmpm
 
   template <int dim>
   double
+  Simulation<dim>::external_work() const
+  {
+    double work = 0;
+    for (const auto &effect : effects)
+      work += effect->work_done();
+    return Utilities::MPI::sum(work, comm);
+  }
+
+  template <int dim>
+  double
   Simulation<dim>::time_step() const
   {
     if (!run_settings.cfl_time_step)
@@ -489,7 +499,7 @@ namespace dealmpm
                 TimerOutput::Scope t(*computing_timer,
                                      "effect: " + effect_names[e]);
                 effects[e]->add_nodal_forces(
-                  StepState<dim>{grid, *particles, stencil, current_time},
+                  StepState<dim>{grid, *particles, stencil, current_time, dt},
                   fields);
               }
             // Damping-like effects act on the total force.
@@ -536,7 +546,15 @@ namespace dealmpm
         }
 
     const ParticleCheck<dim> &check = stress_update.check;
-    max_signal_rate = Utilities::MPI::max(check.max_signal_rate, comm);
+    {
+      // One reduction for both: min of (-rate, J).
+      double extremes[2] = {-check.max_signal_rate, check.min_J};
+      Utilities::MPI::min(ArrayView<const double>(extremes, 2),
+                          comm,
+                          ArrayView<double>(extremes, 2));
+      max_signal_rate = -extremes[0];
+      accuracy.observe_step(extremes[1], dt * max_signal_rate);
+    }
     if (Utilities::MPI::logical_or(check.failed, comm))
       stop_on_particle(
         check.failed, check.particle, check.location, check.reason, dt);
@@ -677,7 +695,9 @@ namespace dealmpm
             << " to " << most << " particles per rank); output in "
             << s.output_directory << "/" << std::endl;
     write_output();
-    stats.write_row(0, 0., 0., initial, 0, progress.elapsed_seconds());
+    accuracy.start(initial);
+    stats.write_row(
+      0, 0., 0., initial, 0., accuracy.report(), 0, progress.elapsed_seconds());
 
     double       next_output    = s.output_interval;
     double       particle_steps = 0;
@@ -722,10 +742,15 @@ namespace dealmpm
                 (std::floor(current_time / s.output_interval + 1e-9) + 1) *
                 s.output_interval;
             write_output();
+            const Statistics now  = statistics();
+            const double     work = external_work();
+            accuracy.observe(now, work);
             stats.write_row(step,
                             current_time,
                             dt,
-                            statistics(),
+                            now,
+                            work,
+                            accuracy.report(),
                             lost_particles,
                             progress.elapsed_seconds());
           }
@@ -735,6 +760,7 @@ namespace dealmpm
     if (s.verbose)
       {
         computing_timer->print_summary();
+        pcout << "dealmpm: " << accuracy.report() << std::endl;
         const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
         const double       rate =
           stepping_time > 0 ? particle_steps / stepping_time : 0;

@@ -18,6 +18,7 @@ namespace dealmpm
     if (dim == 3)
       out << ",momentum_z";
     out << ",kinetic_energy,strain_energy,gravitational_energy,total_energy,"
+           "external_work,energy_drift,momentum_drift,mass_loss,min_J,max_cfl,"
            "lost_particles,wall_time";
     if (errors)
       out << ",error_L2,error_max";
@@ -26,12 +27,14 @@ namespace dealmpm
   }
 
   void
-  StatisticsFile::write_row(const unsigned int step,
-                            const double       time,
-                            const double       dt,
-                            const Statistics  &s,
-                            const double       n_lost_particles,
-                            const double       wall_time)
+  StatisticsFile::write_row(const unsigned int    step,
+                            const double          time,
+                            const double          dt,
+                            const Statistics     &s,
+                            const double          external_work,
+                            const AccuracyReport &a,
+                            const double          n_lost_particles,
+                            const double          wall_time)
   {
     if (!out.is_open())
       return;
@@ -41,6 +44,8 @@ namespace dealmpm
       out << ',' << s.momentum[d];
     out << ',' << s.kinetic_energy << ',' << s.strain_energy << ','
         << s.gravitational_energy << ',' << s.total_energy() << ','
+        << external_work << ',' << a.energy_drift << ',' << a.momentum_drift
+        << ',' << a.mass_loss << ',' << a.min_J << ',' << a.max_cfl << ','
         << n_lost_particles << ',' << wall_time;
     if (errors)
       out << ',' << s.error_L2 << ',' << s.error_max;

@@ -18,7 +18,7 @@ done
 for field in nodal_mass nodal_velocity_x level mpi_rank; do
   grep -q "Name=\"$field\"" out/grid_00002.0.vtu || fail "grid field $field missing"
 done
-header="step,time,dt,n_particles,mass,momentum_x,momentum_y,kinetic_energy,strain_energy,gravitational_energy,total_energy,lost_particles,wall_time"
+header="step,time,dt,n_particles,mass,momentum_x,momentum_y,kinetic_energy,strain_energy,gravitational_energy,total_energy,external_work,energy_drift,momentum_drift,mass_loss,min_J,max_cfl,lost_particles,wall_time"
 [ "$(head -1 out/statistics.csv)" = "$header" ] || fail "statistics header: $(head -1 out/statistics.csv)"
 [ "$(wc -l < out/statistics.csv)" = 4 ] || fail "statistics.csv should have 3 rows"
 [ "$(head -1 out/particles_00002.csv)" = "id,x,y,vx,vy,ux,uy,J,body" ] || fail "particle CSV header"

@@ -3,6 +3,7 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
 
+#include <dealmpm/core/accuracy_report.h>
 #include <dealmpm/core/statistics.h>
 #include <dealmpm/effects/effect.h>
 #include <dealmpm/grid/background_grid.h>
@@ -119,6 +120,15 @@ namespace dealmpm
     {
       return fields;
     }
+    /** Drifts, smallest J, largest CFL number and errors so far. */
+    const AccuracyReport &
+    accuracy_report() const
+    {
+      return accuracy.report();
+    }
+    /** Work done so far by effects without a potential (all ranks). */
+    double
+    external_work() const;
     /** The scene's shape function, set up for the grid. */
     const Kernel<dim> &
     get_kernel() const
@@ -173,6 +183,7 @@ namespace dealmpm
     std::unique_ptr<ParticleSet<dim>>           particles;
     NodalFields<dim>                            fields;
     Kernel<dim>                                 kernel;
+    AccuracyMonitor                             accuracy;
     Stencil<dim>                                stencil;
     std::vector<Stage>                          stages;
     double                                      mass_threshold = 0;

@@ -26,6 +26,7 @@ namespace dealmpm
     const ParticleSet<dim>    &particles;
     const Stencil<dim>        &stencil;
     double                     time; ///< at the start of the step
+    double                     dt;
   };
 
   template <int dim>
@@ -53,6 +54,14 @@ namespace dealmpm
     adjust_nodal_forces(NodalFields<dim> & /*fields*/) const
     {}
 
+    /** Work done so far on this rank's particles by the effect's forces,
+     * for forces without a potential (the energy balance counts it). */
+    virtual double
+    work_done() const
+    {
+      return 0;
+    }
+
     /** Potential energy of a mass at x, for the statistics. */
     virtual double
     potential_energy(const double /*mass*/, const Point<dim> & /*x*/) const
@@ -79,10 +88,11 @@ namespace dealmpm
   /**
    * f_i += sum_p N_ip m_p b(X_p) for a body force per unit mass given at the
    * particles' reference positions X_p: a sweep over the particles of its
-   * own, so only scenes with such an effect pay for it.
+   * own, so only scenes with such an effect pay for it. Returns the force's
+   * power on this rank's particles, sum_p m_p b(X_p) . v_p.
    */
   template <int dim, typename BodyForce>
-  void
+  double
   add_particle_body_force(const StepState<dim> &state,
                           NodalFields<dim>     &fields,
                           const BodyForce      &body_force)
@@ -94,7 +104,8 @@ namespace dealmpm
         fields.force[d].zero_out_ghost_values();
         force[d] = fields.force[d].begin();
       }
-    std::size_t k = 0;
+    std::size_t k     = 0;
+    double      power = 0;
     for (const GridCell<dim> &c : state.grid.cells)
       for (const auto &p : state.particles.handler.particles_in_cell(c.cell))
         {
@@ -102,6 +113,7 @@ namespace dealmpm
           const Point<dim> X =
             p.get_location() - read_vector<dim>(&props[f.displacement]);
           const Tensor<1, dim> mb = props[f.mass] * body_force(X);
+          power += mb * read_vector<dim>(&props[f.velocity]);
           for (unsigned int e = state.stencil.begin[k];
                e < state.stencil.begin[k + 1];
                ++e)
@@ -111,6 +123,7 @@ namespace dealmpm
         }
     for (unsigned int d = 0; d < dim; ++d)
       fields.force[d].compress(VectorOperation::add);
+    return power;
   }
 
   /**

@@ -22,9 +22,16 @@ namespace dealmpm
     add_nodal_forces(const StepState<dim> &state,
                      NodalFields<dim>     &fields) const override
     {
-      add_particle_body_force(state, fields, [&](const Point<dim> &X) {
-        return body_force(X, state.time);
-      });
+      work += state.dt *
+              add_particle_body_force(state, fields, [&](const Point<dim> &X) {
+                return body_force(X, state.time);
+              });
+    }
+
+    double
+    work_done() const override
+    {
+      return work;
     }
 
     bool
@@ -32,5 +39,10 @@ namespace dealmpm
     {
       return true;
     }
+
+  private:
+    /** Left-point sum of the power over the steps; the nodal-force hook is
+     * const, and this bookkeeping does not change the physics. */
+    mutable double work = 0;
   };
 } // namespace dealmpm

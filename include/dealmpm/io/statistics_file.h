@@ -1,5 +1,6 @@
 #pragma once
 
+#include <dealmpm/core/accuracy_report.h>
 #include <dealmpm/core/statistics.h>
 
 #include <fstream>
@@ -19,12 +20,14 @@ namespace dealmpm
                    const bool         writer);
 
     void
-    write_row(const unsigned int step,
-              const double       time,
-              const double       dt,
-              const Statistics  &s,
-              const double       n_lost_particles,
-              const double       wall_time);
+    write_row(const unsigned int    step,
+              const double          time,
+              const double          dt,
+              const Statistics     &s,
+              const double          external_work,
+              const AccuracyReport &accuracy,
+              const double          n_lost_particles,
+              const double          wall_time);
 
   private:
     std::ofstream out;

@@ -5,6 +5,7 @@
 #include <dealmpm/particles/particle_set.h>
 
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -13,13 +14,15 @@ namespace dealmpm
 {
   /**
    * What the stress stage learns about the particles on the way: the
-   * largest signal rate (c_p + |v_p|) / h for the CFL time step, and the
-   * first particle whose state is unusable (non-finite, or J <= 0).
+   * largest signal rate (c_p + |v_p|) / h for the CFL time step, the
+   * smallest J, and the first particle whose state is unusable (non-finite, or
+   * J <= 0).
    */
   template <int dim>
   struct ParticleCheck
   {
     double                max_signal_rate = 0;
+    double                min_J           = std::numeric_limits<double>::max();
     bool                  failed          = false;
     types::particle_index particle        = 0;
     Point<dim>            location;
@@ -35,8 +38,9 @@ namespace dealmpm
             const Material<dim>           &material,
             const double                   h)
     {
-      const double J   = determinant(F);
-      double       sum = J + v.norm_square();
+      const double J = determinant(F);
+      min_J          = std::min(min_J, J);
+      double sum     = J + v.norm_square();
       for (unsigned int i = 0;
            i < SymmetricTensor<2, dim>::n_independent_components;
            ++i)

@@ -1,0 +1,68 @@
+#pragma once
+
+#include <dealmpm/core/statistics.h>
+
+#include <ostream>
+
+namespace dealmpm
+{
+  /**
+   * How far a run has strayed from what it should conserve, gathered as it
+   * goes and printed at its end (and written to every statistics.csv row):
+   * - energy drift: (E - W_ext - E_0) / max(kinetic + strain energy seen),
+   *   E the total energy (with gravity's potential), W_ext the work of
+   *   effects without a potential (manufactured body forces); damping and
+   *   walls that do work show up here too;
+   * - momentum drift: |P - P_0| / sqrt(2 M max kinetic energy seen): zero
+   *   only without external forces and walls (the colliding disks);
+   * - mass loss: (M_0 - M) / M_0, from particles that left the grid;
+   * - the smallest J and the largest particle CFL number dt (c + |v|) / h
+   *   of any particle in any step;
+   * - the displacement error norms when the scene has an exact solution.
+   */
+  struct AccuracyReport
+  {
+    double energy_drift   = 0;
+    double momentum_drift = 0;
+    double mass_loss      = 0;
+    double min_J          = 1;
+    double max_cfl        = 0;
+    bool   has_error      = false;
+    double error_L2       = 0;
+    double error_max      = 0;
+  };
+
+  class AccuracyMonitor
+  {
+  public:
+    /** Start from the initial state. */
+    void
+    start(const Statistics &initial);
+
+    /** After every step: the step's smallest J and largest particle CFL
+     * number (global values). */
+    void
+    observe_step(const double min_J, const double cfl);
+
+    /** At outputs: the statistics and the work done so far by effects
+     * without a potential. */
+    void
+    observe(const Statistics &s, const double external_work);
+
+    const AccuracyReport &
+    report() const
+    {
+      return current;
+    }
+
+  private:
+    Statistics     initial;
+    double         max_mechanical_energy = 0;
+    double         max_kinetic_energy    = 0;
+    AccuracyReport current;
+  };
+
+  /** The report as a few lines for the end of a run. */
+  std::ostream &
+  operator<<(std::ostream &out, const AccuracyReport &report);
+} // namespace dealmpm

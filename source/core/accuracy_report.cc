@@ -1,0 +1,66 @@
+#include <dealmpm/core/accuracy_report.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+
+namespace dealmpm
+{
+  void
+  AccuracyMonitor::start(const Statistics &s)
+  {
+    initial               = s;
+    max_mechanical_energy = 0;
+    max_kinetic_energy    = 0;
+    current               = AccuracyReport();
+    observe(s, 0.);
+  }
+
+  void
+  AccuracyMonitor::observe_step(const double min_J, const double cfl)
+  {
+    current.min_J   = std::min(current.min_J, min_J);
+    current.max_cfl = std::max(current.max_cfl, cfl);
+  }
+
+  void
+  AccuracyMonitor::observe(const Statistics &s, const double external_work)
+  {
+    max_mechanical_energy =
+      std::max(max_mechanical_energy, s.kinetic_energy + s.strain_energy);
+    max_kinetic_energy = std::max(max_kinetic_energy, s.kinetic_energy);
+    current.energy_drift =
+      max_mechanical_energy > 0 ?
+        (s.total_energy() - external_work - initial.total_energy()) /
+          max_mechanical_energy :
+        0.;
+    double change = 0;
+    for (unsigned int d = 0; d < 3; ++d)
+      change += std::pow(s.momentum[d] - initial.momentum[d], 2);
+    const double momentum_scale = std::sqrt(2 * s.mass * max_kinetic_energy);
+    current.momentum_drift =
+      momentum_scale > 0 ? std::sqrt(change) / momentum_scale : 0.;
+    current.mass_loss =
+      initial.mass > 0 ? (initial.mass - s.mass) / initial.mass : 0.;
+    current.has_error = s.has_error;
+    current.error_L2  = s.error_L2;
+    current.error_max = s.error_max;
+  }
+
+  std::ostream &
+  operator<<(std::ostream &out, const AccuracyReport &r)
+  {
+    const auto flags     = out.flags();
+    const auto precision = out.precision();
+    out << std::setprecision(3) << "accuracy: energy drift "
+        << 100 * r.energy_drift << " % of the largest energy, momentum drift "
+        << 100 * r.momentum_drift << " %, mass loss " << 100 * r.mass_loss
+        << " %, smallest J " << r.min_J << ", largest particle CFL "
+        << r.max_cfl;
+    if (r.has_error)
+      out << ", displacement error L2 " << r.error_L2 << " max " << r.error_max;
+    out.flags(flags);
+    out.precision(precision);
+    return out;
+  }
+} // namespace dealmpm
