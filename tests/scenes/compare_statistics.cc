@@ -66,6 +66,12 @@ main(int argc, char **argv)
         if (group(a[0][g]) == group(a[0][c]))
           for (std::size_t r = 1; r < a.size(); ++r)
             scale = std::max(scale, std::abs(std::stod(a[r][g])));
+      // Drifts and losses are already relative (differences of nearly equal
+      // sums, round-off against 1), J and CFL numbers are of order one.
+      for (const std::string ratio :
+           {"energy_drift", "momentum_drift", "mass_loss", "min_J", "max_cfl"})
+        if (a[0][c] == ratio)
+          scale = std::max(scale, 1.);
       for (std::size_t r = 1; r < a.size(); ++r)
         {
           const double x = std::stod(a[r][c]), y = std::stod(b[r][c]);
