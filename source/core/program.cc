@@ -2,9 +2,13 @@
 #include <deal.II/base/utilities.h>
 
 #include <dealmpm/core/errors.h>
+#include <dealmpm/core/parameter_file.h>
 #include <dealmpm/core/simulation.h>
+#include <dealmpm/study/study.h>
 
 #include <algorithm>
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <regex>
@@ -13,46 +17,6 @@ namespace dealmpm
 {
   namespace
   {
-    /** deal.II's multi-line exception text as one line: the part after
-     * "Additional information:" with whitespace collapsed. */
-    std::string
-    one_line(const std::exception &e)
-    {
-      std::string       text   = e.what();
-      const std::string marker = "Additional information:";
-      const auto        pos    = text.find(marker);
-      if (pos != std::string::npos)
-        text = text.substr(pos + marker.size());
-      for (const char *end : {"Stacktrace:", "-----"})
-        {
-          const auto cut = text.find(end);
-          if (cut != std::string::npos)
-            text = text.substr(0, cut);
-        }
-      text = std::regex_replace(text, std::regex("\\s+"), " ");
-      return Utilities::trim(text);
-    }
-
-    void
-    parse_file(ParameterHandler  &prm,
-               const std::string &file,
-               const bool         skip_undefined)
-    {
-      if (!std::ifstream(file))
-        throw InputError(file + ": cannot open the scene file");
-      try
-        {
-          prm.parse_input(file,
-                          "",
-                          skip_undefined,
-                          /*assert_mandatory_entries_are_found=*/false);
-        }
-      catch (const std::exception &e)
-        {
-          throw InputError(file + ": " + one_line(e));
-        }
-    }
-
     const char *usage =
       "usage: dealmpm [options] scene.prm\n"
       "       mpirun -np N dealmpm [options] scene.prm\n"
@@ -68,6 +32,11 @@ namespace dealmpm
       "                          and materials when a scene is given)\n"
       "  -s 'Section/Entry=value'  override an entry (repeatable), e.g.\n"
       "                          -s 'Grid/Cells=40, 40' -s 'Time/End time=0.5'\n"
+      "  --study study.prm [--jobs N]\n"
+      "                          run every combination of a study's axes on\n"
+      "                          its base scene (N at a time); writes\n"
+      "                          study.csv, study.md and plots (see\n"
+      "                          benchmarks/accuracy-cost/README.md)\n"
       "\n"
       "exit codes: 0 done, 1 bad command line, 2 bad scene input,\n"
       "            3 run stopped (instability, particles lost), 4 internal error\n";
@@ -80,7 +49,7 @@ namespace dealmpm
     {
       ParameterHandler prm;
       Simulation<dim>::declare_parameters(prm, shape);
-      parse_file(prm, file, false);
+      parse_parameter_file(prm, file, false);
       apply_overrides(prm, overrides);
       // Let the simulation (and its MPI-aware timer) die before an error
       // leaves this function.
@@ -98,6 +67,42 @@ namespace dealmpm
       }
       if (error)
         std::rethrow_exception(error);
+    }
+  } // namespace
+
+  namespace
+  {
+    int
+    run_study_command(int argc, char **argv)
+    {
+      std::string  file;
+      unsigned int jobs = 0;
+      for (int i = 1; i < argc; ++i)
+        {
+          const std::string arg = argv[i];
+          if (arg == "--study" && i + 1 < argc && file.empty())
+            file = argv[++i];
+          else if (arg == "--jobs" && i + 1 < argc &&
+                   std::atoi(argv[i + 1]) > 0)
+            jobs = std::atoi(argv[++i]);
+          else
+            {
+              std::cerr << "dealmpm: unknown or incomplete option '" << arg
+                        << "' with --study\n\n"
+                        << usage;
+              return 1;
+            }
+        }
+      if (file.empty())
+        {
+          std::cerr << "dealmpm: --study needs a study file\n\n" << usage;
+          return 1;
+        }
+      const std::string script = DEALMPM_PLOT_SCRIPT;
+      return run_study(file,
+                       jobs,
+                       std::filesystem::read_symlink("/proc/self/exe"),
+                       std::filesystem::exists(script) ? script : "");
     }
   } // namespace
 
@@ -146,7 +151,7 @@ namespace dealmpm
     prm.declare_entry("Number of bodies", "1", Patterns::Integer(1, 10000));
     prm.declare_entry("Number of materials", "1", Patterns::Integer(1, 10000));
     if (!file.empty())
-      parse_file(prm, file, true);
+      parse_parameter_file(prm, file, true);
     std::vector<std::string> top_level;
     for (const auto &item : overrides)
       for (const std::string name :
@@ -164,6 +169,11 @@ namespace dealmpm
   int
   run_program(int argc, char **argv)
   {
+    // A study starts dealmpm processes of its own: it runs before (and
+    // without) MPI, which does not like its processes to fork.
+    for (int i = 1; i < argc; ++i)
+      if (std::string(argv[i]) == "--study")
+        return run_study_command(argc, argv);
     Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
     const bool  root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
     std::string file;
@@ -211,7 +221,7 @@ namespace dealmpm
             else
               Simulation<3>::declare_parameters(prm, shape);
             if (!file.empty())
-              parse_file(prm, file, false);
+              parse_parameter_file(prm, file, false);
             apply_overrides(prm, overrides);
             if (root)
               prm.print_parameters(std::cout, ParameterHandler::Text);
