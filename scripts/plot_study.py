@@ -5,6 +5,7 @@ study.png/.svg: error against wall time (log-log), one marker per shape
 function, one colour per stress update, the Pareto front drawn.
 convergence.png/.svg: error against cell size for each setting with two or
 more refinements, the observed rate between the two finest in the legend.
+rates.md: those errors and observed rates as a table.
 """
 import csv
 import math
@@ -39,7 +40,7 @@ def main(study_csv, folder):
         return
 
     # Error against wall time.
-    fig, ax = plt.subplots(figsize=(7, 5))
+    fig, ax = plt.subplots(figsize=(9.5, 5.5))
     seen = set()
     for r in done:
         kernel, scheme = r["shape_function"], r["stress_update"]
@@ -59,7 +60,7 @@ def main(study_csv, folder):
     ax.set_ylabel("L2 displacement error")
     ax.set_title("Accuracy against cost")
     ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=8)
+    ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1))
     fig.tight_layout()
     for ext in ("png", "svg"):
         fig.savefig(f"{folder}/study.{ext}", dpi=120)
@@ -71,7 +72,7 @@ def main(study_csv, folder):
         key = (r["shape_function"], r["stress_update"], r["velocity_update"],
                r["particles_per_cell"], r["cfl_number"])
         groups[key].append((number(r["h"]), number(r["error_L2"])))
-    fig, ax = plt.subplots(figsize=(7, 5))
+    fig, ax = plt.subplots(figsize=(11, 6))
     for key, points in sorted(groups.items()):
         points.sort()
         if len(points) < 2:
@@ -84,15 +85,36 @@ def main(study_csv, folder):
                   color=COLOURS.get(scheme, "black"),
                   label=f"{kernel}, {scheme}, {velocity}, {ppc} ppc, "
                         f"CFL {cfl}: rate {rate:.2f}")
+    write_rates(groups, f"{folder}/rates.md")
     ax.set_xlabel("cell size h")
     ax.set_ylabel("L2 displacement error")
     ax.set_title("Convergence (rate between the two finest grids)")
     ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=6)
+    ax.legend(fontsize=6, loc="upper left", bbox_to_anchor=(1.01, 1))
     fig.tight_layout()
     for ext in ("png", "svg"):
         fig.savefig(f"{folder}/convergence.{ext}", dpi=120)
     plt.close(fig)
+
+
+def write_rates(groups, path):
+    """Errors from coarse to fine and the rate of each refinement step."""
+    sizes = sorted({h for points in groups.values() for h, _ in points},
+                   reverse=True)
+    with open(path, "w") as out:
+        out.write("| shape function | stress | velocity | ppc | CFL | "
+                  + " | ".join(f"h = {h:.4g}" for h in sizes)
+                  + " | rates (coarse to fine) |\n")
+        out.write("|---" * (6 + len(sizes)) + "|\n")
+        for key, points in sorted(groups.items()):
+            error = dict(points)
+            row = [f"{error[h]:.3g}" if h in error else "" for h in sizes]
+            known = sorted(points, reverse=True)
+            rates = [math.log(e1 / e2) / math.log(h1 / h2)
+                     for (h1, e1), (h2, e2) in zip(known, known[1:])]
+            out.write("| " + " | ".join(key) + " | " + " | ".join(row)
+                      + " | " + ", ".join(f"{r:.2f}" for r in rates)
+                      + " |\n")
 
 
 if __name__ == "__main__":
