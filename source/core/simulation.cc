@@ -346,9 +346,61 @@ namespace dealmpm
         if (std::find(effect_names.begin(), effect_names.end(), name) !=
             effect_names.end())
           reader.fail("Effects", "each effect listed once");
-        SectionScope section(reader, section_title(name));
-        effects.push_back(registry.get(name).create(reader));
-        effect_names.push_back(name);
+        {
+          SectionScope section(reader, section_title(name));
+          effects.push_back(registry.get(name).create(reader));
+          effect_names.push_back(name);
+        }
+        if (effects.back()->has_exact_solution())
+          check_known_motion_material(reader, section_title(name));
+      }
+  }
+
+  template <int dim>
+  void
+  Simulation<dim>::check_known_motion_material(SceneReader       &reader,
+                                               const std::string &effect) const
+  {
+    // The body force of a known motion is computed for a neo-Hookean
+    // material with the effect's constants: a different material would give
+    // silently wrong error norms.
+    const ParameterHandler &prm = reader.handler();
+    for (unsigned int m = 0; m < materials.size(); ++m)
+      {
+        const std::string material = "Material " + std::to_string(m + 1);
+        const auto        value    = [&](const std::vector<std::string> &path,
+                               const std::string              &entry) {
+          return Utilities::string_to_double(prm.get(path, entry));
+        };
+        if (material_models[m] != "neo-Hookean")
+          {
+            SectionScope section(reader, effect);
+            reader.fail("Young's modulus",
+                        "a scene whose materials are neo-Hookean (" + material +
+                          " is '" + material_models[m] +
+                          "'): the body force of this motion is computed for "
+                          "a neo-Hookean material");
+          }
+        const std::vector<std::string> model = {material, "neo-Hookean"};
+        for (const auto &[entry, own] :
+             {std::make_pair(std::string("Young's modulus"),
+                             value(model, "Young's modulus")),
+              std::make_pair(std::string("Poisson's ratio"),
+                             value(model, "Poisson's ratio")),
+              std::make_pair(std::string("Density"),
+                             value({material}, "Density"))})
+          {
+            const double mine = value({effect}, entry);
+            if (std::abs(mine - own) > 1e-12 * std::abs(own))
+              {
+                SectionScope       section(reader, effect);
+                std::ostringstream expected;
+                expected << "the value of " << material << "'s " << entry
+                         << " (" << own
+                         << "): the body force is computed for it";
+                reader.fail(entry, expected.str());
+              }
+          }
       }
   }
 

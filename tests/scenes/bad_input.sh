@@ -43,6 +43,13 @@ expect 2 "custom_material.prm: Line <[0-9]+> .*Saint Venant-Kirchhoff for the en
 data="$(dirname "$scene")/../tests/data"
 expect 2 "Grid/Mesh file.*quadrilaterals \(2D\) or hexahedra \(3D\), not triangles" "$scene" "${s[@]}" \
   -s "Grid/Type=mesh file" -s "Grid/Mesh file=$data/triangles.msh"
+# A known motion's body force is computed for its own neo-Hookean constants:
+# a scene whose material differs would report wrong errors, so it is refused.
+ms="$(dirname "$scene")/manufactured_solution_2d.prm"
+expect 2 "Manufactured solution/Young's modulus.*Material 1's Young's modulus \(20000\)" "$ms" "${s[@]}" \
+  -s "Material 1/neo-Hookean/Young's modulus=2e4"
+expect 2 "Manufactured solution/Young's modulus.*neo-Hookean \(Material 1 is 'linear elastic'\)" "$ms" "${s[@]}" \
+  -s "Material 1/Model=linear elastic"
 # Kernels that need a kind of grid say which, and what to use instead.
 expect 2 "MPM/Shape function.*B-spline needs a grid without hanging nodes" "$scene" "${s[@]}" \
   -s "MPM/Shape function=quadratic B-spline" -s "Grid/Local refinement/Levels=1" \

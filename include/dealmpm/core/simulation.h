@@ -155,6 +155,9 @@ namespace dealmpm
     void
     read_effects(SceneReader &reader);
     void
+    check_known_motion_material(SceneReader       &reader,
+                                const std::string &effect) const;
+    void
     create_particles(SceneReader &reader, const SceneShape &shape);
     void
     relocate_particles();
