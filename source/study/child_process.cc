@@ -1,12 +1,15 @@
 #include <dealmpm/study/child_process.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <chrono>
 #include <cstring>
 #include <fcntl.h>
 #include <spawn.h>
 #include <stdexcept>
 #include <sys/resource.h>
 #include <sys/wait.h>
+#include <thread>
 
 extern char **environ;
 
@@ -47,14 +50,24 @@ namespace dealmpm
   }
 
   pid_t
-  wait_for_child(ChildResult &result)
+  wait_for_child(ChildResult &result, const double timeout)
   {
     int           status = 0;
     struct rusage usage;
     pid_t         pid;
-    do
-      pid = wait4(-1, &status, 0, &usage);
-    while (pid < 0 && errno == EINTR);
+    const auto    deadline = std::chrono::steady_clock::now() +
+                          std::chrono::duration<double>(std::max(timeout, 0.));
+    while (true)
+      {
+        pid = wait4(-1, &status, timeout < 0 ? 0 : WNOHANG, &usage);
+        if (pid < 0 && errno == EINTR)
+          continue;
+        if (pid != 0)
+          break;
+        if (std::chrono::steady_clock::now() >= deadline)
+          return 0;
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+      }
     if (pid < 0)
       throw std::runtime_error(std::string("waiting for a run: ") +
                                std::strerror(errno));

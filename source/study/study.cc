@@ -18,6 +18,8 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <set>
+#include <signal.h>
 #include <sstream>
 
 namespace dealmpm
@@ -227,6 +229,11 @@ namespace dealmpm
                       Patterns::Integer(1, 256),
                       "Runs at once (each one process on one core; more "
                       "than the cores distorts the wall times).");
+    prm.declare_entry("Time limit per run",
+                      "0",
+                      Patterns::Double(0),
+                      "Seconds after which a run is stopped and recorded as "
+                      "such (0: no limit).");
     prm.declare_entry("Write particles",
                       "false",
                       Patterns::Bool(),
@@ -321,7 +328,8 @@ namespace dealmpm
   {
     std::vector<StudyRun>    runs;
     std::string              folder, base_scene;
-    unsigned int             jobs = 1;
+    unsigned int             jobs       = 1;
+    double                   time_limit = 0;
     std::vector<std::string> common;
     try
       {
@@ -335,6 +343,7 @@ namespace dealmpm
         base_scene = reader.get_file("Base scene", "a readable scene file");
         folder     = reader.get("Output directory");
         jobs       = jobs_option > 0 ? jobs_option : reader.get_integer("Jobs");
+        time_limit = reader.get_nonnegative("Time limit per run");
         for (const auto &item : list(reader.get("Settings"), ';'))
           common.push_back(item);
         common.push_back("Time/Time step method=CFL");
@@ -419,6 +428,7 @@ namespace dealmpm
       return std::chrono::duration<double>(Clock::now() - t).count();
     };
     std::map<pid_t, std::pair<unsigned int, Clock::time_point>> running;
+    std::set<pid_t>                                             timed_out;
     unsigned int next = 0, done = 0;
     while (done < runs.size())
       {
@@ -452,13 +462,36 @@ namespace dealmpm
             running[pid]    = {next, Clock::now()};
             ++next;
           }
+        // Wait until a run ends or the first one reaches the time limit.
+        double wait = -1;
+        if (time_limit > 0)
+          for (const auto &[pid, run] : running)
+            wait = std::max(0.,
+                            std::min(wait < 0 ? time_limit : wait,
+                                     time_limit - since(run.second)));
         ChildResult result;
-        const pid_t pid = wait_for_child(result);
-        const auto  it  = running.find(pid);
+        const pid_t pid = wait_for_child(result, wait);
+        if (pid == 0)
+          {
+            for (const auto &[id, run] : running)
+              if (since(run.second) >= time_limit && !timed_out.count(id))
+                {
+                  kill(id, SIGKILL);
+                  timed_out.insert(id);
+                }
+            continue;
+          }
+        const auto it = running.find(pid);
         if (it == running.end())
           continue;
         StudyRun &r = runs[it->second.first];
         collect(r, result, since(it->second.second));
+        if (timed_out.count(pid))
+          {
+            r.status = "stopped";
+            r.reason = "exceeded the time limit of " + number(time_limit) +
+                       " s ('Study/Time limit per run')";
+          }
         running.erase(it);
         ++done;
         const double elapsed = since(start);

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # dealmpm --study on a tiny sweep (a few seconds): study.csv has one row per
 # combination with its columns, runs that cannot work are rows with their
-# reason (APIC with MUSL is refused) rather than an aborted study, the
+# reason (APIC with MUSL is refused, a run over the time limit is stopped)
+# rather than an aborted study, the
 # table and the plots are written, and a bad study file gets one line and
 # exit code 2.
 source "$(dirname "$0")/check_lib.sh"
@@ -45,6 +46,23 @@ if /usr/bin/python3 -c "import matplotlib" 2> /dev/null; then
     [ -s tiny/$f ] || fail "study: no $f"
   done
 fi
+
+# A run over the time limit is killed and recorded; the study goes on.
+cat > limit.prm <<END
+subsection Study
+  set Base scene         = $base
+  set Output directory   = limit
+  set Refinements        = 0, 5
+  set Settings           = Grid/Cells=4, 4
+  set Time limit per run = 1.5
+end
+END
+"$dealmpm" --study limit.prm > out.txt 2> err.txt
+code=$?
+[ $code = 0 ] || { fail "time limit: exit $code"; cat err.txt; }
+grep -q '^1,ok,' limit/study.csv || fail "time limit: the short run"
+grep -q '^2,stopped,.*exceeded the time limit of 1.5 s' limit/study.csv \
+  || { fail "time limit: the long run"; cat limit/study.csv; }
 
 printf 'subsection Study\n  set Base scene = nowhere.prm\nend\n' > bad.prm
 "$dealmpm" --study bad.prm > out.txt 2> err.txt

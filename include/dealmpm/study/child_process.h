@@ -22,7 +22,8 @@ namespace dealmpm
               const std::string              &stdout_file,
               const std::string              &stderr_file);
 
-  /** Wait for any child; its pid, and how it ended. */
+  /** Wait for any child, at most @p timeout seconds (negative: no limit);
+   * its pid and how it ended, or 0 when none ended in time. */
   pid_t
-  wait_for_child(ChildResult &result);
+  wait_for_child(ChildResult &result, const double timeout = -1);
 } // namespace dealmpm
