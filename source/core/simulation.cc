@@ -285,12 +285,6 @@ namespace dealmpm
         update == "FLIP" ?
           1. :
           (update == "blend" ? reader.get_double("Blend factor") : 0.);
-      if (s.apic && s.scheme == UpdateScheme::MUSL)
-        reader.fail("Velocity update",
-                    "FLIP, PIC or blend with MUSL (APIC's affine transfer "
-                    "needs the particle positions of the stencil, which "
-                    "MUSL's re-map no longer has); or Stress update = USL "
-                    "or USF");
       if (!(s.flip_fraction >= 0 && s.flip_fraction <= 1))
         reader.fail("Blend factor", "a number in [0, 1]");
       s.relative_mass_threshold =
@@ -520,6 +514,8 @@ namespace dealmpm
     {
       TimerOutput::Scope t(*computing_timer, "stencil");
       kernel.compute_stencil(grid, *particles, stencil);
+      if (run_settings.apic)
+        record_positions(grid, *particles, stencil);
     }
     if (Utilities::MPI::logical_or(stencil.failed, comm))
       stop_on_particle(stencil.failed,

@@ -87,6 +87,27 @@ namespace dealmpm
     AssertThrow(k == n_local, ExcInternalError());
   }
 
+  template <int dim>
+  void
+  record_positions(const BackgroundGrid<dim> &grid,
+                   const ParticleSet<dim>    &particles,
+                   Stencil<dim>              &stencil)
+  {
+    stencil.position.resize(particles.handler.n_locally_owned_particles());
+    std::size_t k = 0;
+    for (const GridCell<dim> &c : grid.cells)
+      for (const auto &p : particles.handler.particles_in_cell(c.cell))
+        stencil.position[k++] = p.get_location();
+  }
+
+  template void
+  record_positions(const BackgroundGrid<2> &,
+                   const ParticleSet<2> &,
+                   Stencil<2> &);
+  template void
+  record_positions(const BackgroundGrid<3> &,
+                   const ParticleSet<3> &,
+                   Stencil<3> &);
   template void
   compute_linear_stencil(const BackgroundGrid<2> &,
                          const ParticleSet<2> &,

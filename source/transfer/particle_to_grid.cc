@@ -31,13 +31,14 @@ namespace dealmpm
             const Tensor<1, dim> v = read_vector<dim>(&props[f.velocity]);
             // APIC: the particle carries the affine field v + C (x - x_p)
             // with C = B D^-1, B stored by G2P and D = sum N (x_i - x_p) (x)
-            // (x_i - x_p) at the current position: with this D the round
-            // trip conserves angular momentum exactly (Jiang et al. 2015).
+            // (x_i - x_p), x_p the position of the stencil (MUSL re-maps
+            // after the particles moved): with this D the round trip
+            // conserves angular momentum exactly (Jiang et al. 2015).
             Tensor<2, dim> C;
             Point<dim>     x_p;
             if (affine)
               {
-                x_p = p.get_location();
+                x_p = stencil.position[k];
                 Tensor<2, dim> D;
                 for (unsigned int e = stencil.begin[k];
                      e < stencil.begin[k + 1];

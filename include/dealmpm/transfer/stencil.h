@@ -24,6 +24,10 @@ namespace dealmpm
     std::vector<unsigned int>   node;  ///< local index into nodal vectors
     std::vector<double>         N;
     std::vector<Tensor<1, dim>> grad_N;
+    /** APIC only (empty otherwise): each particle's position when the
+     * weights were computed. The affine transfers measure x_i - x_p from
+     * it, also in MUSL's re-map after the particles have moved. */
+    std::vector<Point<dim>> position;
 
     /** The first particle whose weights could not be computed (a CPDI
      * domain reaching past the cells next to its own); the run stops. */
@@ -38,6 +42,13 @@ namespace dealmpm
       return begin.empty() ? 0 : begin.size() - 1;
     }
   };
+
+  /** Fill stencil.position (for APIC) in the stencil's particle order. */
+  template <int dim>
+  void
+  record_positions(const BackgroundGrid<dim> &grid,
+                   const ParticleSet<dim>    &particles,
+                   Stencil<dim>              &stencil);
 
   /** Linear (Q1) weights at each particle's reference location. */
   template <int dim>
