@@ -1,5 +1,7 @@
 #include <dealmpm/transfer/stencil.h>
 
+#include "node_accumulator.h"
+
 namespace dealmpm
 {
   template <int dim>
@@ -37,21 +39,7 @@ namespace dealmpm
         for (const auto &p : range)
           {
             const Point<dim> xi = p.get_reference_location();
-            for (unsigned int v = 0; v < n_vertices; ++v)
-              {
-                double value = 1;
-                for (unsigned int d = 0; d < dim; ++d)
-                  {
-                    const bool upper = (v >> d) & 1u;
-                    value *= upper ? xi[d] : 1. - xi[d];
-                    double g = upper ? 1. : -1.;
-                    for (unsigned int b = 0; b < dim; ++b)
-                      if (b != d)
-                        g *= ((v >> b) & 1u) ? xi[b] : 1. - xi[b];
-                    grad_xi[v][d] = g;
-                  }
-                N[v] = value;
-              }
+            q1_values<dim>(xi, N, grad_xi);
             const Tensor<2, dim> K =
               c.affine ? c.inverse_jacobian : c.inverse_jacobian_at(xi);
             stencil.begin[k] = e;
