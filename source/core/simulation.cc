@@ -358,14 +358,14 @@ namespace dealmpm
     // The body force of a known motion is computed for a neo-Hookean
     // material with the effect's constants: a different material would give
     // silently wrong error norms.
-    const ParameterHandler &prm = reader.handler();
+    const ParameterHandler &prm   = reader.handler();
+    const auto              value = [&](const std::vector<std::string> &path,
+                           const std::string              &entry) {
+      return Utilities::string_to_double(prm.get(path, entry));
+    };
     for (unsigned int m = 0; m < materials.size(); ++m)
       {
         const std::string material = "Material " + std::to_string(m + 1);
-        const auto        value    = [&](const std::vector<std::string> &path,
-                               const std::string              &entry) {
-          return Utilities::string_to_double(prm.get(path, entry));
-        };
         if (material_models[m] != "neo-Hookean")
           {
             SectionScope section(reader, effect);
@@ -381,8 +381,7 @@ namespace dealmpm
                              value(model, "Young's modulus")),
               std::make_pair(std::string("Poisson's ratio"),
                              value(model, "Poisson's ratio")),
-              std::make_pair(std::string("Density"),
-                             value({material}, "Density"))})
+              std::make_pair(std::string("Density"), materials[m]->density)})
           {
             const double mine = value({effect}, entry);
             if (std::abs(mine - own) > 1e-12 * std::abs(own))

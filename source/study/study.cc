@@ -330,6 +330,7 @@ namespace dealmpm
     std::string              folder, base_scene;
     unsigned int             jobs       = 1;
     double                   time_limit = 0;
+    unsigned int             n_bodies   = 1;
     std::vector<std::string> common;
     try
       {
@@ -355,7 +356,8 @@ namespace dealmpm
         // The base scene must run with the settings: check it here, once,
         // rather than in every run.
         const SceneShape shape = read_scene_shape(base_scene, common);
-        double           h     = 0;
+        n_bodies               = shape.n_bodies;
+        double h               = 0;
         try
           {
             h = shape.dim == 2 ? base_cell_size<2>(base_scene, common, shape) :
@@ -389,20 +391,6 @@ namespace dealmpm
                       r.folder = name.str();
                       runs.push_back(r);
                     }
-        for (StudyRun &r : runs)
-          for (double *x : {&r.error_L2,
-                            &r.error_max,
-                            &r.wall_time,
-                            &r.steps,
-                            &r.particles,
-                            &r.particle_steps_per_second,
-                            &r.peak_memory,
-                            &r.energy_drift,
-                            &r.momentum_drift,
-                            &r.min_J,
-                            &r.max_cfl})
-            *x = nan;
-        (void)shape;
         std::filesystem::create_directories(folder + "/runs");
       }
     catch (const InputError &e)
@@ -445,8 +433,7 @@ namespace dealmpm
             settings.push_back("MPM/Stress update=" + r.stress_update);
             settings.push_back("MPM/Velocity update=" + r.velocity_update);
             settings.push_back("Time/CFL number=" + number(r.cfl_number, 12));
-            const SceneShape shape = read_scene_shape(base_scene, common);
-            for (unsigned int b = 1; b <= shape.n_bodies; ++b)
+            for (unsigned int b = 1; b <= n_bodies; ++b)
               settings.push_back(
                 "Body " + std::to_string(b) +
                 "/Particles per cell=" + std::to_string(r.particles_per_cell));

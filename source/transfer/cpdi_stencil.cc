@@ -1,7 +1,6 @@
 #include <dealmpm/transfer/stencil.h>
 
 #include <algorithm>
-#include <limits>
 
 #include "node_accumulator.h"
 

@@ -61,12 +61,11 @@ namespace
    * its covered volume centred on it. */
   template <int dim, typename Particle>
   bool
-  domain_inside(const Simulation<dim> &simulation, const Particle &p)
+  domain_inside(Simulation<dim> &simulation, const Particle &p)
   {
-    const auto &box = simulation.background_grid().bounding_box;
-    const auto  f   = simulation.get_kernel().kind();
-    const auto &fields =
-      const_cast<Simulation<dim> &>(simulation).particle_set().fields;
+    const auto &box    = simulation.background_grid().bounding_box;
+    const auto  f      = simulation.get_kernel().kind();
+    const auto &fields = simulation.particle_set().fields;
     for (unsigned int d = 0; d < dim; ++d)
       {
         double l = p.get_properties()[fields.domain_half_length + d];

@@ -2,6 +2,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -22,9 +23,13 @@ namespace dealmpm
 
     std::string status = "not run"; ///< ok | stopped | failed
     std::string reason;
-    double      error_L2, error_max, wall_time, steps, particles,
-      particle_steps_per_second, peak_memory, energy_drift, momentum_drift,
-      min_J, max_cfl;
+    /** NaN until known (a run that failed early has none of them). */
+    static constexpr double unknown = std::numeric_limits<double>::quiet_NaN();
+    double error_L2 = unknown, error_max = unknown, wall_time = unknown,
+           steps = unknown, particles = unknown,
+           particle_steps_per_second = unknown, peak_memory = unknown,
+           energy_drift = unknown, momentum_drift = unknown, min_J = unknown,
+           max_cfl      = unknown;
     bool pareto_optimal = false;
   };
 
