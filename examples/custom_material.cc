@@ -32,6 +32,15 @@ namespace
         symmetrize(F * Tensor<2, dim>(S) * transpose(F)) / determinant(F);
     }
 
+    /** sigma_zz = S_zz / J with E_zz = 0 in plane strain. */
+    double
+    out_of_plane_stress(const Tensor<2, dim> &F,
+                        const SymmetricTensor<2, dim> &,
+                        ArrayView<const double>) const override
+    {
+      return lame.lambda * trace(green_lagrange(F)) / determinant(F);
+    }
+
     double
     wave_speed(const Tensor<2, dim> &) const override
     {

@@ -36,6 +36,15 @@ namespace dealmpm
 
   template <int dim>
   double
+  LinearElastic<dim>::out_of_plane_stress(const Tensor<2, dim> &,
+                                          const SymmetricTensor<2, dim> &stress,
+                                          ArrayView<const double>) const
+  {
+    return 0.5 * lame.lambda / (lame.lambda + lame.mu) * trace(stress);
+  }
+
+  template <int dim>
+  double
   LinearElastic<dim>::strain_energy_density(
     const Tensor<2, dim> &,
     const SymmetricTensor<2, dim> &,

@@ -41,6 +41,16 @@ namespace dealmpm
 
   template <int dim>
   double
+  NeoHookean<dim>::out_of_plane_stress(const Tensor<2, dim> &F,
+                                       const SymmetricTensor<2, dim> &,
+                                       ArrayView<const double>) const
+  {
+    const double J = determinant(F);
+    return lame.lambda * std::log(J) / J;
+  }
+
+  template <int dim>
+  double
   NeoHookean<dim>::strain_energy_density(const Tensor<2, dim> &F,
                                          const SymmetricTensor<2, dim> &,
                                          ArrayView<const double>) const

@@ -38,6 +38,14 @@ namespace dealmpm
     wave_speed(const Tensor<2, dim> &F) const override;
 
     /** The integrated stress power. */
+    /** In plane strain d sigma_zz = dt lambda tr(D) = nu d(sigma_xx +
+     * sigma_yy), so sigma_zz = nu (sigma_xx + sigma_yy) from a stress-free
+     * start. */
+    double
+    out_of_plane_stress(const Tensor<2, dim>          &F,
+                        const SymmetricTensor<2, dim> &stress,
+                        ArrayView<const double>        internal) const override;
+
     double
     strain_energy_density(const Tensor<2, dim>          &F,
                           const SymmetricTensor<2, dim> &stress,

@@ -56,6 +56,18 @@ namespace dealmpm
     virtual double
     wave_speed(const Tensor<2, dim> &F) const = 0;
 
+    /**
+     * The out-of-plane normal stress sigma_zz of a plane-strain (2D) point.
+     * It does no work (D_zz = 0), so it is not part of the step, but it
+     * belongs in the pressure and the von Mises stress a user computes.
+     * Models with history keep it among their internal variables. Only
+     * called in 2D.
+     */
+    virtual double
+    out_of_plane_stress(const Tensor<2, dim>          &F,
+                        const SymmetricTensor<2, dim> &stress,
+                        ArrayView<const double>        internal) const = 0;
+
     /** Stored energy per unit reference volume. */
     virtual double
     strain_energy_density(const Tensor<2, dim>          &F,
@@ -65,6 +77,26 @@ namespace dealmpm
     /** Reference mass density, set from the scene's material section. */
     double density = 0;
   };
+
+  /**
+   * The full 3 x 3 Cauchy stress of a point: the stress itself in 3D; in 2D
+   * (plane strain) the in-plane stress with the model's sigma_zz.
+   */
+  template <int dim>
+  SymmetricTensor<2, 3>
+  full_stress(const Material<dim>           &material,
+              const Tensor<2, dim>          &F,
+              const SymmetricTensor<2, dim> &stress,
+              ArrayView<const double>        internal)
+  {
+    SymmetricTensor<2, 3> full;
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = i; j < dim; ++j)
+        full[i][j] = stress[i][j];
+    if constexpr (dim == 2)
+      full[2][2] = material.out_of_plane_stress(F, stress, internal);
+    return full;
+  }
 
   /**
    * The table of material models. Built-in models are registered on first

@@ -27,6 +27,12 @@ namespace dealmpm
     double
     wave_speed(const Tensor<2, dim> &F) const override;
 
+    /** lambda ln(J) / J (F_zz = 1). */
+    double
+    out_of_plane_stress(const Tensor<2, dim>          &F,
+                        const SymmetricTensor<2, dim> &stress,
+                        ArrayView<const double>        internal) const override;
+
     double
     strain_energy_density(const Tensor<2, dim>          &F,
                           const SymmetricTensor<2, dim> &stress,
