@@ -183,6 +183,28 @@ namespace dealmpm
       }
   }
 
+  template <int dim>
+  void
+  BoundaryConditions<dim>::project_with_increment(
+    std::array<NodalVector, dim> &velocity,
+    std::array<NodalVector, dim> &increment) const
+  {
+    for (const Node &node : nodes)
+      {
+        Tensor<1, dim> v;
+        for (unsigned int d = 0; d < dim; ++d)
+          v[d] = velocity[d].local_element(node.local_index);
+        Tensor<1, dim> removed;
+        for (unsigned int k = 0; k < node.n_normals; ++k)
+          removed += (v * node.normals[k]) * node.normals[k];
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            velocity[d].local_element(node.local_index) -= removed[d];
+            increment[d].local_element(node.local_index) -= removed[d];
+          }
+      }
+  }
+
   template class BoundaryConditions<2>;
   template class BoundaryConditions<3>;
 } // namespace dealmpm

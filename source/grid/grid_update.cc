@@ -27,8 +27,8 @@ namespace dealmpm
             v[i] = dv[i] = 0.;
       }
 
-    boundary_conditions.project(fields.velocity);
-    boundary_conditions.project(fields.velocity_increment);
+    boundary_conditions.project_with_increment(fields.velocity,
+                                               fields.velocity_increment);
     for (unsigned int d = 0; d < dim; ++d)
       {
         fields.velocity[d].update_ghost_values();

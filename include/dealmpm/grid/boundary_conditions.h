@@ -38,17 +38,21 @@ namespace dealmpm
     setup(const BackgroundGrid<dim>                        &grid,
           const std::map<types::boundary_id, BoundaryKind> &kinds);
 
-    /**
-     * Remove the constrained components of a nodal vector field on the
-     * locally owned nodes. The grid update projects both v* and the
-     * increment v* - v: a fixed node neither moves nor passes a spurious
-     * deceleration to the FLIP update of the particles around it (as in
-     * CB-Geo mpm; projecting v* alone drags the particles next to a fixed
-     * end towards rest).
-     */
+    /** Remove the constrained components of a nodal vector field on the
+     * locally owned nodes. */
     void
     project(std::array<NodalVector, dim> &vector) const;
 
+    /**
+     * Project v* and change the increment by as much, so that the increment
+     * stays v* - p / m with v* after the condition: the wall's reaction then
+     * reaches FLIP particles as it reaches PIC ones (a particle moving into a
+     * fixed node is stopped by it; projecting the increment as well would
+     * leave it moving for ever).
+     */
+    void
+    project_with_increment(std::array<NodalVector, dim> &velocity,
+                           std::array<NodalVector, dim> &increment) const;
 
   private:
     struct Node

@@ -8,9 +8,8 @@ namespace dealmpm
   /**
    * The explicit grid update on the locally owned nodes: on active nodes
    * (mass above @p mass_threshold) v = p / m and v* = v + dt f / m; boundary
-   * conditions act on v* and on the increment v* - v that FLIP uses.
-   * Inactive nodes get zero. Ghost
-   * values are updated for G2P.
+   * conditions act on v*, and the increment FLIP uses is taken after them,
+   * v* - v. Inactive nodes get zero. Ghost values are updated for G2P.
    */
   template <int dim>
   void
