@@ -9,10 +9,10 @@ namespace dealmpm
   void
   AccuracyMonitor::start(const Statistics &s)
   {
-    initial               = s;
-    max_mechanical_energy = 0;
-    max_kinetic_energy    = 0;
-    current               = AccuracyReport();
+    initial             = s;
+    max_energy_supplied = 0;
+    max_kinetic_energy  = 0;
+    current             = AccuracyReport();
     observe(s, 0.);
   }
 
@@ -26,13 +26,18 @@ namespace dealmpm
   void
   AccuracyMonitor::observe(const Statistics &s, const double external_work)
   {
-    max_mechanical_energy =
-      std::max(max_mechanical_energy, s.kinetic_energy + s.strain_energy);
+    max_energy_supplied =
+      std::max(max_energy_supplied,
+               std::abs(external_work) + std::max(0.,
+                                                  initial.gravitational_energy -
+                                                    s.gravitational_energy));
     max_kinetic_energy = std::max(max_kinetic_energy, s.kinetic_energy);
+    const double energy_in =
+      initial.kinetic_energy + initial.strain_energy + max_energy_supplied;
     current.energy_drift =
-      max_mechanical_energy > 0 ?
+      energy_in > 0 ?
         (s.total_energy() - external_work - initial.total_energy()) /
-          max_mechanical_energy :
+          energy_in :
         0.;
     double change = 0;
     for (unsigned int d = 0; d < 3; ++d)
@@ -57,7 +62,7 @@ namespace dealmpm
     const auto flags     = out.flags();
     const auto precision = out.precision();
     out << std::setprecision(3) << "accuracy: energy drift "
-        << 100 * r.energy_drift << " % of the largest energy, momentum drift "
+        << 100 * r.energy_drift << " % of the energy put in, momentum drift "
         << 100 * r.momentum_drift << " %, mass loss " << 100 * r.mass_loss
         << " %, smallest J " << r.min_J << ", largest particle CFL "
         << r.max_cfl;

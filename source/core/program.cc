@@ -56,7 +56,7 @@ namespace dealmpm
       // leaves this function.
       std::exception_ptr error;
       {
-        Simulation<dim> simulation(prm, file, shape, MPI_COMM_WORLD);
+        Simulation<dim> simulation(prm, file, shape, MPI_COMM_WORLD, overrides);
         try
           {
             simulation.run();
@@ -115,7 +115,7 @@ namespace dealmpm
       {
         const auto equal = item.find('=');
         if (equal == std::string::npos)
-          throw InputError("command line: -s '" + item +
+          throw InputError("command line: -s '" + quote_value(item) +
                            "': expected 'Section/Entry=value'");
         const auto path =
           Utilities::split_string_list(item.substr(0, equal), '/');
@@ -123,7 +123,7 @@ namespace dealmpm
             std::any_of(path.begin(), path.end(), [](const std::string &p) {
               return p.empty();
             }))
-          throw InputError("command line: -s '" + item +
+          throw InputError("command line: -s '" + quote_value(item) +
                            "': expected 'Section/Entry=value'");
         const std::string value = Utilities::trim(item.substr(equal + 1));
         for (unsigned int i = 0; i + 1 < path.size(); ++i)
@@ -136,7 +136,8 @@ namespace dealmpm
           {
             for (unsigned int i = 0; i + 1 < path.size(); ++i)
               prm.leave_subsection();
-            throw InputError("command line: -s '" + item + "': " + one_line(e));
+            throw InputError("command line: -s '" + quote_value(item) +
+                             "': " + one_line(e));
           }
         for (unsigned int i = 0; i + 1 < path.size(); ++i)
           prm.leave_subsection();
@@ -214,6 +215,8 @@ namespace dealmpm
     try
       {
         const SceneShape shape = read_scene_shape(file, overrides);
+        if (!file.empty())
+          check_scene_text(file, shape.n_bodies, shape.n_materials);
         if (print_parameters)
           {
             ParameterHandler prm;

@@ -9,10 +9,38 @@
 
 namespace dealmpm
 {
-  SceneReader::SceneReader(ParameterHandler &prm, const std::string &file_name)
+  std::string
+  quote_value(const std::string &value)
+  {
+    constexpr std::size_t longest = 200;
+    if (value.size() <= longest)
+      return value;
+    return value.substr(0, longest) + "... (" + std::to_string(value.size()) +
+           " characters)";
+  }
+
+  std::string
+  override_path(const std::string &item)
+  {
+    const auto equal = item.find('=');
+    if (equal == std::string::npos)
+      return "";
+    std::string path;
+    for (const auto &part :
+         Utilities::split_string_list(item.substr(0, equal), '/'))
+      path += (path.empty() ? "" : "/") + part;
+    return path;
+  }
+
+  SceneReader::SceneReader(ParameterHandler               &prm,
+                           const std::string              &file_name,
+                           const std::vector<std::string> &overrides)
     : prm(prm)
     , file(file_name)
-  {}
+  {
+    for (const auto &item : overrides)
+      overridden[override_path(item)] = item;
+  }
 
   void
   SceneReader::enter(const std::string &section)
@@ -40,8 +68,12 @@ namespace dealmpm
   void
   SceneReader::fail(const std::string &entry, const std::string &expected) const
   {
+    const auto item = overridden.find(path_of(entry));
+    if (item != overridden.end())
+      throw InputError("command line: -s '" + quote_value(item->second) +
+                       "': expected " + expected);
     throw InputError(file + ": entry '" + path_of(entry) + "' = '" +
-                     prm.get(entry) + "': expected " + expected);
+                     quote_value(prm.get(entry)) + "': expected " + expected);
   }
 
   std::string

@@ -34,6 +34,15 @@ namespace dealmpm
       return s.str();
     }
 
+    /** x with 3 significant digits (messages). */
+    std::string
+    short_number(const double x)
+    {
+      std::ostringstream s;
+      s << std::setprecision(3) << x;
+      return s.str();
+    }
+
     /** The message of the lowest rank that has one, on every rank. */
     std::string
     first_message(const std::string &local, const MPI_Comm comm)
@@ -188,6 +197,33 @@ namespace dealmpm
       "statistics; 'stop': end the run with a message.");
     prm.leave_subsection();
 
+    prm.enter_subsection("Checks");
+    prm.declare_entry(
+      "Energy growth limit",
+      "0.1",
+      Patterns::Anything(),
+      "Stop the run (exit code 3) when the total energy, less the work of "
+      "external forces, has grown by more than this fraction of the energy "
+      "put in (kinetic and strain energy at the start, work of external "
+      "forces, potential energy released): energy a scheme creates. Checked "
+      "at every output and every few steps; 0: off.");
+    prm.declare_entry(
+      "Memory limit",
+      "0",
+      Patterns::Anything(),
+      "GB the run may use (all ranks together); 0: the memory available on "
+      "the machines it runs on. A scene whose estimated memory (cells and "
+      "particles, printed in the start line) exceeds it is refused before "
+      "anything big is made.");
+    prm.declare_entry(
+      "CFL warning",
+      "0.5",
+      Patterns::Anything(),
+      "With a fixed time step: warn once when a particle's CFL number "
+      "dt (c_p + |v_p|) / h passes this, in (0, 1]; past 1 the run stops "
+      "(exit code 3) and says the largest stable step.");
+    prm.leave_subsection();
+
     prm.enter_subsection("Output");
     prm.declare_entry(
       "Directory",
@@ -221,18 +257,27 @@ namespace dealmpm
   }
 
   template <int dim>
-  Simulation<dim>::Simulation(ParameterHandler  &prm,
-                              const std::string &scene_file,
-                              const SceneShape  &shape,
-                              const MPI_Comm     comm)
+  Simulation<dim>::Simulation(ParameterHandler               &prm,
+                              const std::string              &scene_file,
+                              const SceneShape               &shape,
+                              const MPI_Comm                  comm,
+                              const std::vector<std::string> &overrides)
     : comm(comm)
     , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
     , scene_file(scene_file)
     , grid(comm)
   {
-    SceneReader reader(prm, scene_file);
+    SceneReader reader(prm, scene_file, overrides);
     read_run_settings(reader);
-    grid.create(reader);
+    read_materials(reader, shape);
+    read_effects(reader);
+    for (unsigned int b = 1; b <= shape.n_bodies; ++b)
+      {
+        SectionScope section(reader, "Body " + std::to_string(b));
+        bodies.push_back(Body<dim>::read(reader, shape.n_materials));
+      }
+    grid.create(reader,
+                [&](const GridSize<dim> &size) { check_memory(reader, size); });
     {
       const std::string problem =
         kernel.setup(run_settings.shape_function, grid);
@@ -245,15 +290,12 @@ namespace dealmpm
     boundary_conditions.setup(grid,
                               BoundaryConditions<dim>::read(
                                 reader, grid.triangulation.get_boundary_ids()));
-    read_materials(reader, shape);
-    read_effects(reader);
-    create_particles(reader, shape);
+    create_particles(reader);
     fields.reinit(grid.partitioner);
     stages = stages_of(run_settings.scheme);
 
-    const ParticleCheck<dim> check =
-      check_particles(grid, materials, *particles);
-    max_signal_rate = Utilities::MPI::max(check.max_signal_rate, comm);
+    particle_check  = check_particles(grid, materials, *particles);
+    max_signal_rate = Utilities::MPI::max(particle_check.max_signal_rate, comm);
     computing_timer = std::make_unique<TimerOutput>(comm,
                                                     pcout,
                                                     TimerOutput::never,
@@ -296,6 +338,14 @@ namespace dealmpm
           "which then have no velocity");
       s.stop_when_particles_leave =
         reader.get("Particles leaving the grid") == "stop";
+    }
+    {
+      SectionScope checks(reader, "Checks");
+      s.energy_growth_limit = reader.get_nonnegative("Energy growth limit");
+      s.cfl_warning         = reader.get_double("CFL warning");
+      s.memory_limit        = reader.get_nonnegative("Memory limit") * 1e9;
+      if (!(s.cfl_warning > 0 && s.cfl_warning <= 1))
+        reader.fail("CFL warning", "a number in (0, 1]");
     }
     {
       SectionScope output(reader, "Output");
@@ -399,14 +449,35 @@ namespace dealmpm
 
   template <int dim>
   void
-  Simulation<dim>::create_particles(SceneReader      &reader,
-                                    const SceneShape &shape)
+  Simulation<dim>::check_memory(const SceneReader   &reader,
+                                const GridSize<dim> &size)
   {
-    for (unsigned int b = 1; b <= shape.n_bodies; ++b)
+    memory                 = estimate_memory(size, bodies);
+    const double limit     = run_settings.memory_limit;
+    const double available = limit > 0 ? limit : available_memory(comm);
+    if (available > 0 && memory.bytes > available)
       {
-        SectionScope section(reader, "Body " + std::to_string(b));
-        bodies.push_back(Body<dim>::read(reader, shape.n_materials));
-        const BoundingBox<dim> box = bodies.back().shape->bounding_box();
+        std::ostringstream message;
+        message << std::setprecision(3) << reader.file_name()
+                << ": the scene needs about " << memory.bytes / 1e9 << " GB ("
+                << memory.n_cells << " cells, " << memory.n_particles
+                << " particles), more than the " << available / 1e9
+                << (limit > 0 ? " GB of 'Checks/Memory limit'" :
+                                " GB available on the machine(s) of the run")
+                << ": expected fewer cells or particles per cell, or more "
+                   "machines";
+        throw InputError(message.str());
+      }
+  }
+
+  template <int dim>
+  void
+  Simulation<dim>::create_particles(SceneReader &reader)
+  {
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      {
+        SectionScope           section(reader, "Body " + std::to_string(b + 1));
+        const BoundingBox<dim> box = bodies[b].shape->bounding_box();
         const auto            &g   = grid.bounding_box.get_boundary_points();
         const auto            &s   = box.get_boundary_points();
         const double tolerance     = 1e-10 * grid.bounding_box.side_length(0);
@@ -448,22 +519,35 @@ namespace dealmpm
         const unsigned int  m = bodies[b].material;
         std::vector<double> initial(particles->n_internal[m], 0.);
         materials[m]->initialize_internal_variables(make_array_view(initial));
-        const double created =
-          Utilities::MPI::sum(double(generate_particles(bodies[b],
-                                                        b,
-                                                        materials[m]->density,
-                                                        grid,
-                                                        *particles,
-                                                        initial,
-                                                        id_stride)),
-                              comm);
-        if (created == 0)
+        const GeneratedParticles generated =
+          generate_particles(bodies,
+                             b,
+                             materials[m]->density,
+                             grid,
+                             *particles,
+                             initial,
+                             id_stride);
+        const unsigned int overlapped =
+          Utilities::MPI::min(generated.overlapped_body, comm);
+        if (overlapped != numbers::invalid_unsigned_int)
+          {
+            SectionScope section(reader, "Body " + std::to_string(b + 1));
+            reader.fail("Allow overlap",
+                        "a body that does not overlap 'Body " +
+                          std::to_string(overlapped + 1) +
+                          "' (it would be filled twice); set 'Allow overlap "
+                          "= true' in this body to let its particles replace "
+                          "those of Body " +
+                          std::to_string(overlapped + 1) + " there");
+          }
+        if (Utilities::MPI::sum(double(generated.n_created), comm) == 0)
           {
             SectionScope section(reader, "Body " + std::to_string(b + 1));
             reader.fail("Shape",
                         "a body that covers at least one particle position of "
-                        "the grid (it is smaller than the particle spacing or "
-                        "outside the grid)");
+                        "the grid (it is smaller than the particle spacing, "
+                        "outside the grid or covered by later bodies that "
+                        "replace it)");
           }
       }
     particles->handler.update_cached_numbers();
@@ -592,7 +676,8 @@ namespace dealmpm
             }
         }
 
-    const ParticleCheck<dim> &check = stress_update.check;
+    particle_check                  = stress_update.check;
+    const ParticleCheck<dim> &check = particle_check;
     {
       // One reduction for both: min of (-rate, J).
       double extremes[2] = {-check.max_signal_rate, check.min_J};
@@ -632,6 +717,76 @@ namespace dealmpm
     message << "step " << step + 1 << " (t = " << current_time + dt
             << "): " << failure;
     throw RunError(message.str());
+  }
+
+  template <int dim>
+  std::string
+  Simulation<dim>::fastest_particle() const
+  {
+    const bool here = particles->handler.n_locally_owned_particles() > 0 &&
+                      particle_check.max_signal_rate == max_signal_rate;
+    return first_message(
+      here ? "particle " + std::to_string(particle_check.fastest) + " at " +
+               format_point(&particle_check.fastest_location[0], dim) :
+             "",
+      comm);
+  }
+
+  template <int dim>
+  void
+  Simulation<dim>::check_fixed_time_step(const double dt)
+  {
+    const double cfl = dt * max_signal_rate;
+    if (cfl <= run_settings.cfl_warning || (cfl_warned && cfl <= 1))
+      return;
+    std::ostringstream text;
+    text << std::setprecision(3) << "step " << step + 1
+         << " (t = " << current_time << "): " << fastest_particle()
+         << ": the fixed time step " << dt
+         << " gives a particle CFL number dt (c + |v|) / h of " << cfl;
+    if (cfl > 1)
+      throw RunError(text.str() +
+                     " > 1, which is unstable; the largest stable step "
+                     "here is " +
+                     short_number(1. / max_signal_rate) +
+                     ": set a smaller 'Time/Time step' or 'Time/Time step "
+                     "method = CFL'");
+    pcout << "warning: " << text.str()
+          << " (above 'Checks/CFL warning' = " << run_settings.cfl_warning
+          << "; unstable above 1, at a step of "
+          << short_number(1. / max_signal_rate) << "); warned once"
+          << std::endl;
+    cfl_warned = true;
+  }
+
+  template <int dim>
+  RunError
+  Simulation<dim>::energy_growth_error() const
+  {
+    std::vector<Tensor<1, dim>> initial_velocity;
+    for (const auto &body : bodies)
+      initial_velocity.push_back(body.velocity);
+    const EnergyGain<dim> local =
+      largest_energy_gain(*particles, materials, effects, initial_velocity);
+    const double       largest = Utilities::MPI::max(local.gain, comm);
+    std::ostringstream particle;
+    particle << std::setprecision(3) << "particle " << local.particle << " at "
+             << format_point(&local.location[0], dim) << " (+" << local.gain
+             << " J)";
+    std::ostringstream message;
+    message << std::setprecision(3) << "step " << step
+            << " (t = " << current_time << "): the total energy grew by "
+            << 100 * accuracy.report().energy_drift
+            << " % of the energy put in (limit 'Checks/Energy growth limit' "
+               "= "
+            << 100 * run_settings.energy_growth_limit
+            << " %); the particle whose energy grew most: "
+            << first_message(local.gain == largest ? particle.str() : "", comm)
+            << ". Energy grows when particles cross cells and when nodes "
+               "carry little mass: try a smaller 'Time/CFL number', "
+               "'MPM/Stress update = MUSL' or a GIMP or CPDI 'MPM/Shape "
+               "function'";
+    return RunError(message.str());
   }
 
   template <int dim>
@@ -739,38 +894,44 @@ namespace dealmpm
             << grid.dof_handler.n_dofs() << " nodes, "
             << static_cast<unsigned long>(initial.n_particles) << " particles, "
             << Utilities::MPI::n_mpi_processes(comm) << " rank(s) (" << fewest
-            << " to " << most << " particles per rank); output in "
+            << " to " << most << " particles per rank), about "
+            << short_number(memory.bytes / 1e9) << " GB estimated; output in "
             << s.output_directory << "/" << std::endl;
     write_output();
     accuracy.start(initial);
     stats.write_row(
       0, 0., 0., initial, 0., accuracy.report(), 0, progress.elapsed_seconds());
 
-    double       next_output    = s.output_interval;
-    double       particle_steps = 0;
-    double       stepping_time  = 0;
-    double       dt             = 0;
-    const double time_tolerance = 1e-9 * s.end_time;
+    double       next_output      = s.output_interval;
+    double       particle_steps   = 0;
+    double       stepping_time    = 0;
+    double       dt               = 0;
+    const double time_tolerance   = 1e-9 * s.end_time;
+    const auto   with_last_output = [&](const RunError &error) {
+      return RunError(
+        std::string(error.what()) +
+        ". The last good output (t = " + std::to_string(last_output_time) +
+        ") is in " + s.output_directory + "/");
+    };
     while (current_time < s.end_time - time_tolerance &&
            (s.max_steps == 0 || step < s.max_steps))
       {
         if (particles->handler.n_global_particles() == 0)
           throw RunError("step " + std::to_string(step) +
-                         " (t = " + std::to_string(current_time) +
+                         " (t = " + short_number(current_time) +
                          "): no particles are left in the grid");
         dt = std::min(time_step(), s.end_time - current_time);
         const double n_particles = particles->handler.n_global_particles();
         const auto   start       = std::chrono::steady_clock::now();
         try
           {
+            if (!s.cfl_time_step)
+              check_fixed_time_step(dt);
             advance(dt);
           }
         catch (const RunError &error)
           {
-            throw RunError(std::string(error.what()) +
-                           ". The last good output (t = " +
-                           std::to_string(last_output_time) + ") is in " +
-                           s.output_directory + "/");
+            throw with_last_output(error);
           }
         stepping_time += std::chrono::duration<double>(
                            std::chrono::steady_clock::now() - start)
@@ -779,8 +940,24 @@ namespace dealmpm
 
         const bool last = !(current_time < s.end_time - time_tolerance) ||
                           (s.max_steps != 0 && step >= s.max_steps);
-        if (last || (s.output_interval > 0 &&
-                     current_time >= next_output - time_tolerance))
+        const bool output_due =
+          last || (s.output_interval > 0 &&
+                   current_time >= next_output - time_tolerance);
+        const bool energy_check_due =
+          s.energy_growth_limit > 0 &&
+          (output_due || step % energy_check_interval == 0);
+        Statistics now;
+        double     work = 0;
+        if (output_due || energy_check_due)
+          {
+            now  = statistics();
+            work = external_work();
+            accuracy.observe(now, work);
+            if (energy_check_due &&
+                accuracy.report().energy_drift > s.energy_growth_limit)
+              throw with_last_output(energy_growth_error());
+          }
+        if (output_due)
           {
             // The next multiple of the interval (no loop: a tiny interval
             // cannot make it spin).
@@ -789,9 +966,6 @@ namespace dealmpm
                 (std::floor(current_time / s.output_interval + 1e-9) + 1) *
                 s.output_interval;
             write_output();
-            const Statistics now  = statistics();
-            const double     work = external_work();
-            accuracy.observe(now, work);
             stats.write_row(step,
                             current_time,
                             dt,

@@ -74,6 +74,55 @@ namespace dealmpm
     return s;
   }
 
+  template <int dim>
+  EnergyGain<dim>
+  largest_energy_gain(
+    const ParticleSet<dim>                            &particles,
+    const std::vector<std::unique_ptr<Material<dim>>> &materials,
+    const std::vector<std::unique_ptr<Effect<dim>>>   &effects,
+    const std::vector<Tensor<1, dim>>                 &initial_velocity)
+  {
+    const CoreFields &f = particles.fields;
+    EnergyGain<dim>   largest;
+    for (const auto &p : particles.handler)
+      {
+        const auto           props = p.get_properties();
+        const double         m     = props[f.mass];
+        const unsigned int   mat = static_cast<unsigned int>(props[f.material]);
+        const Tensor<1, dim> v   = read_vector<dim>(&props[f.velocity]);
+        const Tensor<1, dim> v0 =
+          initial_velocity[static_cast<unsigned int>(props[f.body])];
+        const Point<dim> x = p.get_location();
+        const Point<dim> X = x - read_vector<dim>(&props[f.displacement]);
+        double           gain =
+          0.5 * m * (v.norm_square() - v0.norm_square()) +
+          props[f.initial_volume] *
+            materials[mat]->strain_energy_density(
+              read_tensor<dim>(&props[f.deformation_gradient]),
+              read_symmetric<dim>(&props[f.stress]),
+              ArrayView<const double>(&props[0] +
+                                        particles.internal_offset[mat],
+                                      particles.n_internal[mat]));
+        for (const auto &effect : effects)
+          gain +=
+            effect->potential_energy(m, x) - effect->potential_energy(m, X);
+        if (gain > largest.gain)
+          largest = {gain, p.get_id(), x};
+      }
+    return largest;
+  }
+
+  template EnergyGain<2>
+  largest_energy_gain(const ParticleSet<2> &,
+                      const std::vector<std::unique_ptr<Material<2>>> &,
+                      const std::vector<std::unique_ptr<Effect<2>>> &,
+                      const std::vector<Tensor<1, 2>> &);
+  template EnergyGain<3>
+  largest_energy_gain(const ParticleSet<3> &,
+                      const std::vector<std::unique_ptr<Material<3>>> &,
+                      const std::vector<std::unique_ptr<Effect<3>>> &,
+                      const std::vector<Tensor<1, 3>> &);
+
   template Statistics
   compute_statistics(const ParticleSet<2> &,
                      const std::vector<std::unique_ptr<Material<2>>> &,

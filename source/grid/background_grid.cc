@@ -83,7 +83,9 @@ namespace dealmpm
 
   template <int dim>
   void
-  BackgroundGrid<dim>::create(SceneReader &reader)
+  BackgroundGrid<dim>::create(
+    SceneReader                                      &reader,
+    const std::function<void(const GridSize<dim> &)> &before_allocating)
   {
     SectionScope grid(reader, "Grid");
     if (reader.get("Type") == "rectangle")
@@ -94,17 +96,21 @@ namespace dealmpm
         if (cells.size() != dim)
           reader.fail("Cells", std::to_string(dim) + " positive integers");
         std::vector<unsigned int> repetitions;
+        double                    n_coarse = 1;
         for (const double c : cells)
           {
             if (!(c >= 1 && c == static_cast<unsigned int>(c)))
               reader.fail(
                 "Cells", "positive integers (at least one cell per direction)");
             repetitions.push_back(static_cast<unsigned int>(c));
+            n_coarse *= c;
           }
         for (unsigned int d = 0; d < dim; ++d)
           if (!(upper[d] > lower[d]))
             reader.fail("Upper corner",
                         "each coordinate larger than Lower corner's");
+        before_allocating(
+          refined_size(reader, n_coarse, BoundingBox<dim>({lower, upper})));
         GridGenerator::subdivided_hyper_rectangle(
           triangulation, repetitions, lower, upper, /*colorize=*/true);
       }
@@ -130,19 +136,48 @@ namespace dealmpm
           reader.fail("Mesh file",
                       "a mesh of quadrilaterals (2D) or hexahedra (3D), not "
                       "triangles or tetrahedra");
+        before_allocating(
+          refined_size(reader,
+                       serial.n_active_cells(),
+                       BoundingBox<dim>(serial.get_vertices())));
         triangulation.copy_triangulation(serial);
       }
-    const long   global_refinements = reader.get_integer("Global refinements");
-    const double n_cells            = triangulation.n_global_active_cells() *
-                           std::pow(2., dim * global_refinements);
-    if (n_cells > 2e8)
-      reader.fail("Global refinements",
-                  "fewer refinements: this one would make " +
-                    std::to_string(static_cast<long>(n_cells)) +
-                    " cells (at most 2e8)");
-    triangulation.refine_global(global_refinements);
+    triangulation.refine_global(reader.get_integer("Global refinements"));
     refine_box(reader);
     setup();
+  }
+
+  template <int dim>
+  GridSize<dim>
+  BackgroundGrid<dim>::refined_size(SceneReader            &reader,
+                                    const double            n_coarse,
+                                    const BoundingBox<dim> &box) const
+  {
+    const long    global_refinements = reader.get_integer("Global refinements");
+    GridSize<dim> size{n_coarse * std::pow(2., dim * global_refinements), box};
+    if (size.n_cells > 2e8)
+      reader.fail(global_refinements > 0 ? "Global refinements" : "Cells",
+                  "fewer cells: the grid would have " +
+                    std::to_string(static_cast<long>(size.n_cells)) +
+                    " cells (at most 2e8)");
+    // Local refinement: the box's share of the cells, each split
+    // 2^(dim levels) times.
+    SectionScope local(reader, "Local refinement");
+    const long   levels = reader.get_integer("Levels");
+    if (levels > 0)
+      {
+        const Point<dim> lower = reader.get_point<dim>("Lower corner");
+        const Point<dim> upper = reader.get_point<dim>("Upper corner");
+        double           share = 1;
+        for (unsigned int d = 0; d < dim; ++d)
+          share *= std::clamp((std::min(upper[d], box.upper_bound(d)) -
+                               std::max(lower[d], box.lower_bound(d))) /
+                                box.side_length(d),
+                              0.,
+                              1.);
+        size.n_cells += share * size.n_cells * (std::pow(2., dim * levels) - 1);
+      }
+    return size;
   }
 
   template <int dim>

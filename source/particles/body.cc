@@ -216,6 +216,14 @@ namespace dealmpm
                       repeat_value<dim>("0"),
                       Patterns::Anything(),
                       "Initial velocity (m/s).");
+    prm.declare_entry(
+      "Allow overlap",
+      "false",
+      Patterns::Bool(),
+      "Where this body overlaps bodies listed before it, its particles "
+      "replace theirs (an inclusion, a different material in a region); "
+      "otherwise overlapping bodies are refused (they would be filled "
+      "twice, at twice the density).");
   }
 
   template <int dim>
@@ -279,21 +287,37 @@ namespace dealmpm
       reader.fail("Material",
                   "a material number from 1 to Number of materials (" +
                     std::to_string(n_materials) + ")");
-    body.material = material - 1;
-    body.velocity = reader.get_vector<dim>("Velocity");
+    body.material      = material - 1;
+    body.velocity      = reader.get_vector<dim>("Velocity");
+    body.allow_overlap = reader.get_bool("Allow overlap");
     return body;
   }
 
   template <int dim>
-  std::size_t
-  generate_particles(const Body<dim>           &body,
-                     const unsigned int         body_index,
-                     const double               density,
-                     const BackgroundGrid<dim> &grid,
-                     ParticleSet<dim>          &particles,
-                     const std::vector<double> &initial_internal_variables,
-                     const unsigned int         id_stride)
+  GeneratedParticles
+  generate_particles(const std::vector<Body<dim>> &bodies,
+                     const unsigned int            body_index,
+                     const double                  density,
+                     const BackgroundGrid<dim>    &grid,
+                     ParticleSet<dim>             &particles,
+                     const std::vector<double>    &initial_internal_variables,
+                     const unsigned int            id_stride)
   {
+    const Body<dim>   &body = bodies[body_index];
+    GeneratedParticles result;
+    // The first body before this one that contains x, or the first one
+    // after it whose particles replace this one's there.
+    const auto inside = [&](const Point<dim>  &x,
+                            const unsigned int begin,
+                            const unsigned int end,
+                            const bool         replacing_only) {
+      for (unsigned int b = begin; b < end; ++b)
+        if ((!replacing_only || bodies[b].allow_overlap) &&
+            bodies[b].shape->bounding_box().point_inside(x) &&
+            bodies[b].shape->contains(x))
+          return b;
+      return numbers::invalid_unsigned_int;
+    };
     const unsigned int n        = body.particles_per_direction;
     unsigned int       per_cell = 1;
     for (unsigned int d = 0; d < dim; ++d)
@@ -308,7 +332,6 @@ namespace dealmpm
     const CoreFields      &f = particles.fields;
     std::vector<double>    properties(particles.layout.size(), 0.);
     const BoundingBox<dim> shape_box = body.shape->bounding_box();
-    std::size_t            created   = 0;
     for (const GridCell<dim> &c : grid.cells)
       {
         const BoundingBox<dim> cell_box(
@@ -323,8 +346,13 @@ namespace dealmpm
             for (unsigned int d = 0; d < dim; ++d, rest /= n)
               xi[d] = (rest % n + 0.5) / n;
             const Point<dim> x = c.real_point(xi);
-            if (!body.shape->contains(x))
+            if (!body.shape->contains(x) ||
+                inside(x, body_index + 1, bodies.size(), true) !=
+                  numbers::invalid_unsigned_int)
               continue;
+            if (!body.allow_overlap &&
+                result.overlapped_body == numbers::invalid_unsigned_int)
+              result.overlapped_body = inside(x, 0, body_index, false);
             // |det J| at the centre of the particle's sub-cell: exact for
             // bilinear cells, so the particle volumes of a cell sum to it.
             const double volume =
@@ -357,24 +385,24 @@ namespace dealmpm
               k;
             particles.handler.insert_particle(
               x, xi, id, c.cell, make_array_view(properties));
-            ++created;
+            ++result.n_created;
           }
       }
-    return created;
+    return result;
   }
 
   template struct Body<2>;
   template struct Body<3>;
-  template std::size_t
-  generate_particles(const Body<2> &,
+  template GeneratedParticles
+  generate_particles(const std::vector<Body<2>> &,
                      unsigned int,
                      double,
                      const BackgroundGrid<2> &,
                      ParticleSet<2> &,
                      const std::vector<double> &,
                      unsigned int);
-  template std::size_t
-  generate_particles(const Body<3> &,
+  template GeneratedParticles
+  generate_particles(const std::vector<Body<3>> &,
                      unsigned int,
                      double,
                      const BackgroundGrid<3> &,

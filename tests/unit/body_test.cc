@@ -63,15 +63,46 @@ TEST(Body, MeshBodyFillsItsCells)
 
 TEST(Body, IdsStayUniqueAcrossBodiesWithDifferentPatterns)
 {
-  auto simulation = test::make_simulation<2>(
-    "subsection Grid\n set Cells = 10, 10\nend\n"
-    "subsection Body 1\n set Particles per cell = 3\nend\n"
-    "subsection Body 2\n set Particles per cell = 1\nend\n",
-    2);
+  auto simulation =
+    test::make_simulation<2>("subsection Grid\n set Cells = 10, 10\nend\n"
+                             "subsection Body 1\n set Particles per cell = 3\n"
+                             " set Upper corner = 1, 0.5\nend\n"
+                             "subsection Body 2\n set Particles per cell = 1\n"
+                             " set Lower corner = 0, 0.5\nend\n",
+                             2);
   std::set<types::particle_index> ids;
   for (const auto &p : simulation->particle_set().handler)
     ids.insert(p.get_id());
   EXPECT_EQ(simulation->particle_set().handler.n_global_particles(),
-            100u * 10u);
-  EXPECT_EQ(ids.size(), 100u * 10u);
+            50u * 9u + 50u);
+  EXPECT_EQ(ids.size(), 50u * 9u + 50u);
+}
+
+// Two bodies over the same region would fill it twice (twice the density):
+// refused with both names, unless the later one replaces the earlier one's
+// particles there (an inclusion).
+TEST(Body, OverlappingBodiesAreRefusedUnlessTheLaterOneReplaces)
+{
+  const std::string scene =
+    "subsection Grid\n set Cells = 10, 10\nend\n"
+    "subsection Body 1\n set Upper corner = 1, 0.6\nend\n"
+    "subsection Body 2\n set Lower corner = 0.2, 0.4\n"
+    " set Upper corner = 0.6, 1\n set Particles per cell = 3\n";
+  try
+    {
+      test::make_simulation<2>(scene + "end\n", 2);
+      ADD_FAILURE() << "overlapping bodies were accepted";
+    }
+  catch (const InputError &e)
+    {
+      EXPECT_NE(std::string(e.what()).find(
+                  "'Body 2/Allow overlap' = 'false': expected a body that "
+                  "does not overlap 'Body 1'"),
+                std::string::npos)
+        << e.what();
+    }
+  auto simulation =
+    test::make_simulation<2>(scene + " set Allow overlap = true\nend\n", 2);
+  // Density 1000 over the union 0.6 + 0.4 x 0.4, each place filled once.
+  EXPECT_NEAR(simulation->statistics().mass, 1000. * (0.6 + 0.16), 1e-9);
 }

@@ -9,10 +9,13 @@ namespace dealmpm
   /**
    * How far a run has strayed from what it should conserve, gathered as it
    * goes and printed at its end (and written to every statistics.csv row):
-   * - energy drift: (E - W_ext - E_0) / max(kinetic + strain energy seen),
-   *   E the total energy (with gravity's potential), W_ext the work of
-   *   effects without a potential (manufactured body forces); damping and
-   *   walls that do work show up here too;
+   * - energy drift: (E - W_ext - E_0) / E_in, E the total energy (with
+   *   gravity's potential), W_ext the work of effects without a potential
+   *   (manufactured body forces), E_in the energy the scene was given: the
+   *   kinetic and strain energy at the start plus the largest |W_ext| +
+   *   (potential energy released) seen. Damping and walls that do work show
+   *   up here too. Measured against what went in, not against the largest
+   *   energy seen, so energy a scheme creates cannot hide itself;
    * - momentum drift: |P - P_0| / sqrt(2 M max kinetic energy seen): zero
    *   only without external forces and walls (the colliding disks);
    * - mass loss: (M_0 - M) / M_0, from particles that left the grid;
@@ -57,8 +60,8 @@ namespace dealmpm
 
   private:
     Statistics     initial;
-    double         max_mechanical_energy = 0;
-    double         max_kinetic_energy    = 0;
+    double         max_energy_supplied = 0; ///< |W_ext| + potential released
+    double         max_kinetic_energy  = 0;
     AccuracyReport current;
   };
 

@@ -4,6 +4,7 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -20,7 +21,11 @@ namespace dealmpm
   class SceneReader
   {
   public:
-    SceneReader(ParameterHandler &prm, const std::string &file_name);
+    /** @p overrides: the command line's "Section/Entry=value" items, so
+     * that a bad value set there is blamed on the command line. */
+    SceneReader(ParameterHandler               &prm,
+                const std::string              &file_name,
+                const std::vector<std::string> &overrides = {});
 
     /** Enter a subsection; pair with leave(). */
     void
@@ -86,10 +91,20 @@ namespace dealmpm
     path_of(const std::string &entry) const;
 
   private:
-    ParameterHandler        &prm;
-    std::string              file;
-    std::vector<std::string> sections;
+    ParameterHandler                  &prm;
+    std::string                        file;
+    std::vector<std::string>           sections;
+    std::map<std::string, std::string> overridden; ///< path -> "-s" item
   };
+
+  /** A value as quoted in a message: cut after 200 characters. */
+  std::string
+  quote_value(const std::string &value);
+
+  /** "Section/Entry" of a "Section/Entry=value" override, spaces around
+   * the parts trimmed ("" when it has no '='). */
+  std::string
+  override_path(const std::string &item);
 
   /** RAII guard for SceneReader::enter/leave. */
   class SectionScope

@@ -4,6 +4,8 @@
 #include <deal.II/base/timer.h>
 
 #include <dealmpm/core/accuracy_report.h>
+#include <dealmpm/core/errors.h>
+#include <dealmpm/core/memory_estimate.h>
 #include <dealmpm/core/statistics.h>
 #include <dealmpm/effects/effect.h>
 #include <dealmpm/grid/background_grid.h>
@@ -11,6 +13,7 @@
 #include <dealmpm/grid/nodal_fields.h>
 #include <dealmpm/io/particle_output.h>
 #include <dealmpm/materials/material.h>
+#include <dealmpm/materials/stress_update.h>
 #include <dealmpm/particles/body.h>
 #include <dealmpm/particles/particle_set.h>
 #include <dealmpm/schemes/update_scheme.h>
@@ -45,6 +48,12 @@ namespace dealmpm
     ShapeFunction shape_function            = ShapeFunction::linear;
     double        relative_mass_threshold   = 1e-9;
     bool          stop_when_particles_leave = false;
+    /** Fraction of the energy put in; 0: no check. */
+    double energy_growth_limit = 0.1;
+    /** Fixed time step: particle CFL number that gets a warning. */
+    double cfl_warning = 0.5;
+    /** Bytes the run may use; 0: what the machines have available. */
+    double memory_limit = 0;
 
     std::string output_directory   = "output";
     double      output_interval    = 0.1;
@@ -69,10 +78,13 @@ namespace dealmpm
     static void
     declare_parameters(ParameterHandler &prm, const SceneShape &shape);
 
-    Simulation(ParameterHandler  &prm,
-               const std::string &scene_file,
-               const SceneShape  &shape,
-               const MPI_Comm     comm);
+    /** @p overrides: the command line's "Section/Entry=value" items
+     * (already applied to @p prm), for messages. */
+    Simulation(ParameterHandler               &prm,
+               const std::string              &scene_file,
+               const SceneShape               &shape,
+               const MPI_Comm                  comm,
+               const std::vector<std::string> &overrides = {});
 
     /** The whole run: output at t = 0, every interval and at the end, a
      * progress line, the timing table. */
@@ -157,8 +169,12 @@ namespace dealmpm
     void
     check_known_motion_material(SceneReader       &reader,
                                 const std::string &effect) const;
+    /** Refuse a grid (and the bodies in it) that would not fit in memory;
+     * called before the cells are made. */
     void
-    create_particles(SceneReader &reader, const SceneShape &shape);
+    check_memory(const SceneReader &reader, const GridSize<dim> &size);
+    void
+    create_particles(SceneReader &reader);
     void
     relocate_particles();
     /** Throw the RunError for the first particle (over all ranks) that
@@ -171,6 +187,21 @@ namespace dealmpm
                      const double                dt) const;
     void
     write_output();
+    /** "particle N at (x, y)": the one with the largest signal rate over all
+     * ranks (collective). */
+    std::string
+    fastest_particle() const;
+    /** A fixed step above the particle CFL limit stops the run; above the
+     * warning bound it is said once. */
+    void
+    check_fixed_time_step(const double dt);
+    /** The stop of a run whose energy grew past the limit (collective). */
+    RunError
+    energy_growth_error() const;
+
+    /** Steps between energy checks besides the outputs: a statistics sweep
+     * costs about a fifth of a step. */
+    static constexpr unsigned int energy_check_interval = 50;
 
     MPI_Comm                                    comm;
     ConditionalOStream                          pcout;
@@ -186,6 +217,7 @@ namespace dealmpm
     std::unique_ptr<ParticleSet<dim>>           particles;
     NodalFields<dim>                            fields;
     Kernel<dim>                                 kernel;
+    MemoryEstimate                              memory;
     AccuracyMonitor                             accuracy;
     Stencil<dim>                                stencil;
     std::vector<Stage>                          stages;
@@ -194,10 +226,12 @@ namespace dealmpm
      * input error propagates prints a warning about MPI. */
     std::unique_ptr<TimerOutput> computing_timer;
 
-    double       current_time    = 0;
-    unsigned int step            = 0;
-    double       max_signal_rate = 0; ///< of the last stress update
-    double       lost_particles  = 0;
+    double             current_time    = 0;
+    unsigned int       step            = 0;
+    double             max_signal_rate = 0; ///< of the last stress update
+    ParticleCheck<dim> particle_check;      ///< this rank's, of the last step
+    bool               cfl_warned     = false;
+    double             lost_particles = 0;
     std::vector<std::pair<types::particle_index, Point<dim>>> lost_this_step;
 
     unsigned int        output_counter   = 0;

@@ -6,6 +6,7 @@
 #include <dealmpm/particles/particle_set.h>
 
 #include <array>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -32,6 +33,31 @@ namespace dealmpm
       return kinetic_energy + strain_energy + gravitational_energy;
     }
   };
+
+  /** A particle and how much its energy grew since the start. */
+  template <int dim>
+  struct EnergyGain
+  {
+    double                gain     = -std::numeric_limits<double>::max();
+    types::particle_index particle = 0;
+    Point<dim>            location;
+  };
+
+  /**
+   * The particle of this rank whose energy grew most since the start: its
+   * kinetic, strain and potential energy now, minus its kinetic energy at
+   * its body's initial velocity (@p initial_velocity, per body) and its
+   * potential energy where it started (x - u). For the message of a run
+   * stopped by energy growth; a sweep over the particles, not for every
+   * step.
+   */
+  template <int dim>
+  EnergyGain<dim>
+  largest_energy_gain(
+    const ParticleSet<dim>                            &particles,
+    const std::vector<std::unique_ptr<Material<dim>>> &materials,
+    const std::vector<std::unique_ptr<Effect<dim>>>   &effects,
+    const std::vector<Tensor<1, dim>>                 &initial_velocity);
 
   template <int dim>
   Statistics

@@ -11,6 +11,7 @@
 #include <dealmpm/core/scene_reader.h>
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -59,6 +60,15 @@ namespace dealmpm
     inverse_jacobian_at(const Point<dim> &xi) const;
   };
 
+  /** The cells a grid will have and the box it fills, known before the
+   * cells are made. */
+  template <int dim>
+  struct GridSize
+  {
+    double           n_cells = 0;
+    BoundingBox<dim> box;
+  };
+
   /**
    * The background grid: a distributed triangulation (a subdivided rectangle
    * or a Gmsh mesh, optionally refined), FE_Q(1) nodes, hanging-node
@@ -75,9 +85,14 @@ namespace dealmpm
     declare_parameters(ParameterHandler &prm);
 
     /** Read the "Grid" section, build and refine the mesh, set up nodes.
-     * The reader must be at the top level. */
+     * The reader must be at the top level. @p before_allocating sees the
+     * grid's size before its cells are made (and may refuse it by
+     * throwing). */
     void
-    create(SceneReader &reader);
+    create(
+      SceneReader                                      &reader,
+      const std::function<void(const GridSize<dim> &)> &before_allocating =
+        [](const GridSize<dim> &) {});
 
     /** (Re)build DoFs, constraints and the cell data after mesh changes. */
     void
@@ -124,5 +139,11 @@ namespace dealmpm
   private:
     void
     refine_box(SceneReader &reader);
+    /** How many cells Global refinements and Local refinement make of
+     * @p n_coarse cells filling @p box; refuses more than 2e8. */
+    GridSize<dim>
+    refined_size(SceneReader            &reader,
+                 const double            n_coarse,
+                 const BoundingBox<dim> &box) const;
   };
 } // namespace dealmpm

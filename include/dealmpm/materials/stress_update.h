@@ -14,9 +14,9 @@ namespace dealmpm
 {
   /**
    * What the stress stage learns about the particles on the way: the
-   * largest signal rate (c_p + |v_p|) / h for the CFL time step, the
-   * smallest J, and the first particle whose state is unusable (non-finite, or
-   * J <= 0).
+   * largest signal rate (c_p + |v_p|) / h for the CFL time step and the
+   * particle that has it, the smallest J, and the first particle whose state
+   * is unusable (non-finite, or J <= 0).
    */
   template <int dim>
   struct ParticleCheck
@@ -27,6 +27,9 @@ namespace dealmpm
     types::particle_index particle        = 0;
     Point<dim>            location;
     std::string           reason;
+    /** The particle with the largest signal rate. */
+    types::particle_index fastest = 0;
+    Point<dim>            fastest_location;
 
     /** Fold one particle into the check. */
     template <typename Accessor>
@@ -57,8 +60,15 @@ namespace dealmpm
           "time step too large, or cell crossing and tiny nodal masses; try a "
           "smaller CFL number)");
       else
-        max_signal_rate =
-          std::max(max_signal_rate, (material.wave_speed(F) + v.norm()) / h);
+        {
+          const double rate = (material.wave_speed(F) + v.norm()) / h;
+          if (rate > max_signal_rate)
+            {
+              max_signal_rate  = rate;
+              fastest          = p.get_id();
+              fastest_location = p.get_location();
+            }
+        }
     }
 
   private:

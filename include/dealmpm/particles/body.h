@@ -37,6 +37,8 @@ namespace dealmpm
     unsigned int                particles_per_direction = 2;
     unsigned int                material                = 0; ///< 0-based
     Tensor<1, dim>              velocity;
+    /** Its particles replace those of earlier bodies where they overlap. */
+    bool allow_overlap = false;
 
     /** Declare the entries of "Body N". */
     static void
@@ -48,20 +50,30 @@ namespace dealmpm
     read(SceneReader &reader, const unsigned int n_materials);
   };
 
+  /** What generate_particles() did on this rank. */
+  struct GeneratedParticles
+  {
+    std::size_t n_created = 0;
+    /** The first earlier body one of the particles lies in (an overlap the
+     * body does not allow), or numbers::invalid_unsigned_int. */
+    unsigned int overlapped_body = numbers::invalid_unsigned_int;
+  };
+
   /**
    * Fill the locally owned cells with the particles of body number
-   * @p body_index. Ids depend only on the body, the cell's global index and
-   * the pattern, so they are the same on any number of ranks;
-   * @p id_stride, the most particles per cell of any body of the scene,
-   * keeps them apart. Returns the number of particles created on this rank.
+   * @p body_index of @p bodies, leaving out the places of later bodies that
+   * allow overlap (their particles replace these). Ids depend only on the
+   * body, the cell's global index and the pattern, so they are the same on
+   * any number of ranks; @p id_stride, the most particles per cell of any
+   * body of the scene, keeps them apart.
    */
   template <int dim>
-  std::size_t
-  generate_particles(const Body<dim>           &body,
-                     const unsigned int         body_index,
-                     const double               density,
-                     const BackgroundGrid<dim> &grid,
-                     ParticleSet<dim>          &particles,
-                     const std::vector<double> &initial_internal_variables,
-                     const unsigned int         id_stride);
+  GeneratedParticles
+  generate_particles(const std::vector<Body<dim>> &bodies,
+                     const unsigned int            body_index,
+                     const double                  density,
+                     const BackgroundGrid<dim>    &grid,
+                     ParticleSet<dim>             &particles,
+                     const std::vector<double>    &initial_internal_variables,
+                     const unsigned int            id_stride);
 } // namespace dealmpm

@@ -1,0 +1,35 @@
+#pragma once
+
+#include <deal.II/base/mpi.h>
+
+#include <dealmpm/grid/background_grid.h>
+#include <dealmpm/particles/body.h>
+
+#include <vector>
+
+namespace dealmpm
+{
+  /**
+   * What a scene will allocate, estimated from the grid's size and the
+   * bodies' bounding boxes before any cell or particle exists, so that a
+   * scene that cannot fit is refused at once instead of swapping for
+   * minutes. Bytes per cell and per particle were measured on the whole
+   * program (peak resident memory; benchmarks/README.md).
+   */
+  struct MemoryEstimate
+  {
+    double n_cells     = 0;
+    double n_particles = 0;
+    double bytes       = 0;
+  };
+
+  template <int dim>
+  MemoryEstimate
+  estimate_memory(const GridSize<dim>          &grid,
+                  const std::vector<Body<dim>> &bodies);
+
+  /** The memory the run may use: the sum, over the machines its ranks run
+   * on, of MemAvailable in /proc/meminfo (0 where that is unknown). */
+  double
+  available_memory(const MPI_Comm comm);
+} // namespace dealmpm
