@@ -909,9 +909,8 @@ namespace dealmpm
     const double time_tolerance   = 1e-9 * s.end_time;
     const auto   with_last_output = [&](const RunError &error) {
       return RunError(
-        std::string(error.what()) +
-        ". The last good output (t = " + std::to_string(last_output_time) +
-        ") is in " + s.output_directory + "/");
+        std::string(error.what()) + ". The last good output (t = " +
+        short_number(last_output_time) + ") is in " + s.output_directory + "/");
     };
     while (current_time < s.end_time - time_tolerance &&
            (s.max_steps == 0 || step < s.max_steps))

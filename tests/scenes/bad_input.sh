@@ -64,6 +64,35 @@ expect 2 "Grid/Boundary conditions.*boundary ids the grid has \(0, 1, 2, 3\), no
 expect 2 "Grid/Global refinements.*at most 2e8" "$scene" "${s[@]}" -s "Grid/Global refinements=12"
 expect 2 "command line: -s '=1': expected 'Section/Entry=value'" "$scene" -s "=1"
 expect 2 "command line: -s 'Grid/=1'" "$scene" -s "Grid/=1"
+# A scene that sets nothing would run a built-in default: refused.
+: > empty.prm
+expect 2 "empty.prm: the scene sets nothing" empty.prm
+printf '# only a comment\n\n   # and another\n' > comments.prm
+expect 2 "comments.prm: the scene sets nothing" comments.prm
+# More Body sections than 'Number of bodies': the extra section by name.
+sed 's/^set Number of bodies *= 2/set Number of bodies = 1/' "$scene" > extra_body.prm
+expect 2 "extra_body.prm: line [0-9]+: section 'Body 2' but 'Number of bodies' = 1" extra_body.prm
+# A bad value given with -s is blamed on the command line, not the file.
+expect 2 "^dealmpm: error: command line: -s 'Time/End time=-1': expected a positive number" \
+  "$scene" "${s[@]}" -s "Time/End time=-1"
+# Long values are cut in the message (a 1 MB value was echoed in full).
+long=$(head -c 3000 /dev/zero | tr '\0' x)
+expect 2 "Time/End time=x+\.\.\. \(3014 characters\)': expected a number" \
+  "$scene" "${s[@]}" -s "Time/End time=$long"
+[ "$(wc -c < err.txt)" -lt 600 ] || fail "a long -s value is echoed at length ($(wc -c < err.txt) bytes)"
+sed "s/set End time *= 3.5/set End time = $long/" "$scene" > long.prm
+expect 2 "long.prm: entry 'Time/End time' = 'x{200}\.\.\. \(3000 characters\)'" long.prm "${s[@]}"
+expect 2 "Time/Time step method=x+\.\.\. .*The string <x{200}\.\.\.> does not match" "$scene" "${s[@]}" \
+  -s "Time/Time step method=$long"
+# Overlapping bodies would be filled twice.
+expect 2 "Body 2/Allow overlap.*does not overlap 'Body 1'" "$scene" "${s[@]}" -s "Body 2/Center=-0.2, -0.2"
+# A scene too big for the machine is refused before the grid is made.
+expect 2 "the scene needs about [0-9.]+ GB \(1e\+08 cells, .* particles\), more than the" \
+  "$scene" "${s[@]}" -s "Grid/Cells=10000, 10000"
+expect 2 "more than the 0.1 GB of 'Checks/Memory limit'" "$scene" "${s[@]}" -s "Grid/Cells=400, 400" \
+  -s "Checks/Memory limit=0.1"
+expect 2 "Checks/Energy growth limit.*expected a number >= 0" "$scene" "${s[@]}" -s "Checks/Energy growth limit=-1"
+expect 2 "Checks/CFL warning.*expected a number in \(0, 1\]" "$scene" "${s[@]}" -s "Checks/CFL warning=2"
 touch afile
 expect 2 "Output/Directory.*expected a folder that can be created and written" "$scene" -s "Output/Directory=afile/sub"
 # The same under MPI must not hang (only rank 0 makes folders).

@@ -4,16 +4,40 @@
 # are removed and counted, or stop the run, as the scene says.
 source "$(dirname "$0")/check_lib.sh"
 
-# An absurd time step blows up: stop with step, particle id and location.
+# A fixed time step far above the stability limit (particle CFL 13) stops
+# at once with the fastest particle and the largest stable step.
 "$dealmpm" "$scene" -s "Output/Directory=unstable" -s "Time/Time step=0.5" \
   -s "Time/End time=100" -s "Output/Interval=0.5" > out.txt 2> err.txt
 code=$?
 [ $code = 3 ] || fail "unstable run: exit $code, expected 3"
-grep -Eq "stopped: step [0-9]+ \(t = .*\): particle [0-9]+ at \(.*\): " err.txt \
+grep -Eq "stopped: step 1 \(t = 0\): particle [0-9]+ at \(.*\): the fixed time step 0.5 gives a particle CFL number .* of 13(\.[0-9]*)? > 1, which is unstable; the largest stable step here is 0.038[0-9]*: " err.txt \
   || { fail "unstable run: message"; cat err.txt; }
 [ -s unstable/particles.pvd ] && [ -s unstable/statistics.csv ] \
   || fail "unstable run: last good output missing"
 grep -q "particles_00000.pvtu" unstable/particles.pvd || fail "pvd lacks the first output"
+
+# Between 'Checks/CFL warning' and 1: one warning, the run goes on.
+"$dealmpm" "$scene" -s "Output/Directory=warned" -s "Time/Time step=0.025" \
+  -s "Time/End time=0.2" -s "Output/Write particles=false" > out.txt 2> err.txt
+code=$?
+[ $code = 0 ] || fail "warned run: exit $code"
+[ "$(grep -c "warning: step 1 .*particle CFL number .* of 0.65.*above 'Checks/CFL warning' = 0.5" out.txt)" = 1 ] \
+  || { fail "warned run: one warning expected"; cat out.txt; }
+
+# Energy that grows (the disks with the CFL step at 0.5, USL, linear: cell
+# crossing pumps energy in from t = 1.4) stops the run with the particle
+# whose energy grew most, before it turns inside out at t = 2.5.
+growth=(-s "Time/Time step method=CFL" -s "Time/CFL number=0.5" -s "MPM/Stress update=USL"
+        -s "MPM/Shape function=linear" -s "Output/Write particles=false")
+"$dealmpm" "$scene" "${growth[@]}" -s "Output/Directory=growth" > out.txt 2> err.txt
+code=$?
+[ $code = 3 ] || fail "energy growth: exit $code, expected 3"
+grep -Eq "stopped: step [0-9]+ \(t = 1\.[0-9]+\): the total energy grew by [0-9.]+ % of the energy put in \(limit 'Checks/Energy growth limit' = 10 %\); the particle whose energy grew most: particle [0-9]+ at \(.*\) \(\+[0-9.e-]+ J\)\. .*try a smaller 'Time/CFL number'.*The last good output" err.txt \
+  || { fail "energy growth: message"; cat err.txt; }
+last_drift=$(tail -1 growth/statistics.csv | awk -F, '{print $13}')
+awk -v d="$last_drift" 'BEGIN { exit !(d < 0.1) }' || fail "energy growth: last row drift $last_drift"
+"$dealmpm" "$scene" "${growth[@]}" -s "Output/Directory=unguarded" -s "Checks/Energy growth limit=0" > out.txt 2> err.txt
+grep -q "J <= 0" err.txt || { fail "energy growth: without the guard the run should turn inside out"; cat err.txt; }
 
 # Disks flying out of a grid with free boundaries.
 flying=(-s "Body 1/Velocity=-2, 0" -s "Body 2/Velocity=2, 0" -s "Time/End time=0.1"
