@@ -131,7 +131,7 @@ TEST(AccuracyReport, EnergyDriftAgainstTheEnergyPutIn)
   high.gravitational_energy = 10;
   monitor.start(high);
   Statistics fallen;
-  fallen.kinetic_energy = 1.8;
+  fallen.kinetic_energy = 9;
   monitor.observe(fallen, 0.);
   EXPECT_NEAR(monitor.report().energy_drift, -0.1, 1e-15);
 }
