@@ -132,6 +132,12 @@ namespace dealmpm
     {
       return fields;
     }
+    /** The material of index m (0-based, "Material m+1"). */
+    const Material<dim> &
+    material(const unsigned int m) const
+    {
+      return *materials[m];
+    }
     /** Drifts, smallest J, largest CFL number and errors so far. */
     const AccuracyReport &
     accuracy_report() const
