@@ -670,7 +670,7 @@ namespace dealmpm
     const bool         writer = Utilities::MPI::this_mpi_process(comm) == 0;
     if (run_settings.write_particles)
       {
-        particle_output.build_patches(*particles);
+        particle_output.build_patches(*particles, materials);
         last_output = particle_output.write(dir, output_counter, comm);
         if (writer)
           particle_series.add_and_write(current_time,

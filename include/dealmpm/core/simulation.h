@@ -10,6 +10,7 @@
 #include <dealmpm/grid/boundary_conditions.h>
 #include <dealmpm/grid/nodal_fields.h>
 #include <dealmpm/io/particle_output.h>
+#include <dealmpm/io/pvd_series.h>
 #include <dealmpm/materials/material.h>
 #include <dealmpm/particles/body.h>
 #include <dealmpm/particles/particle_set.h>
