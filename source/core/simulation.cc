@@ -741,6 +741,19 @@ namespace dealmpm
             << Utilities::MPI::n_mpi_processes(comm) << " rank(s) (" << fewest
             << " to " << most << " particles per rank); output in "
             << s.output_directory << "/" << std::endl;
+    if (s.write_grid)
+      {
+        // The grid output at t = 0 shows the particles' mass and velocity
+        // p / m on the nodes, as every later one does, instead of zeros.
+        kernel.compute_stencil(grid, *particles, stencil);
+        if (s.apic)
+          record_positions(grid, *particles, stencil);
+        if (!Utilities::MPI::logical_or(stencil.failed, comm))
+          {
+            particle_to_grid(grid, *particles, stencil, fields, true, false);
+            velocity_from_momentum(fields, mass_threshold, boundary_conditions);
+          }
+      }
     write_output();
     accuracy.start(initial);
     stats.write_row(
