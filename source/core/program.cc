@@ -40,7 +40,9 @@ namespace dealmpm
       "                          benchmarks/accuracy-cost/README.md)\n"
       "\n"
       "exit codes: 0 done, 1 bad command line, 2 bad scene input,\n"
-      "            3 run stopped (instability, particles lost), 4 internal error\n";
+      "            3 run stopped (instability, particles lost), 4 internal error,\n"
+      "            5 output could not be written (the file and the reason are\n"
+      "              printed; the series on disk stay consistent)\n";
 
     template <int dim>
     void
@@ -244,6 +246,13 @@ namespace dealmpm
         if (root)
           std::cerr << "dealmpm: stopped: " << e.what() << std::endl;
         return 3;
+      }
+    catch (const OutputError &e)
+      {
+        // Every rank throws it with the same text.
+        if (root)
+          std::cerr << "dealmpm: output error: " << e.what() << std::endl;
+        return 5;
       }
     catch (const std::exception &e)
       {

@@ -5,6 +5,7 @@
 #include <dealmpm/core/simulation.h>
 #include <dealmpm/grid/grid_update.h>
 #include <dealmpm/io/grid_output.h>
+#include <dealmpm/io/output_file.h>
 #include <dealmpm/io/particle_csv.h>
 #include <dealmpm/io/progress.h>
 #include <dealmpm/io/statistics_file.h>
@@ -15,7 +16,6 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
-#include <fstream>
 #include <iomanip>
 #include <sstream>
 
@@ -663,34 +663,66 @@ namespace dealmpm
 
   template <int dim>
   void
-  Simulation<dim>::write_output()
+  Simulation<dim>::write_output(
+    const std::function<void()> &write_statistics_row)
   {
     TimerOutput::Scope t(*computing_timer, "output");
     const std::string &dir    = run_settings.output_directory;
     const bool         writer = Utilities::MPI::this_mpi_process(comm) == 0;
+    std::ostringstream context;
+    context << "; the output in " << dir << "/ is complete";
+    if (output_counter > 0)
+      context << " up to t = " << last_output_time;
+    else
+      context << " but empty";
+
+    // The files a series entry points to come first, on every rank; the
+    // statistics row and the entries follow once all ranks have them, so
+    // that a run stopped at any moment (or by a full disk) leaves no entry
+    // without its files and row. Each writer does its collective part
+    // before it can fail, so a rank that failed still takes part in the
+    // rest, and all ranks throw together.
+    std::string problem;
+    const auto  attempt = [&problem](const auto &write) {
+      try
+        {
+          write();
+        }
+      catch (const OutputError &e)
+        {
+          if (problem.empty())
+            problem = e.what();
+        }
+    };
+    std::string particle_file, grid_file;
     if (run_settings.write_particles)
-      {
+      attempt([&] {
         particle_output.build_patches(*particles, materials);
-        last_output = particle_output.write(dir, output_counter, comm);
-        if (writer)
-          particle_series.add_and_write(current_time,
-                                        last_output,
-                                        dir + "/particles.pvd");
-      }
+        particle_file = particle_output.write(dir, output_counter, comm);
+      });
     if (run_settings.write_grid)
-      {
-        const std::string name =
-          write_grid_output(grid, fields, dir, output_counter);
-        if (writer)
-          grid_series.add_and_write(current_time, name, dir + "/grid.pvd");
-      }
+      attempt([&] {
+        grid_file = write_grid_output(grid, fields, dir, output_counter);
+      });
     if (run_settings.write_particle_csv)
-      {
+      attempt([&] {
         std::ostringstream name;
         name << dir << "/particles_" << std::setw(5) << std::setfill('0')
              << output_counter << ".csv";
         write_particle_csv(*particles, name.str(), comm);
-      }
+      });
+    agree_on_output_error(problem, context.str(), comm);
+    if (writer)
+      attempt([&] {
+        write_statistics_row();
+        if (!particle_file.empty())
+          particle_series.add_and_write(current_time,
+                                        particle_file,
+                                        dir + "/particles.pvd");
+        if (!grid_file.empty())
+          grid_series.add_and_write(current_time, grid_file, dir + "/grid.pvd");
+      });
+    agree_on_output_error(problem, context.str(), comm);
     ++output_counter;
     last_output_time = current_time;
   }
@@ -699,17 +731,26 @@ namespace dealmpm
   void
   Simulation<dim>::run()
   {
-    const RunSettings &s      = run_settings;
-    const bool         writer = Utilities::MPI::this_mpi_process(comm) == 0;
+    const RunSettings &s       = run_settings;
+    const bool         writer  = Utilities::MPI::this_mpi_process(comm) == 0;
+    const Statistics   initial = statistics();
+    std::unique_ptr<StatisticsFile> stats;
     // Every rank learns whether rank 0 could make the folder: a rank that
     // throws alone would leave the others waiting.
-    std::string problem;
+    std::string problem, output_problem;
     if (writer)
       try
         {
           std::filesystem::create_directories(s.output_directory);
-          if (!std::ofstream(s.output_directory + "/statistics.csv"))
-            problem = "cannot write in it";
+          try
+            {
+              stats = std::make_unique<StatisticsFile>(
+                s.output_directory + "/statistics.csv", dim, initial.has_error);
+            }
+          catch (const OutputError &e)
+            {
+              output_problem = e.what();
+            }
         }
       catch (const std::exception &e)
         {
@@ -722,11 +763,7 @@ namespace dealmpm
                        "': expected a folder that can be created and "
                        "written (" +
                        problem + ")");
-    Statistics     initial = statistics();
-    StatisticsFile stats(s.output_directory + "/statistics.csv",
-                         dim,
-                         initial.has_error,
-                         writer);
+    agree_on_output_error(output_problem, "", comm);
     Progress progress(std::cout, s.progress_interval, writer && s.verbose);
 
     const double local_particles =
@@ -734,13 +771,16 @@ namespace dealmpm
     const double fewest = Utilities::MPI::min(local_particles, comm);
     const double most   = Utilities::MPI::max(local_particles, comm);
     if (s.verbose)
-      pcout << "dealmpm: " << dim << "D, "
-            << grid.triangulation.n_global_active_cells() << " cells, "
-            << grid.dof_handler.n_dofs() << " nodes, "
-            << static_cast<unsigned long>(initial.n_particles) << " particles, "
-            << Utilities::MPI::n_mpi_processes(comm) << " rank(s) (" << fewest
-            << " to " << most << " particles per rank); output in "
-            << s.output_directory << "/" << std::endl;
+      {
+        pcout << "dealmpm: " << dim << "D, "
+              << grid.triangulation.n_global_active_cells() << " cells, "
+              << grid.dof_handler.n_dofs() << " nodes, "
+              << static_cast<unsigned long>(initial.n_particles)
+              << " particles, " << Utilities::MPI::n_mpi_processes(comm)
+              << " rank(s) (" << fewest << " to " << most
+              << " particles per rank); output in " << s.output_directory << "/"
+              << std::endl;
+      }
     if (s.write_grid)
       {
         // The grid output at t = 0 shows the particles' mass and velocity
@@ -754,10 +794,32 @@ namespace dealmpm
             velocity_from_momentum(fields, mass_threshold, boundary_conditions);
           }
       }
-    write_output();
     accuracy.start(initial);
-    stats.write_row(
-      0, 0., 0., initial, 0., accuracy.report(), 0, progress.elapsed_seconds());
+    write_output([&] {
+      stats->write_row(0,
+                       0.,
+                       0.,
+                       initial,
+                       0.,
+                       accuracy.report(),
+                       0,
+                       progress.elapsed_seconds());
+    });
+    const auto output = [&](const double dt) {
+      const Statistics now  = statistics();
+      const double     work = external_work();
+      accuracy.observe(now, work);
+      write_output([&] {
+        stats->write_row(step,
+                         current_time,
+                         dt,
+                         now,
+                         work,
+                         accuracy.report(),
+                         lost_particles,
+                         progress.elapsed_seconds());
+      });
+    };
 
     double       next_output    = s.output_interval;
     double       particle_steps = 0;
@@ -801,18 +863,7 @@ namespace dealmpm
               next_output =
                 (std::floor(current_time / s.output_interval + 1e-9) + 1) *
                 s.output_interval;
-            write_output();
-            const Statistics now  = statistics();
-            const double     work = external_work();
-            accuracy.observe(now, work);
-            stats.write_row(step,
-                            current_time,
-                            dt,
-                            now,
-                            work,
-                            accuracy.report(),
-                            lost_particles,
-                            progress.elapsed_seconds());
+            output(dt);
           }
         progress.update(step, current_time, dt, s.end_time, n_particles);
       }

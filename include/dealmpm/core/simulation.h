@@ -17,6 +17,7 @@
 #include <dealmpm/schemes/update_scheme.h>
 #include <dealmpm/transfer/kernel.h>
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -76,7 +77,8 @@ namespace dealmpm
                const MPI_Comm     comm);
 
     /** The whole run: output at t = 0, every interval and at the end, a
-     * progress line, the timing table. */
+     * progress line, the timing table; throws OutputError when a file
+     * cannot be written. */
     void
     run();
 
@@ -170,8 +172,12 @@ namespace dealmpm
                      const Point<dim>           &location,
                      const std::string          &reason,
                      const double                dt) const;
+    /** Write the output files of the current state on every rank, then
+     * (rank 0) @p write_statistics_row and the series entries, so that no
+     * entry and no row is on disk before the files they stand for.
+     * Collective; throws OutputError on every rank when any rank failed. */
     void
-    write_output();
+    write_output(const std::function<void()> &write_statistics_row);
 
     MPI_Comm                                    comm;
     ConditionalOStream                          pcout;
@@ -203,7 +209,6 @@ namespace dealmpm
 
     unsigned int        output_counter   = 0;
     double              last_output_time = 0;
-    std::string         last_output;
     ParticleOutput<dim> particle_output;
     PvdSeries           particle_series, grid_series;
   };
