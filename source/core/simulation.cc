@@ -6,6 +6,7 @@
 #include <dealmpm/grid/grid_update.h>
 #include <dealmpm/io/grid_output.h>
 #include <dealmpm/io/output_file.h>
+#include <dealmpm/io/output_folder.h>
 #include <dealmpm/io/particle_csv.h>
 #include <dealmpm/io/progress.h>
 #include <dealmpm/io/statistics_file.h>
@@ -193,7 +194,9 @@ namespace dealmpm
       "Directory",
       "output",
       Patterns::Anything(),
-      "Folder for all output (created; relative to the working directory).");
+      "Folder for all output (created; relative to the working directory). "
+      "The files of an earlier run in it (particles_*, grid_*, "
+      "statistics.csv, *.pvd) are removed first; other files stay.");
     prm.declare_entry(
       "Interval",
       "0.1",
@@ -736,15 +739,22 @@ namespace dealmpm
     const Statistics   initial = statistics();
     std::unique_ptr<StatisticsFile> stats;
     // Every rank learns whether rank 0 could make the folder: a rank that
-    // throws alone would leave the others waiting.
-    std::string problem, output_problem;
+    // throws alone would leave the others waiting. The broadcast also keeps
+    // the others from writing before rank 0 has removed the earlier run's
+    // files.
+    std::string  problem, output_problem;
+    unsigned int n_removed = 0;
     if (writer)
       try
         {
           std::filesystem::create_directories(s.output_directory);
           try
             {
-              stats = std::make_unique<StatisticsFile>(
+              // An earlier run's series beside the new one (its later
+              // steps, its grid files) would mislead whoever opens the
+              // folder.
+              n_removed = remove_earlier_output(s.output_directory);
+              stats     = std::make_unique<StatisticsFile>(
                 s.output_directory + "/statistics.csv", dim, initial.has_error);
             }
           catch (const OutputError &e)
@@ -778,8 +788,11 @@ namespace dealmpm
               << static_cast<unsigned long>(initial.n_particles)
               << " particles, " << Utilities::MPI::n_mpi_processes(comm)
               << " rank(s) (" << fewest << " to " << most
-              << " particles per rank); output in " << s.output_directory << "/"
-              << std::endl;
+              << " particles per rank); output in " << s.output_directory
+              << "/";
+        if (n_removed > 0)
+          pcout << " (removed " << n_removed << " files of an earlier run)";
+        pcout << std::endl;
       }
     if (s.write_grid)
       {
