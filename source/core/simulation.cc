@@ -3,6 +3,7 @@
 
 #include <dealmpm/core/errors.h>
 #include <dealmpm/core/simulation.h>
+#include <dealmpm/core/stop_signal.h>
 #include <dealmpm/grid/grid_update.h>
 #include <dealmpm/io/grid_output.h>
 #include <dealmpm/io/output_file.h>
@@ -734,9 +735,10 @@ namespace dealmpm
   void
   Simulation<dim>::run()
   {
-    const RunSettings &s       = run_settings;
-    const bool         writer  = Utilities::MPI::this_mpi_process(comm) == 0;
-    const Statistics   initial = statistics();
+    const RunSettings &s      = run_settings;
+    const bool         writer = Utilities::MPI::this_mpi_process(comm) == 0;
+    const StopSignalHandlers        signal_handlers;
+    const Statistics                initial = statistics();
     std::unique_ptr<StatisticsFile> stats;
     // Every rank learns whether rank 0 could make the folder: a rank that
     // throws alone would leave the others waiting. The broadcast also keeps
@@ -818,7 +820,8 @@ namespace dealmpm
                        0,
                        progress.elapsed_seconds());
     });
-    const auto output = [&](const double dt) {
+    unsigned int last_output_step = step;
+    const auto   output           = [&](const double dt) {
       const Statistics now  = statistics();
       const double     work = external_work();
       accuracy.observe(now, work);
@@ -832,6 +835,7 @@ namespace dealmpm
                          lost_particles,
                          progress.elapsed_seconds());
       });
+      last_output_step = step;
     };
 
     double       next_output    = s.output_interval;
@@ -842,6 +846,11 @@ namespace dealmpm
     while (current_time < s.end_time - time_tolerance &&
            (s.max_steps == 0 || step < s.max_steps))
       {
+        // mpirun passes the signal to every rank, but not at the same
+        // moment: the ranks stop at the same step only if they agree.
+        stopped_by_signal = Utilities::MPI::max(stop_signal(), comm);
+        if (stopped_by_signal != 0)
+          break;
         if (particles->handler.n_global_particles() == 0)
           throw RunError("step " + std::to_string(step) +
                          " (t = " + std::to_string(current_time) +
@@ -880,6 +889,8 @@ namespace dealmpm
           }
         progress.update(step, current_time, dt, s.end_time, n_particles);
       }
+    if (stopped_by_signal != 0 && last_output_step != step)
+      output(dt);
 
     if (s.verbose)
       {
@@ -899,6 +910,11 @@ namespace dealmpm
           pcout << ", " << lost_particles << " particle(s) left the grid";
         pcout << std::endl;
       }
+    if (stopped_by_signal != 0)
+      pcout << "dealmpm: stopped by " << signal_name(stopped_by_signal)
+            << " at step " << step << " (t = " << current_time
+            << "); output in " << s.output_directory << "/ is complete"
+            << std::endl;
   }
 
   template class Simulation<2>;

@@ -77,10 +77,18 @@ namespace dealmpm
                const MPI_Comm     comm);
 
     /** The whole run: output at t = 0, every interval and at the end, a
-     * progress line, the timing table; throws OutputError when a file
-     * cannot be written. */
+     * progress line, the timing table. SIGTERM or SIGINT end it after the
+     * current step with a last output (see stop_signal_received()); throws
+     * OutputError when a file cannot be written. */
     void
     run();
+
+    /** The signal (SIGTERM, SIGINT) that stopped run() early, or 0. */
+    int
+    stop_signal_received() const
+    {
+      return stopped_by_signal;
+    }
 
     /** One USL step of size dt. */
     void
@@ -207,8 +215,9 @@ namespace dealmpm
     double       lost_particles  = 0;
     std::vector<std::pair<types::particle_index, Point<dim>>> lost_this_step;
 
-    unsigned int        output_counter   = 0;
-    double              last_output_time = 0;
+    unsigned int        output_counter    = 0;
+    double              last_output_time  = 0;
+    int                 stopped_by_signal = 0;
     ParticleOutput<dim> particle_output;
     PvdSeries           particle_series, grid_series;
   };
