@@ -35,8 +35,8 @@ def judge(case, run_folder, status, reason):
     stats = rows(path) if os.path.exists(path) else []
     if status != "ok":
         why = reason.split(":")[-1].strip()[:40] if reason else status
-        when = stats[-1]["time"] if stats else "?"
-        return False, "stopped t=%.2g (%s)" % (float(when), why)
+        when = "t=%.2g" % float(stats[-1]["time"]) if stats else "at start"
+        return False, "%s %s (%s)" % (status, when, why)
     drift = [float(r["energy_drift"]) for r in stats]
     gain, loss = max(drift), min(drift)
     if case == "disks":

@@ -39,11 +39,18 @@ namespace dealmpm
       "                          study.csv, study.md and plots (see\n"
       "                          benchmarks/accuracy-cost/README.md)\n"
       "\n"
+      "SIGTERM or SIGINT (Ctrl-C) end a run after its current step with a\n"
+      "last output; a second one ends it at once.\n"
+      "\n"
       "exit codes: 0 done, 1 bad command line, 2 bad scene input,\n"
-      "            3 run stopped (instability, particles lost), 4 internal error\n";
+      "            3 run stopped (instability, particles lost), 4 internal error,\n"
+      "            5 output could not be written (the file and the reason are\n"
+      "              printed; the series on disk stay consistent),\n"
+      "            130 / 143 stopped by SIGINT / SIGTERM (output complete)\n";
 
+    /** Returns the signal that stopped the run, or 0. */
     template <int dim>
-    void
+    int
     run_scene(const std::string              &file,
               const std::vector<std::string> &overrides,
               const SceneShape               &shape)
@@ -55,11 +62,13 @@ namespace dealmpm
       // Let the simulation (and its MPI-aware timer) die before an error
       // leaves this function.
       std::exception_ptr error;
+      int                signal = 0;
       {
         Simulation<dim> simulation(prm, file, shape, MPI_COMM_WORLD, overrides);
         try
           {
             simulation.run();
+            signal = simulation.stop_signal_received();
           }
         catch (...)
           {
@@ -68,6 +77,7 @@ namespace dealmpm
       }
       if (error)
         std::rethrow_exception(error);
+      return signal;
     }
   } // namespace
 
@@ -231,10 +241,11 @@ namespace dealmpm
               prm.print_parameters(std::cout, ParameterHandler::Text);
             return 0;
           }
-        if (shape.dim == 2)
-          run_scene<2>(file, overrides, shape);
-        else
-          run_scene<3>(file, overrides, shape);
+        const int signal = shape.dim == 2 ?
+                             run_scene<2>(file, overrides, shape) :
+                             run_scene<3>(file, overrides, shape);
+        if (signal != 0)
+          return 128 + signal;
       }
     catch (const InputError &e)
       {
@@ -247,6 +258,13 @@ namespace dealmpm
         if (root)
           std::cerr << "dealmpm: stopped: " << e.what() << std::endl;
         return 3;
+      }
+    catch (const OutputError &e)
+      {
+        // Every rank throws it with the same text.
+        if (root)
+          std::cerr << "dealmpm: output error: " << e.what() << std::endl;
+        return 5;
       }
     catch (const std::exception &e)
       {

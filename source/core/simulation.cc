@@ -3,8 +3,11 @@
 
 #include <dealmpm/core/errors.h>
 #include <dealmpm/core/simulation.h>
+#include <dealmpm/core/stop_signal.h>
 #include <dealmpm/grid/grid_update.h>
 #include <dealmpm/io/grid_output.h>
+#include <dealmpm/io/output_file.h>
+#include <dealmpm/io/output_folder.h>
 #include <dealmpm/io/particle_csv.h>
 #include <dealmpm/io/progress.h>
 #include <dealmpm/io/statistics_file.h>
@@ -15,7 +18,6 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
-#include <fstream>
 #include <iomanip>
 #include <sstream>
 
@@ -229,7 +231,9 @@ namespace dealmpm
       "Directory",
       "output",
       Patterns::Anything(),
-      "Folder for all output (created; relative to the working directory).");
+      "Folder for all output (created; relative to the working directory). "
+      "The files of an earlier run in it (particles_*, grid_*, "
+      "statistics.csv, *.pvd) are removed first; other files stay.");
     prm.declare_entry(
       "Interval",
       "0.1",
@@ -818,34 +822,66 @@ namespace dealmpm
 
   template <int dim>
   void
-  Simulation<dim>::write_output()
+  Simulation<dim>::write_output(
+    const std::function<void()> &write_statistics_row)
   {
     TimerOutput::Scope t(*computing_timer, "output");
     const std::string &dir    = run_settings.output_directory;
     const bool         writer = Utilities::MPI::this_mpi_process(comm) == 0;
+    std::ostringstream context;
+    context << "; the output in " << dir << "/ is complete";
+    if (output_counter > 0)
+      context << " up to t = " << last_output_time;
+    else
+      context << " but empty";
+
+    // The files a series entry points to come first, on every rank; the
+    // statistics row and the entries follow once all ranks have them, so
+    // that a run stopped at any moment (or by a full disk) leaves no entry
+    // without its files and row. Each writer does its collective part
+    // before it can fail, so a rank that failed still takes part in the
+    // rest, and all ranks throw together.
+    std::string problem;
+    const auto  attempt = [&problem](const auto &write) {
+      try
+        {
+          write();
+        }
+      catch (const OutputError &e)
+        {
+          if (problem.empty())
+            problem = e.what();
+        }
+    };
+    std::string particle_file, grid_file;
     if (run_settings.write_particles)
-      {
-        particle_output.build_patches(*particles);
-        last_output = particle_output.write(dir, output_counter, comm);
-        if (writer)
-          particle_series.add_and_write(current_time,
-                                        last_output,
-                                        dir + "/particles.pvd");
-      }
+      attempt([&] {
+        particle_output.build_patches(*particles, materials);
+        particle_file = particle_output.write(dir, output_counter, comm);
+      });
     if (run_settings.write_grid)
-      {
-        const std::string name =
-          write_grid_output(grid, fields, dir, output_counter);
-        if (writer)
-          grid_series.add_and_write(current_time, name, dir + "/grid.pvd");
-      }
+      attempt([&] {
+        grid_file = write_grid_output(grid, fields, dir, output_counter);
+      });
     if (run_settings.write_particle_csv)
-      {
+      attempt([&] {
         std::ostringstream name;
         name << dir << "/particles_" << std::setw(5) << std::setfill('0')
              << output_counter << ".csv";
         write_particle_csv(*particles, name.str(), comm);
-      }
+      });
+    agree_on_output_error(problem, context.str(), comm);
+    if (writer)
+      attempt([&] {
+        write_statistics_row();
+        if (!particle_file.empty())
+          particle_series.add_and_write(current_time,
+                                        particle_file,
+                                        dir + "/particles.pvd");
+        if (!grid_file.empty())
+          grid_series.add_and_write(current_time, grid_file, dir + "/grid.pvd");
+      });
+    agree_on_output_error(problem, context.str(), comm);
     ++output_counter;
     last_output_time = current_time;
   }
@@ -856,15 +892,32 @@ namespace dealmpm
   {
     const RunSettings &s      = run_settings;
     const bool         writer = Utilities::MPI::this_mpi_process(comm) == 0;
+    const StopSignalHandlers        signal_handlers;
+    const Statistics                initial = statistics();
+    std::unique_ptr<StatisticsFile> stats;
     // Every rank learns whether rank 0 could make the folder: a rank that
-    // throws alone would leave the others waiting.
-    std::string problem;
+    // throws alone would leave the others waiting. The broadcast also keeps
+    // the others from writing before rank 0 has removed the earlier run's
+    // files.
+    std::string  problem, output_problem;
+    unsigned int n_removed = 0;
     if (writer)
       try
         {
           std::filesystem::create_directories(s.output_directory);
-          if (!std::ofstream(s.output_directory + "/statistics.csv"))
-            problem = "cannot write in it";
+          try
+            {
+              // An earlier run's series beside the new one (its later
+              // steps, its grid files) would mislead whoever opens the
+              // folder.
+              n_removed = remove_earlier_output(s.output_directory);
+              stats     = std::make_unique<StatisticsFile>(
+                s.output_directory + "/statistics.csv", dim, initial.has_error);
+            }
+          catch (const OutputError &e)
+            {
+              output_problem = e.what();
+            }
         }
       catch (const std::exception &e)
         {
@@ -877,11 +930,7 @@ namespace dealmpm
                        "': expected a folder that can be created and "
                        "written (" +
                        problem + ")");
-    Statistics     initial = statistics();
-    StatisticsFile stats(s.output_directory + "/statistics.csv",
-                         dim,
-                         initial.has_error,
-                         writer);
+    agree_on_output_error(output_problem, "", comm);
     Progress progress(std::cout, s.progress_interval, writer && s.verbose);
 
     const double local_particles =
@@ -889,18 +938,60 @@ namespace dealmpm
     const double fewest = Utilities::MPI::min(local_particles, comm);
     const double most   = Utilities::MPI::max(local_particles, comm);
     if (s.verbose)
-      pcout << "dealmpm: " << dim << "D, "
-            << grid.triangulation.n_global_active_cells() << " cells, "
-            << grid.dof_handler.n_dofs() << " nodes, "
-            << static_cast<unsigned long>(initial.n_particles) << " particles, "
-            << Utilities::MPI::n_mpi_processes(comm) << " rank(s) (" << fewest
-            << " to " << most << " particles per rank), about "
-            << short_number(memory.bytes / 1e9) << " GB estimated; output in "
-            << s.output_directory << "/" << std::endl;
-    write_output();
+      {
+        pcout << "dealmpm: " << dim << "D, "
+              << grid.triangulation.n_global_active_cells() << " cells, "
+              << grid.dof_handler.n_dofs() << " nodes, "
+              << static_cast<unsigned long>(initial.n_particles)
+              << " particles, " << Utilities::MPI::n_mpi_processes(comm)
+              << " rank(s) (" << fewest << " to " << most
+              << " particles per rank), about "
+              << short_number(memory.bytes / 1e9) << " GB estimated; output in "
+              << s.output_directory << "/";
+        if (n_removed > 0)
+          pcout << " (removed " << n_removed << " files of an earlier run)";
+        pcout << std::endl;
+      }
+    if (s.write_grid)
+      {
+        // The grid output at t = 0 shows the particles' mass and velocity
+        // p / m on the nodes, as every later one does, instead of zeros.
+        kernel.compute_stencil(grid, *particles, stencil);
+        if (s.apic)
+          record_positions(grid, *particles, stencil);
+        if (!Utilities::MPI::logical_or(stencil.failed, comm))
+          {
+            particle_to_grid(grid, *particles, stencil, fields, true, false);
+            velocity_from_momentum(fields, mass_threshold, boundary_conditions);
+          }
+      }
     accuracy.start(initial);
-    stats.write_row(
-      0, 0., 0., initial, 0., accuracy.report(), 0, progress.elapsed_seconds());
+    write_output([&] {
+      stats->write_row(0,
+                       0.,
+                       0.,
+                       initial,
+                       0.,
+                       accuracy.report(),
+                       0,
+                       progress.elapsed_seconds());
+    });
+    unsigned int last_output_step = step;
+    // The statistics of the state written (already observed).
+    const auto output =
+      [&](const double dt, const Statistics &now, const double work) {
+        write_output([&] {
+          stats->write_row(step,
+                           current_time,
+                           dt,
+                           now,
+                           work,
+                           accuracy.report(),
+                           lost_particles,
+                           progress.elapsed_seconds());
+        });
+        last_output_step = step;
+      };
 
     double       next_output      = s.output_interval;
     double       particle_steps   = 0;
@@ -915,6 +1006,11 @@ namespace dealmpm
     while (current_time < s.end_time - time_tolerance &&
            (s.max_steps == 0 || step < s.max_steps))
       {
+        // mpirun passes the signal to every rank, but not at the same
+        // moment: the ranks stop at the same step only if they agree.
+        stopped_by_signal = Utilities::MPI::max(stop_signal(), comm);
+        if (stopped_by_signal != 0)
+          break;
         if (particles->handler.n_global_particles() == 0)
           throw RunError("step " + std::to_string(step) +
                          " (t = " + short_number(current_time) +
@@ -964,17 +1060,16 @@ namespace dealmpm
               next_output =
                 (std::floor(current_time / s.output_interval + 1e-9) + 1) *
                 s.output_interval;
-            write_output();
-            stats.write_row(step,
-                            current_time,
-                            dt,
-                            now,
-                            work,
-                            accuracy.report(),
-                            lost_particles,
-                            progress.elapsed_seconds());
+            output(dt, now, work);
           }
         progress.update(step, current_time, dt, s.end_time, n_particles);
+      }
+    if (stopped_by_signal != 0 && last_output_step != step)
+      {
+        const Statistics now  = statistics();
+        const double     work = external_work();
+        accuracy.observe(now, work);
+        output(dt, now, work);
       }
 
     if (s.verbose)
@@ -995,6 +1090,11 @@ namespace dealmpm
           pcout << ", " << lost_particles << " particle(s) left the grid";
         pcout << std::endl;
       }
+    if (stopped_by_signal != 0)
+      pcout << "dealmpm: stopped by " << signal_name(stopped_by_signal)
+            << " at step " << step << " (t = " << current_time
+            << "); output in " << s.output_directory << "/ is complete"
+            << std::endl;
   }
 
   template class Simulation<2>;

@@ -1,9 +1,9 @@
 #include <deal.II/base/mpi.h>
 
+#include <dealmpm/io/output_file.h>
 #include <dealmpm/io/particle_csv.h>
 
 #include <algorithm>
-#include <fstream>
 #include <iomanip>
 #include <sstream>
 
@@ -40,15 +40,17 @@ namespace dealmpm
     for (const auto &part : gathered)
       all.insert(all.end(), part.begin(), part.end());
     std::sort(all.begin(), all.end());
-    std::ofstream out(path);
-    const char   *axes[] = {"x", "y", "z"};
-    out << "id";
+    std::string text   = "id";
+    const char *axes[] = {"x", "y", "z"};
     for (const std::string prefix : {"", "v", "u"})
       for (unsigned int d = 0; d < dim; ++d)
-        out << ',' << prefix << axes[d];
-    out << ",J,body\n";
+        text += ',' + prefix + axes[d];
+    text += ",J,body\n";
     for (const auto &row : all)
-      out << row.second << '\n';
+      text += row.second + '\n';
+    OutputFile out(path);
+    out.write(text);
+    out.commit();
   }
 
   template void

@@ -1,83 +1,94 @@
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
 
 #include <dealmpm/io/particle_output.h>
-
-#include <fstream>
 
 namespace dealmpm
 {
   template <int dim>
   void
-  ParticleOutput<dim>::build_patches(const ParticleSet<dim> &particles)
+  ParticleOutput<dim>::build_patches(
+    const ParticleSet<dim>                            &particles,
+    const std::vector<std::unique_ptr<Material<dim>>> &materials)
   {
-    using DCI = DataComponentInterpretation::DataComponentInterpretation;
-    names.clear();
-    ranges.clear();
-    const auto add =
-      [&](const std::string &name, const unsigned int n, const DCI kind) {
-        if (kind != DataComponentInterpretation::component_is_scalar)
-          ranges.emplace_back(names.size(), names.size() + n - 1, name, kind);
-        for (unsigned int i = 0; i < n; ++i)
-          names.push_back(n == 1 ? name : name + "_" + std::to_string(i));
-      };
-    add("id", 1, DataComponentInterpretation::component_is_scalar);
-    add("body", 1, DataComponentInterpretation::component_is_scalar);
-    add("material", 1, DataComponentInterpretation::component_is_scalar);
-    add("velocity",
-        dim,
-        DataComponentInterpretation::component_is_part_of_vector);
-    add("displacement",
-        dim,
-        DataComponentInterpretation::component_is_part_of_vector);
-    add("stress",
-        dim * dim,
-        DataComponentInterpretation::component_is_part_of_tensor);
-    add("J", 1, DataComponentInterpretation::component_is_scalar);
-    add("volume", 1, DataComponentInterpretation::component_is_scalar);
-    add("mass", 1, DataComponentInterpretation::component_is_scalar);
+    cloud = VtuPointCloud();
+    // Vectors and the stress are 3D whatever dim is: ParaView treats
+    // 3-component arrays as vectors and 9-component ones as tensors.
+    const unsigned int i_id   = cloud.add_array("id", VtuType::Int64, 1);
+    const unsigned int i_body = cloud.add_array("body", VtuType::Int32, 1);
+    const unsigned int i_material =
+      cloud.add_array("material", VtuType::Int32, 1);
+    const unsigned int i_velocity =
+      cloud.add_array("velocity", VtuType::Float64, 3);
+    const unsigned int i_displacement =
+      cloud.add_array("displacement", VtuType::Float64, 3);
+    const unsigned int i_stress =
+      cloud.add_array("stress", VtuType::Float64, 9);
+    const unsigned int i_J = cloud.add_array("J", VtuType::Float64, 1);
+    const unsigned int i_volume =
+      cloud.add_array("volume", VtuType::Float64, 1);
+    const unsigned int i_mass = cloud.add_array("mass", VtuType::Float64, 1);
     // Every field of the layout after the core ones: the materials'
     // internal variables and the kernels' and transfers' own (apic_B,
     // domain_half_length), named as in the layout.
-    std::vector<PropertyLayout::Field> internal;
+    const CoreFields                  &f = particles.fields;
+    std::vector<PropertyLayout::Field> extra;
+    std::vector<unsigned int>          i_extra;
     for (const auto &field : particles.layout.fields())
-      if (field.offset > particles.fields.material)
+      if (field.offset > f.material)
         {
-          internal.push_back(field);
-          add(field.name,
-              field.n_components,
-              DataComponentInterpretation::component_is_scalar);
+          extra.push_back(field);
+          i_extra.push_back(
+            cloud.add_array(field.name, VtuType::Float64, field.n_components));
         }
 
-    const CoreFields &f = particles.fields;
-    patches.resize(particles.handler.n_locally_owned_particles());
-    std::size_t i = 0;
+    cloud.resize(particles.handler.n_locally_owned_particles());
+    std::int64_t *id           = cloud.arrays[i_id].integers.data();
+    std::int64_t *body         = cloud.arrays[i_body].integers.data();
+    std::int64_t *material     = cloud.arrays[i_material].integers.data();
+    double       *velocity     = cloud.arrays[i_velocity].reals.data();
+    double       *displacement = cloud.arrays[i_displacement].reals.data();
+    double       *stress       = cloud.arrays[i_stress].reals.data();
+    double       *J            = cloud.arrays[i_J].reals.data();
+    double       *volume       = cloud.arrays[i_volume].reals.data();
+    double       *mass         = cloud.arrays[i_mass].reals.data();
+    std::size_t   i            = 0;
     for (const auto &p : particles.handler)
       {
-        DataOutBase::Patch<0, dim> &patch = patches[i];
-        patch.vertices[0]                 = p.get_location();
-        patch.patch_index                 = i;
-        patch.data.reinit(names.size(), 1);
-        const auto   props = p.get_properties();
-        const auto   F     = read_tensor<dim>(&props[f.deformation_gradient]);
-        const auto   sigma = read_symmetric<dim>(&props[f.stress]);
-        const double J     = determinant(F);
-        unsigned int c     = 0;
-        patch.data(c++, 0) = p.get_id();
-        patch.data(c++, 0) = props[f.body];
-        patch.data(c++, 0) = props[f.material];
+        const auto         props = p.get_properties();
+        const Point<dim>   x     = p.get_location();
+        const unsigned int m     = static_cast<unsigned int>(props[f.material]);
+        const auto         F = read_tensor<dim>(&props[f.deformation_gradient]);
+        const double       det_F = determinant(F);
+        const SymmetricTensor<2, 3> sigma =
+          full_stress(*materials[m],
+                      F,
+                      read_symmetric<dim>(&props[f.stress]),
+                      ArrayView<const double>(props.data() +
+                                                particles.internal_offset[m],
+                                              particles.n_internal[m]));
         for (unsigned int d = 0; d < dim; ++d)
-          patch.data(c++, 0) = props[f.velocity + d];
-        for (unsigned int d = 0; d < dim; ++d)
-          patch.data(c++, 0) = props[f.displacement + d];
-        for (unsigned int a = 0; a < dim; ++a)
-          for (unsigned int b = 0; b < dim; ++b)
-            patch.data(c++, 0) = sigma[a][b];
-        patch.data(c++, 0) = J;
-        patch.data(c++, 0) = J * props[f.initial_volume];
-        patch.data(c++, 0) = props[f.mass];
-        for (const auto &field : internal)
-          for (unsigned int k = 0; k < field.n_components; ++k)
-            patch.data(c++, 0) = props[field.offset + k];
+          {
+            cloud.points[3 * i + d] = x[d];
+            velocity[3 * i + d]     = props[f.velocity + d];
+            displacement[3 * i + d] = props[f.displacement + d];
+          }
+        for (unsigned int a = 0; a < 3; ++a)
+          for (unsigned int b = 0; b < 3; ++b)
+            stress[9 * i + 3 * a + b] = sigma[a][b];
+        id[i]       = p.get_id();
+        body[i]     = static_cast<std::int64_t>(props[f.body]);
+        material[i] = m;
+        J[i]        = det_F;
+        volume[i]   = det_F * props[f.initial_volume];
+        mass[i]     = props[f.mass];
+        for (unsigned int e = 0; e < extra.size(); ++e)
+          {
+            const unsigned int n = extra[e].n_components;
+            double *values = cloud.arrays[i_extra[e]].reals.data() + n * i;
+            for (unsigned int k = 0; k < n; ++k)
+              values[k] = props[extra[e].offset + k];
+          }
         ++i;
       }
   }
@@ -88,18 +99,21 @@ namespace dealmpm
                              const unsigned int counter,
                              const MPI_Comm     comm) const
   {
-    return this->write_vtu_with_pvtu_record(
-      directory + "/", "particles", counter, comm, 5, 0);
-  }
-
-  void
-  PvdSeries::add_and_write(const double       time,
-                           const std::string &file,
-                           const std::string &pvd_path)
-  {
-    entries.emplace_back(time, file);
-    std::ofstream out(pvd_path);
-    DataOutBase::write_pvd_record(out, entries);
+    const std::string base =
+      "particles_" + Utilities::int_to_string(counter, 5);
+    const auto piece = [&](const unsigned int rank) {
+      return base + "." + Utilities::int_to_string(rank) + ".vtu";
+    };
+    cloud.write_vtu(directory + "/" +
+                    piece(Utilities::MPI::this_mpi_process(comm)));
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      {
+        std::vector<std::string> pieces;
+        for (unsigned int r = 0; r < Utilities::MPI::n_mpi_processes(comm); ++r)
+          pieces.push_back(piece(r));
+        cloud.write_pvtu(directory + "/" + base + ".pvtu", pieces);
+      }
+    return base + ".pvtu";
   }
 
   template class ParticleOutput<2>;

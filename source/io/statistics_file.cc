@@ -1,29 +1,64 @@
+#include <dealmpm/core/errors.h>
 #include <dealmpm/io/statistics_file.h>
 
+#include <cerrno>
+#include <cstring>
+#include <fcntl.h>
 #include <iomanip>
+#include <sstream>
+#include <unistd.h>
 
 namespace dealmpm
 {
   StatisticsFile::StatisticsFile(const std::string &path,
                                  const unsigned int dim,
-                                 const bool         errors,
-                                 const bool         writer)
-    : dim(dim)
+                                 const bool         errors)
+    : path(path)
+    , dim(dim)
     , errors(errors)
   {
-    if (!writer)
-      return;
-    out.open(path);
-    out << "step,time,dt,n_particles,mass,momentum_x,momentum_y";
+    fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    if (fd < 0)
+      throw OutputError("cannot write " + path + ": " + std::strerror(errno));
+    std::string header = "step,time,dt,n_particles,mass,momentum_x,momentum_y";
     if (dim == 3)
-      out << ",momentum_z";
-    out << ",kinetic_energy,strain_energy,gravitational_energy,total_energy,"
-           "external_work,energy_drift,momentum_drift,mass_loss,min_J,max_cfl,"
-           "lost_particles,wall_time";
+      header += ",momentum_z";
+    header +=
+      ",kinetic_energy,strain_energy,gravitational_energy,total_energy,"
+      "external_work,energy_drift,momentum_drift,mass_loss,min_J,max_cfl,"
+      "lost_particles,wall_time";
     if (errors)
-      out << ",error_L2,error_max";
-    out << '\n';
-    out << std::setprecision(16);
+      header += ",error_L2,error_max";
+    append(header + '\n');
+  }
+
+  StatisticsFile::~StatisticsFile()
+  {
+    if (fd >= 0)
+      ::close(fd);
+  }
+
+  void
+  StatisticsFile::append(const std::string &text)
+  {
+    std::size_t done = 0;
+    while (done < text.size())
+      {
+        const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+        if (n < 0 && errno == EINTR)
+          continue;
+        if (n < 0)
+          {
+            const int error = errno;
+            // Cut a partly written row off again.
+            if (::ftruncate(fd, size) == 0)
+              ::lseek(fd, size, SEEK_SET);
+            throw OutputError("cannot write " + path + ": " +
+                              std::strerror(error));
+          }
+        done += static_cast<std::size_t>(n);
+      }
+    size += text.size();
   }
 
   void
@@ -36,10 +71,9 @@ namespace dealmpm
                             const double          n_lost_particles,
                             const double          wall_time)
   {
-    if (!out.is_open())
-      return;
-    out << step << ',' << time << ',' << dt << ',' << s.n_particles << ','
-        << s.mass;
+    std::ostringstream out;
+    out << std::setprecision(16) << step << ',' << time << ',' << dt << ','
+        << s.n_particles << ',' << s.mass;
     for (unsigned int d = 0; d < dim; ++d)
       out << ',' << s.momentum[d];
     out << ',' << s.kinetic_energy << ',' << s.strain_energy << ','
@@ -49,6 +83,7 @@ namespace dealmpm
         << n_lost_particles << ',' << wall_time;
     if (errors)
       out << ',' << s.error_L2 << ',' << s.error_max;
-    out << '\n' << std::flush;
+    out << '\n';
+    append(out.str());
   }
 } // namespace dealmpm

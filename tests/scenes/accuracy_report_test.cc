@@ -120,7 +120,7 @@ TEST(AccuracyReport, EnergyDriftAgainstTheEnergyPutIn)
   start.kinetic_energy = 1;
   AccuracyMonitor monitor;
   monitor.start(start);
-  Statistics doubled = start;
+  Statistics doubled     = start;
   doubled.kinetic_energy = 2;
   monitor.observe(doubled, 0.);
   EXPECT_NEAR(monitor.report().energy_drift, 1., 1e-15);

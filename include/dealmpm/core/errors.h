@@ -25,4 +25,17 @@ namespace dealmpm
   public:
     using std::runtime_error::runtime_error;
   };
+
+  /**
+   * An output file that could not be written (full disk, no permission):
+   * what() names the file and the system's reason. Every rank throws it
+   * together, after the files a series entry points to were checked on all
+   * ranks, so the series on disk stay consistent; the program exits with
+   * code 5.
+   */
+  class OutputError : public std::runtime_error
+  {
+  public:
+    using std::runtime_error::runtime_error;
+  };
 } // namespace dealmpm

@@ -12,6 +12,7 @@
 #include <dealmpm/grid/boundary_conditions.h>
 #include <dealmpm/grid/nodal_fields.h>
 #include <dealmpm/io/particle_output.h>
+#include <dealmpm/io/pvd_series.h>
 #include <dealmpm/materials/material.h>
 #include <dealmpm/materials/stress_update.h>
 #include <dealmpm/particles/body.h>
@@ -19,6 +20,7 @@
 #include <dealmpm/schemes/update_scheme.h>
 #include <dealmpm/transfer/kernel.h>
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -87,9 +89,18 @@ namespace dealmpm
                const std::vector<std::string> &overrides = {});
 
     /** The whole run: output at t = 0, every interval and at the end, a
-     * progress line, the timing table. */
+     * progress line, the timing table. SIGTERM or SIGINT end it after the
+     * current step with a last output (see stop_signal_received()); throws
+     * OutputError when a file cannot be written. */
     void
     run();
+
+    /** The signal (SIGTERM, SIGINT) that stopped run() early, or 0. */
+    int
+    stop_signal_received() const
+    {
+      return stopped_by_signal;
+    }
 
     /** One USL step of size dt. */
     void
@@ -191,8 +202,12 @@ namespace dealmpm
                      const Point<dim>           &location,
                      const std::string          &reason,
                      const double                dt) const;
+    /** Write the output files of the current state on every rank, then
+     * (rank 0) @p write_statistics_row and the series entries, so that no
+     * entry and no row is on disk before the files they stand for.
+     * Collective; throws OutputError on every rank when any rank failed. */
     void
-    write_output();
+    write_output(const std::function<void()> &write_statistics_row);
     /** "particle N at (x, y)": the one with the largest signal rate over all
      * ranks (collective). */
     std::string
@@ -240,9 +255,9 @@ namespace dealmpm
     double             lost_particles = 0;
     std::vector<std::pair<types::particle_index, Point<dim>>> lost_this_step;
 
-    unsigned int        output_counter   = 0;
-    double              last_output_time = 0;
-    std::string         last_output;
+    unsigned int        output_counter    = 0;
+    double              last_output_time  = 0;
+    int                 stopped_by_signal = 0;
     ParticleOutput<dim> particle_output;
     PvdSeries           particle_series, grid_series;
   };

@@ -3,21 +3,31 @@
 #include <dealmpm/core/accuracy_report.h>
 #include <dealmpm/core/statistics.h>
 
-#include <fstream>
 #include <string>
 
 namespace dealmpm
 {
-  /** statistics.csv: one row per output step, named columns, flushed at
-   * every row so that it is complete when a run stops. Rank 0 writes. */
+  /**
+   * statistics.csv: one row per output step, named columns. Each row is
+   * appended with one write and so is on disk when a run stops; a row that
+   * cannot be written whole (a full disk) is cut off again, so that the
+   * file never ends in half a row. Rank 0 writes; failures throw
+   * OutputError naming the file and the reason.
+   */
   class StatisticsFile
   {
   public:
-    /** @p errors: add error_L2,error_max (scenes with an exact solution). */
+    /** Create the file with its header. @p errors: add error_L2,error_max
+     * (scenes with an exact solution). */
     StatisticsFile(const std::string &path,
                    const unsigned int dim,
-                   const bool         errors,
-                   const bool         writer);
+                   const bool         errors);
+
+    ~StatisticsFile();
+
+    StatisticsFile(const StatisticsFile &) = delete;
+    StatisticsFile &
+    operator=(const StatisticsFile &) = delete;
 
     void
     write_row(const unsigned int    step,
@@ -30,8 +40,13 @@ namespace dealmpm
               const double          wall_time);
 
   private:
-    std::ofstream out;
-    unsigned int  dim;
-    bool          errors;
+    void
+    append(const std::string &text);
+
+    std::string  path;
+    int          fd   = -1;
+    std::size_t  size = 0; ///< bytes of complete rows so far
+    unsigned int dim;
+    bool         errors;
   };
 } // namespace dealmpm

@@ -1,0 +1,77 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace dealmpm
+{
+  /** The type of a VTU data array, as VTK names it. */
+  enum class VtuType
+  {
+    Int32,
+    Int64,
+    Float32,
+    Float64
+  };
+
+  /**
+   * A named point-data array: n_components values per point, point after
+   * point. Integer types keep their values in @p integers, real types in
+   * @p reals; the narrower types are converted when written.
+   */
+  struct VtuArray
+  {
+    std::string               name;
+    VtuType                   type;
+    unsigned int              n_components;
+    std::vector<std::int64_t> integers;
+    std::vector<double>       reals;
+  };
+
+  /**
+   * One rank's piece of a point cloud as a VTK XML UnstructuredGrid, and the
+   * .pvtu record over all pieces. We write it ourselves because deal.II's
+   * writer stores every field as Float32, which cannot tell particle ids
+   * past 2^24 apart. Points are Float64 (x, y, z; z = 0 in 2D), each point
+   * is a VTK_VERTEX cell so that ParaView draws it, and the point data keep
+   * their types. The data are binary in one raw appended block with UInt64
+   * byte counts, array by array (no per-value formatting). A piece without
+   * points declares the same arrays with their component counts, so that
+   * readers accept it. Files are written through OutputFile (atomic; errors
+   * throw OutputError).
+   */
+  class VtuPointCloud
+  {
+  public:
+    /** Declare an array (before resize()); returns its index. */
+    unsigned int
+    add_array(const std::string &name,
+              const VtuType      type,
+              const unsigned int n_components);
+
+    /** Size the points and every array for @p n_points (values zero). */
+    void
+    resize(const std::size_t n_points);
+
+    std::size_t
+    n_points() const
+    {
+      return points.size() / 3;
+    }
+
+    void
+    write_vtu(const std::string &path) const;
+
+    /** The record that lists @p pieces (names relative to it) with this
+     * cloud's arrays. */
+    void
+    write_pvtu(const std::string              &path,
+               const std::vector<std::string> &pieces) const;
+
+    /** x, y, z of each point. */
+    std::vector<double> points;
+
+    std::vector<VtuArray> arrays;
+  };
+} // namespace dealmpm

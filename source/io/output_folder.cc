@@ -1,0 +1,46 @@
+#include <dealmpm/core/errors.h>
+#include <dealmpm/io/output_folder.h>
+
+#include <filesystem>
+#include <regex>
+#include <system_error>
+#include <vector>
+
+namespace dealmpm
+{
+  bool
+  is_run_output_file(const std::string &file_name)
+  {
+    static const std::regex pattern(
+      "(((particles|grid)_[0-9]+(\\.[0-9]+)?\\.(vtu|pvtu))|particles_[0-9]+"
+      "\\.csv|statistics\\.csv|.+\\.pvd)(\\.tmp)?");
+    return std::regex_match(file_name, pattern);
+  }
+
+  unsigned int
+  remove_earlier_output(const std::string &directory)
+  {
+    namespace fs = std::filesystem;
+    std::vector<fs::path> series, others;
+    std::error_code       error;
+    for (const fs::directory_entry &entry :
+         fs::directory_iterator(directory, error))
+      {
+        std::error_code   type_error;
+        const std::string name = entry.path().filename().string();
+        if (entry.is_regular_file(type_error) && is_run_output_file(name))
+          (name.find(".pvd") != std::string::npos ? series : others)
+            .push_back(entry.path());
+      }
+    if (error)
+      throw OutputError("cannot list " + directory + ": " + error.message());
+    // The .pvd files go first: a run killed while removing must not leave
+    // a series that lists removed files.
+    series.insert(series.end(), others.begin(), others.end());
+    for (const fs::path &file : series)
+      if (!fs::remove(file, error) && error)
+        throw OutputError("cannot remove " + file.string() +
+                          " of an earlier run: " + error.message());
+    return series.size();
+  }
+} // namespace dealmpm

@@ -1,0 +1,124 @@
+#!/usr/bin/env bash
+# The particle files a user opens in ParaView: exact integer ids (Int64,
+# unique past 2^24, where Float32 ids collide), body and material as Int32,
+# Float64 points with z = 0 in 2D and one vertex cell each, velocity and
+# displacement as 3-component vectors, the stress as a 9-component tensor
+# with the plane-strain sigma_zz in 2D (nu (sigma_xx + sigma_yy) for the
+# linear elastic disks), symmetric in 3D, and the materials' internal
+# variables by name.
+here=$(cd "$(dirname "$0")" && pwd)
+source "$here/check_lib.sh"
+export PYTHONPATH="$here"
+
+# 2D: the disks collide (fast) so that they carry stress. 3D: a second,
+# small body with 10^3 particles per cell on a grid of 26^3 cells, so that
+# its ids ((body x cells + cell) x 1000 + k) pass 2^24.
+"$dealmpm" "$scene" -s "Output/Directory=disks" -s "Time/End time=0.25" -s "Output/Interval=0.25" \
+  -s "Body 1/Velocity=1, 1" -s "Body 2/Velocity=-1, -1" -s "Output/Particle CSV=true" \
+  -s "Output/Progress interval=0" > disks.log 2>&1 || fail "2D run: exit code $?"
+"$dealmpm" "$(dirname "$scene")/cube_drop_3d.prm" -s "Output/Directory=ids" -s "Time/End time=0.002" \
+  -s "Number of bodies=2" -s "Grid/Cells=26, 26, 26" -s "Body 2/Shape=box" \
+  -s "Body 2/Lower corner=0.8, 0.8, 0.8" -s "Body 2/Upper corner=0.84, 0.84, 0.84" \
+  -s "Body 2/Particles per cell=10" -s "Body 2/Material=1" -s "Output/Particle CSV=true" \
+  -s "Output/Progress interval=0" > ids.log 2>&1 || fail "ids run: exit code $?"
+"$dealmpm" "$(dirname "$scene")/elastic_column_3d.prm" -s "Output/Directory=column" \
+  -s "Time/End time=0.05" -s "Output/Interval=0.05" -s "Output/Progress interval=0" \
+  > column.log 2>&1 || fail "3D run: exit code $?"
+
+python3 - <<'PY' || fail "particle files"
+import csv, sys
+from vtk_files import read_vtu, pvd_files, check_series, parse_xml, declared_arrays
+
+failures = []
+def check(condition, what):
+    if not condition:
+        failures.append(what)
+
+def common(folder, counter, dim):
+    v = read_vtu("%s/particles_%05d.0.vtu" % (folder, counter))
+    a = v["arrays"]
+    n = v["n_points"]
+    expected = {"id": ("Int64", 1), "body": ("Int32", 1), "material": ("Int32", 1),
+                "velocity": ("Float64", 3), "displacement": ("Float64", 3),
+                "stress": ("Float64", 9), "J": ("Float64", 1), "volume": ("Float64", 1),
+                "mass": ("Float64", 1)}
+    if folder != "ids":  # linear elastic
+        expected["stress_work"] = ("Float64", 1)
+    for name, kind in expected.items():
+        check(name in a and a[name][:2] == kind,
+              "%s: %s should be %s, is %s" % (folder, name, kind, a.get(name, [None])[:2]))
+    if any(name not in a for name in expected):
+        return v
+    check(n > 0 and v["n_cells"] == n, "%s: one cell per point" % folder)
+    check(v["points_declared"] == 3 and len(v["points"]) == 3 * n, "%s: 3D points" % folder)
+    cells = v.get("cells", {})
+    if "connectivity" not in cells:
+        check(False, "%s: no cells" % folder)
+        return v
+    check(list(cells["connectivity"]) == list(range(n)), "%s: connectivity" % folder)
+    check(list(cells["offsets"]) == list(range(1, n + 1)), "%s: offsets" % folder)
+    check(set(cells["types"]) == {1}, "%s: VTK_VERTEX cells" % folder)
+    check(not check_series(folder, "particles.pvd"), "%s: series" % folder)
+    record = parse_xml("%s/particles_%05d.pvtu" % (folder, counter))
+    declared = declared_arrays(record.find("PUnstructuredGrid/PPointData"))
+    check(declared == {k: a[k][:2] for k in a}, "%s: .pvtu arrays differ" % folder)
+    if dim == 2:
+        for name in ("velocity", "displacement"):
+            check(all(x == 0 for x in a[name][2][2::3]), "%s: %s z should be 0" % (folder, name))
+        check(all(z == 0 for z in v["points"][2::3]), "%s: point z should be 0" % folder)
+    return v
+
+# 2D: sigma_zz = nu (sigma_xx + sigma_yy), nu = 0.3; the in-plane part
+# symmetric; some stress at all.
+v = common("disks", 1, 2)
+if "stress" in v["arrays"]:
+    s = v["arrays"]["stress"][2]
+    largest = max(abs(x) for x in s)
+    check(largest > 0, "disks: no stress")
+    check(len(s) == 9 * v["n_points"], "disks: the stress should have 9 components")
+    for i in range(v["n_points"] if len(s) == 9 * v["n_points"] else 0):
+        t = s[9 * i:9 * i + 9]
+        check(abs(t[8] - 0.3 * (t[0] + t[4])) <= 1e-12 * largest, "disks: sigma_zz of point %d: %r" % (i, t))
+        check(t[1] == t[3] and t[2] == t[5] == t[6] == t[7] == 0, "disks: stress layout of point %d" % i)
+        if failures:
+            break
+    check(len(s) == 9 * v["n_points"] and max(abs(x) for x in s[8::9]) > 0.1 * largest,
+          "disks: sigma_zz is missing")
+    # The CSV (text, exact) against the binary file, point by point.
+    rows = {int(r["id"]): r for r in csv.DictReader(open("disks/particles_00001.csv"))}
+    a = v["arrays"]
+    for i, pid in enumerate(a["id"][2]):
+        r = rows[int(pid)]
+        check(abs(float(r["vx"]) - a["velocity"][2][3 * i]) <= 1e-9 and
+              abs(float(r["uy"]) - a["displacement"][2][3 * i + 1]) <= 1e-9 and
+              int(r["body"]) == a["body"][2][i], "disks: particle %d differs from the CSV" % pid)
+        if failures:
+            break
+
+# Ids past 2^24: unique and the same as the CSV's.
+v = common("ids", 1, 3)
+if "id" in v["arrays"]:
+    ids = [int(i) for i in v["arrays"]["id"][2]]
+    csv_ids = [int(r["id"]) for r in csv.DictReader(open("ids/particles_00001.csv"))]
+    check(max(ids) > 2**24, "ids: the largest id %d should pass 2^24" % max(ids))
+    check(len(set(ids)) == len(ids), "ids: %d of %d ids are unique" % (len(set(ids)), len(ids)))
+    check(sorted(ids) == sorted(csv_ids), "ids: not the CSV's ids")
+    check(set(v["arrays"]["body"][2]) == {0, 1}, "ids: body values")
+
+# 3D: symmetric tensor, compressed column (sigma_zz < 0).
+v = common("column", 1, 3)
+if "stress" in v["arrays"]:
+    s = v["arrays"]["stress"][2]
+    check(min(s[8::9]) < 0, "column: sigma_zz should be compressive")
+    for i in range(v["n_points"] if len(s) == 9 * v["n_points"] else 0):
+        t = s[9 * i:9 * i + 9]
+        check(t[1] == t[3] and t[2] == t[6] and t[5] == t[7], "column: stress of point %d not symmetric" % i)
+        if failures:
+            break
+
+for f in failures:
+    print("FAIL:", f)
+sys.exit(1 if failures else 0)
+PY
+
+finish "particle output"
