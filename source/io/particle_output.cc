@@ -19,15 +19,15 @@ namespace dealmpm
     const unsigned int i_material =
       cloud.add_array("material", VtuType::Int32, 1);
     const unsigned int i_velocity =
-      cloud.add_array("velocity", VtuType::Float64, 3);
+      cloud.add_array("velocity", VtuType::Float32, 3);
     const unsigned int i_displacement =
-      cloud.add_array("displacement", VtuType::Float64, 3);
+      cloud.add_array("displacement", VtuType::Float32, 3);
     const unsigned int i_stress =
-      cloud.add_array("stress", VtuType::Float64, 9);
-    const unsigned int i_J = cloud.add_array("J", VtuType::Float64, 1);
+      cloud.add_array("stress", VtuType::Float32, 9);
+    const unsigned int i_J = cloud.add_array("J", VtuType::Float32, 1);
     const unsigned int i_volume =
-      cloud.add_array("volume", VtuType::Float64, 1);
-    const unsigned int i_mass = cloud.add_array("mass", VtuType::Float64, 1);
+      cloud.add_array("volume", VtuType::Float32, 1);
+    const unsigned int i_mass = cloud.add_array("mass", VtuType::Float32, 1);
     // Every field of the layout after the core ones: the materials'
     // internal variables and the kernels' and transfers' own (apic_B,
     // domain_half_length), named as in the layout.
@@ -39,7 +39,7 @@ namespace dealmpm
         {
           extra.push_back(field);
           i_extra.push_back(
-            cloud.add_array(field.name, VtuType::Float64, field.n_components));
+            cloud.add_array(field.name, VtuType::Float32, field.n_components));
         }
 
     cloud.resize(particles.handler.n_locally_owned_particles());

@@ -32,7 +32,7 @@ for counter in range(3):
     check(sizes[0] == 0 and sizes[1] > 0, "output %d: piece sizes %s" % (counter, sizes))
     kinds = [{k: a[:2] for k, a in p["arrays"].items()} for p in pieces]
     check(kinds[0] == kinds[1], "output %d: the pieces declare different arrays: %s" % (counter, kinds))
-    check(kinds[0].get("stress") == ("Float64", 9), "output %d: stress %s" % (counter, kinds[0].get("stress")))
+    check(kinds[0].get("stress") == ("Float32", 9), "output %d: stress %s" % (counter, kinds[0].get("stress")))
     for p in pieces:
         check(p["points_declared"] == 3, "output %d: Points not declared with 3 components" % counter)
         check(all(len(a[2]) == p["n_points"] * a[1] for a in p["arrays"].values()),
