@@ -8,7 +8,7 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 dealmpm=$(realpath "${1:-$here/../../build/dealmpm}")
 cd "$here/../.."
-for case in disks cube_drop column; do
+for case in disks cube_drop cube_drop_high column; do
   "$dealmpm" --study "benchmarks/defaults/$case.prm"
 done
 python3 "$here/summarize.py" "$here"
