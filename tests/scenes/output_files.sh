@@ -52,7 +52,7 @@ header="step,time,dt,n_particles,mass,momentum_x,momentum_y,kinetic_energy,strai
 [ "$(head -1 out/particles_00002.csv)" = "id,x,y,vx,vy,ux,uy,J,body" ] || fail "particle CSV header"
 [ "$(wc -l < out/particles_00002.csv)" = 417 ] || fail "particle CSV should have 416 rows"
 grep -Eq "^step +[0-9]+ +t = .* dt = .*% +ETA [0-9]+:[0-9]{2}:[0-9]{2}" log.txt || fail "no progress line"
-grep -q "G2P and stress update" log.txt || fail "no timing table"
+grep -q "| P2G " log.txt || fail "no timing table"
 grep -q "M particle-steps/s" log.txt || fail "no speed line"
 
 finish output

@@ -43,7 +43,7 @@ namespace dealmpm
     double       fixed_time_step = 1e-3;
     double       cfl_number      = 0.5;
     unsigned int max_steps       = 0; ///< 0: no limit
-    UpdateScheme scheme          = UpdateScheme::USL;
+    UpdateScheme scheme          = UpdateScheme::MUSL;
     double       flip_fraction   = 1; ///< 1 FLIP, 0 PIC
     bool         apic            = false;
     /** "linear", "uGIMP" or "cpGIMP". */
