@@ -41,7 +41,9 @@ check_stop() {
   consistent "$1" || fail "inconsistent output"
 }
 
-run=(-s "Time/End time=1" -s "Output/Interval=0.01" -s "Output/Progress interval=0")
+# The fixed step of the old default scene: outputs at known times.
+run=(-s "Time/End time=1" -s "Output/Interval=0.01" -s "Output/Progress interval=0"
+     -s "Time/Time step method=fixed" -s "Time/Time step=0.001")
 case "$mode" in
   full-disk)
     mkdir disk

@@ -6,7 +6,7 @@ source "$(dirname "$0")/check_lib.sh"
 
 # A fixed time step far above the stability limit (particle CFL 13) stops
 # at once with the fastest particle and the largest stable step.
-"$dealmpm" "$scene" -s "Output/Directory=unstable" -s "Time/Time step=0.5" \
+"$dealmpm" "$scene" -s "Output/Directory=unstable" -s "Time/Time step method=fixed" -s "Time/Time step=0.5" \
   -s "Time/End time=100" -s "Output/Interval=0.5" > out.txt 2> err.txt
 code=$?
 [ $code = 3 ] || fail "unstable run: exit $code, expected 3"
@@ -17,7 +17,7 @@ grep -Eq "stopped: step 1 \(t = 0\): particle [0-9]+ at \(.*\): the fixed time s
 grep -q "particles_00000.pvtu" unstable/particles.pvd || fail "pvd lacks the first output"
 
 # Between 'Checks/CFL warning' and 1: one warning, the run goes on.
-"$dealmpm" "$scene" -s "Output/Directory=warned" -s "Time/Time step=0.025" \
+"$dealmpm" "$scene" -s "Output/Directory=warned" -s "Time/Time step method=fixed" -s "Time/Time step=0.025" \
   -s "Time/End time=0.2" -s "Output/Write particles=false" > out.txt 2> err.txt
 code=$?
 [ $code = 0 ] || fail "warned run: exit $code"

@@ -4,14 +4,15 @@
 # remain; the user's own files and subfolders stay.
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/check_lib.sh"
+fixed=(-s "Time/Time step method=fixed" -s "Time/Time step=0.001") # outputs at known steps
 
-"$dealmpm" "$scene" -s "Output/Directory=out" -s "Time/End time=0.1" -s "Output/Interval=0.01" \
+"$dealmpm" "$scene" -s "Output/Directory=out" -s "Time/End time=0.1" -s "Output/Interval=0.01" "${fixed[@]}" \
   -s "Output/Write grid=true" -s "Output/Particle CSV=true" -s "Output/Progress interval=0" \
   > first.txt 2>&1 || fail "first run: exit code $?"
 first=$(ls out | wc -l)
 echo "mine" > out/notes.txt
 mkdir out/sub && echo "mine" > out/sub/particles.pvd && echo "mine" > out/sub/statistics.csv
-"$dealmpm" "$scene" -s "Output/Directory=out" -s "Time/End time=0.03" -s "Output/Interval=0.01" \
+"$dealmpm" "$scene" -s "Output/Directory=out" -s "Time/End time=0.03" -s "Output/Interval=0.01" "${fixed[@]}" \
   -s "Output/Progress interval=0" > second.txt 2>&1 || fail "second run: exit code $?"
 grep -q "removed $first files of an earlier run" second.txt \
   || fail "start line: $(grep 'output in' second.txt)"
