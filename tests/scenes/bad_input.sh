@@ -97,7 +97,7 @@ touch afile
 expect 2 "Output/Directory.*expected a folder that can be created and written" "$scene" -s "Output/Directory=afile/sub"
 # The same under MPI must not hang (only rank 0 makes folders).
 if command -v mpirun > /dev/null; then
-  flags=(--oversubscribe); [ "$(id -u)" = 0 ] && flags+=(--allow-run-as-root)
+  flags=("${mpirun_flags[@]}")
   timeout 120 mpirun "${flags[@]}" -np 2 "$dealmpm" "$scene" -s "Output/Directory=afile/sub" > out.txt 2> err.txt
   code=$?
   if [ $code != 2 ] || ! grep -q "Output/Directory" err.txt; then

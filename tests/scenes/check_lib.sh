@@ -11,3 +11,6 @@ finish() { # what was checked
   if [ $failures -gt 0 ]; then echo "$failures $1 check(s) failed"; exit 1; fi
   echo "all $1 checks passed"
 }
+# mpirun's options for the checks: more ranks than cores, and root (CI).
+mpirun_flags=(--oversubscribe)
+[ "$(id -u)" = 0 ] && mpirun_flags+=(--allow-run-as-root)

@@ -7,8 +7,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 source "$here/check_lib.sh"
 mpirun=$3
 export PYTHONPATH="$here"
-flags=(--oversubscribe)
-[ "$(id -u)" = 0 ] && flags+=(--allow-run-as-root)
+flags=("${mpirun_flags[@]}")
 
 timeout 300 "$mpirun" "${flags[@]}" -np 2 "$dealmpm" "$scene" -s "Output/Directory=out" \
   -s "Time/End time=0.02" -s "Output/Interval=0.01" -s "Output/Progress interval=0" \

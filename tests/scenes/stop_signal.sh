@@ -9,8 +9,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 source "$here/check_lib.sh"
 mpirun=$3
 export PYTHONPATH="$here"
-flags=(--oversubscribe)
-[ "$(id -u)" = 0 ] && flags+=(--allow-run-as-root)
+flags=("${mpirun_flags[@]}")
 # Long runs with an output every few steps (the grid too).
 long=(-s "Time/End time=1000" -s "Output/Interval=0.005" -s "Output/Write grid=true"
       -s "Output/Progress interval=0")
