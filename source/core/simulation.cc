@@ -140,7 +140,9 @@ namespace dealmpm
     prm.declare_entry("CFL number",
                       "0.5",
                       Patterns::Anything(),
-                      "CFL number C, 0 < C <= 1.");
+                      "CFL number C, 0 < C <= 1; 0.5 with the default MUSL "
+                      "and linear shape functions held every case of the "
+                      "defaults study (benchmarks/README.md).");
     prm.declare_entry("Maximum number of steps",
                       "0",
                       Patterns::Integer(0),
