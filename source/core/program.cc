@@ -1,8 +1,8 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
-#include <dealmpm/core/errors.h>
-#include <dealmpm/core/parameter_file.h>
+#include <dealmpm/base/errors.h>
+#include <dealmpm/base/parameter_file.h>
 #include <dealmpm/core/simulation.h>
 #include <dealmpm/study/study.h>
 

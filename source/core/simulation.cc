@@ -1,7 +1,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
-#include <dealmpm/core/errors.h>
+#include <dealmpm/base/errors.h>
 #include <dealmpm/core/simulation.h>
 #include <dealmpm/core/stop_signal.h>
 #include <dealmpm/grid/grid_update.h>

@@ -6,7 +6,7 @@
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/grid_tools.h>
 
-#include <dealmpm/core/errors.h>
+#include <dealmpm/base/errors.h>
 #include <dealmpm/grid/background_grid.h>
 
 #include <algorithm>

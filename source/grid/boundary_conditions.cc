@@ -1,6 +1,6 @@
 #include <deal.II/base/geometry_info.h>
 
-#include <dealmpm/core/errors.h>
+#include <dealmpm/base/errors.h>
 #include <dealmpm/grid/boundary_conditions.h>
 
 #include <algorithm>

@@ -1,6 +1,6 @@
 #include <deal.II/base/mpi.h>
 
-#include <dealmpm/core/errors.h>
+#include <dealmpm/base/errors.h>
 #include <dealmpm/io/output_file.h>
 
 #include <cerrno>

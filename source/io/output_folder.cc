@@ -1,4 +1,4 @@
-#include <dealmpm/core/errors.h>
+#include <dealmpm/base/errors.h>
 #include <dealmpm/io/output_folder.h>
 
 #include <filesystem>

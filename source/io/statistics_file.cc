@@ -1,4 +1,4 @@
-#include <dealmpm/core/errors.h>
+#include <dealmpm/base/errors.h>
 #include <dealmpm/io/statistics_file.h>
 
 #include <cerrno>

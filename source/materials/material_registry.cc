@@ -1,4 +1,4 @@
-#include <dealmpm/core/errors.h>
+#include <dealmpm/base/errors.h>
 #include <dealmpm/materials/linear_elastic.h>
 #include <dealmpm/materials/neo_hookean.h>
 

@@ -3,7 +3,7 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/grid_tools_cache.h>
 
-#include <dealmpm/core/errors.h>
+#include <dealmpm/base/errors.h>
 #include <dealmpm/particles/body.h>
 
 #include <cmath>

@@ -4,7 +4,7 @@
 // next to hanging nodes and in distorted cells; gradients against finite
 // differences; the quadratic B-spline against its closed form and its
 // refusal of refined grids.
-#include <dealmpm/core/errors.h>
+#include <dealmpm/base/errors.h>
 #include <dealmpm/transfer/kernel.h>
 
 #include <gtest/gtest.h>

@@ -3,10 +3,10 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
 
-#include <dealmpm/core/accuracy_report.h>
-#include <dealmpm/core/errors.h>
-#include <dealmpm/core/memory_estimate.h>
-#include <dealmpm/core/statistics.h>
+#include <dealmpm/base/errors.h>
+#include <dealmpm/diagnostics/accuracy_report.h>
+#include <dealmpm/diagnostics/memory_estimate.h>
+#include <dealmpm/diagnostics/statistics.h>
 #include <dealmpm/effects/effect.h>
 #include <dealmpm/grid/background_grid.h>
 #include <dealmpm/grid/boundary_conditions.h>

@@ -2,7 +2,7 @@
 
 #include <deal.II/base/point.h>
 
-#include <dealmpm/core/registry.h>
+#include <dealmpm/base/registry.h>
 #include <dealmpm/grid/background_grid.h>
 #include <dealmpm/grid/nodal_fields.h>
 #include <dealmpm/particles/particle_set.h>

@@ -8,7 +8,7 @@
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/affine_constraints.h>
 
-#include <dealmpm/core/scene_reader.h>
+#include <dealmpm/base/scene_reader.h>
 
 #include <array>
 #include <functional>

@@ -1,7 +1,7 @@
 #pragma once
 
-#include <dealmpm/core/accuracy_report.h>
-#include <dealmpm/core/statistics.h>
+#include <dealmpm/diagnostics/accuracy_report.h>
+#include <dealmpm/diagnostics/statistics.h>
 
 #include <string>
 

@@ -4,7 +4,7 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
-#include <dealmpm/core/registry.h>
+#include <dealmpm/base/registry.h>
 #include <dealmpm/particles/property_layout.h>
 
 #include <memory>

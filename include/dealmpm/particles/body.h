@@ -3,7 +3,7 @@
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/grid/tria.h>
 
-#include <dealmpm/core/scene_reader.h>
+#include <dealmpm/base/scene_reader.h>
 #include <dealmpm/grid/background_grid.h>
 #include <dealmpm/particles/particle_set.h>
 

@@ -1,4 +1,4 @@
-#include <dealmpm/core/memory_estimate.h>
+#include <dealmpm/diagnostics/memory_estimate.h>
 
 #include <algorithm>
 #include <cmath>

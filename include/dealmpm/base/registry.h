@@ -2,7 +2,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
-#include <dealmpm/core/scene_reader.h>
+#include <dealmpm/base/scene_reader.h>
 
 #include <functional>
 #include <map>

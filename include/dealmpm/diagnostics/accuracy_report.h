@@ -1,6 +1,6 @@
 #pragma once
 
-#include <dealmpm/core/statistics.h>
+#include <dealmpm/diagnostics/statistics.h>
 
 #include <ostream>
 

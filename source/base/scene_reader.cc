@@ -1,7 +1,7 @@
 #include <deal.II/base/utilities.h>
 
-#include <dealmpm/core/errors.h>
-#include <dealmpm/core/scene_reader.h>
+#include <dealmpm/base/errors.h>
+#include <dealmpm/base/scene_reader.h>
 
 #include <cmath>
 #include <filesystem>

@@ -1,7 +1,7 @@
 #include <deal.II/base/utilities.h>
 
-#include <dealmpm/core/errors.h>
-#include <dealmpm/core/parameter_file.h>
+#include <dealmpm/base/errors.h>
+#include <dealmpm/base/parameter_file.h>
 
 #include <fstream>
 #include <regex>

@@ -1,6 +1,6 @@
 #include <deal.II/base/mpi.h>
 
-#include <dealmpm/core/statistics.h>
+#include <dealmpm/diagnostics/statistics.h>
 
 #include <cmath>
 

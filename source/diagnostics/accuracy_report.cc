@@ -1,4 +1,4 @@
-#include <dealmpm/core/accuracy_report.h>
+#include <dealmpm/diagnostics/accuracy_report.h>
 
 #include <algorithm>
 #include <cmath>
