@@ -121,147 +121,10 @@ namespace dealmpm
         effect_registry<dim>().get(name).declare(prm);
         prm.leave_subsection();
       }
-
-    prm.enter_subsection("Time");
-    prm.declare_entry("End time",
-                      "1",
-                      Patterns::Anything(),
-                      "Simulated time (s), > 0.");
-    prm.declare_entry(
-      "Time step method",
-      "CFL",
-      Patterns::Selection("CFL|fixed"),
-      "'CFL': dt = CFL number x min over particles of h / (c_p + |v_p|), "
-      "recomputed every step; 'fixed': Time step.");
-    prm.declare_entry("Time step",
-                      "1e-3",
-                      Patterns::Anything(),
-                      "Fixed time step (s), > 0.");
-    prm.declare_entry("CFL number",
-                      "0.5",
-                      Patterns::Anything(),
-                      "CFL number C, 0 < C <= 1; 0.5 with the default MUSL "
-                      "and linear shape functions held every case of the "
-                      "defaults study (benchmarks/README.md).");
-    prm.declare_entry("Maximum number of steps",
-                      "0",
-                      Patterns::Integer(0),
-                      "Stop after this many steps (0: no limit).");
-    prm.leave_subsection();
-
-    prm.enter_subsection("MPM");
-    prm.declare_entry(
-      "Stress update",
-      "MUSL",
-      Patterns::Selection(update_scheme_pattern()),
-      "When the stress is updated: 'MUSL' (last, with the grid velocity "
-      "re-mapped from the updated particles: robust where nodes carry "
-      "little mass; the default, chosen by the defaults study in "
-      "benchmarks/README.md), 'USL' (last, with the step's new grid "
-      "velocity; one sweep, about 1.5x faster, but with linear shape "
-      "functions unstable when particles cross cells), 'USF' (first, with "
-      "the velocity at the start of the step; gains energy).");
-    prm.declare_entry(
-      "Shape function",
-      "linear",
-      Patterns::Selection(shape_function_pattern()),
-      "Particle-node weights: 'linear' (the grid's Q1 functions at the "
-      "particle; cheapest, but noisy when particles cross cells), 'uGIMP' "
-      "(their average over a fixed particle domain of one particle "
-      "spacing), 'cpGIMP' (the domain stretches with F's diagonal), 'CPDI' "
-      "(the domain is the parallelogram F maps it to; for large shear and "
-      "rotation, any quadrilateral grid), 'quadratic B-spline' (smooth, "
-      "3^dim nodes per particle; a uniform box grid without local "
-      "refinement). GIMP needs axis-aligned box cells. GIMP and CPDI add "
-      "dim doubles per particle.");
-    prm.declare_entry(
-      "Velocity update",
-      "FLIP",
-      Patterns::Selection("FLIP|PIC|blend|APIC"),
-      "Particle velocity from the grid: FLIP (increment, little "
-      "dissipation), PIC (interpolated velocity, dissipative), "
-      "blend (Blend factor x FLIP + (1 - Blend factor) x PIC), or APIC "
-      "(Jiang et al. 2015: PIC plus a per-particle affine velocity, "
-      "conserves angular momentum; adds dim x dim doubles per particle; "
-      "with USL or USF).");
-    prm.declare_entry("Blend factor",
-                      "0.99",
-                      Patterns::Anything(),
-                      "FLIP fraction for 'blend', in [0, 1].");
-    prm.declare_entry(
-      "Nodal mass threshold",
-      "1e-9",
-      Patterns::Anything(),
-      "Nodes with mass below this fraction of the mean particle "
-      "mass are inactive (no velocity), in [0, 1e-3]: a guard "
-      "against division by round-off, not a physical cut-off.");
-    prm.declare_entry(
-      "Particles leaving the grid",
-      "remove",
-      Patterns::Selection("remove|stop"),
-      "'remove': drop them with a warning and count them in the "
-      "statistics; 'stop': end the run with a message.");
-    prm.leave_subsection();
-
-    prm.enter_subsection("Checks");
-    prm.declare_entry(
-      "Energy growth limit",
-      "0.1",
-      Patterns::Anything(),
-      "Stop the run (exit code 3) when the total energy, less the work of "
-      "external forces, has grown by more than this fraction of the energy "
-      "put in (kinetic and strain energy at the start, work of external "
-      "forces, potential energy released): energy a scheme creates. Checked "
-      "at every output and every few steps; 0: off.");
-    prm.declare_entry(
-      "Memory limit",
-      "0",
-      Patterns::Anything(),
-      "GB the run may use (all ranks together); 0: the memory available on "
-      "the machines it runs on. A scene whose estimated memory (cells and "
-      "particles, printed in the start line) exceeds it is refused before "
-      "anything big is made.");
-    prm.declare_entry(
-      "CFL warning",
-      "0.5",
-      Patterns::Anything(),
-      "With a fixed time step: warn once when a particle's CFL number "
-      "dt (c_p + |v_p|) / h passes this, in (0, 1]; past 1 the run stops "
-      "(exit code 3) and says the largest stable step.");
-    prm.leave_subsection();
-
-    prm.enter_subsection("Output");
-    prm.declare_entry(
-      "Directory",
-      "output",
-      Patterns::Anything(),
-      "Folder for all output (created; relative to the working directory). "
-      "The files of an earlier run in it (particles_*, grid_*, "
-      "statistics.csv, *.pvd) are removed first; other files stay.");
-    prm.declare_entry(
-      "Interval",
-      "0.1",
-      Patterns::Anything(),
-      "Simulated time between outputs (s); 0: only the first and last step.");
-    prm.declare_entry("Write particles",
-                      "true",
-                      Patterns::Bool(),
-                      "Particle .vtu/.pvtu files and particles.pvd.");
-    prm.declare_entry(
-      "Write grid",
-      "false",
-      Patterns::Bool(),
-      "Grid .vtu/.pvtu files (nodal mass and velocity, level, rank) and grid.pvd.");
-    prm.declare_entry(
-      "Particle CSV",
-      "false",
-      Patterns::Bool(),
-      "Also particles_NNNNN.csv (id, position, velocity, displacement, J, body).");
-    prm.declare_entry("Progress interval",
-                      "5",
-                      Patterns::Anything(),
-                      "Seconds of wall time between progress lines (0: none).");
-    prm.leave_subsection();
+    TimeStepping::declare_parameters(prm);
+    MethodSettings::declare_parameters(prm);
+    CheckSettings::declare_parameters(prm);
+    OutputSettings::declare_parameters(prm);
   }
 
   template <int dim>
@@ -288,7 +151,7 @@ namespace dealmpm
                 [&](const GridSize<dim> &size) { check_memory(reader, size); });
     {
       const std::string problem =
-        kernel.setup(run_settings.shape_function, grid);
+        kernel.setup(run_settings.method.shape_function, grid);
       if (!problem.empty())
         {
           SectionScope mpm(reader, "MPM");
@@ -300,7 +163,7 @@ namespace dealmpm
                                 reader, grid.triangulation.get_boundary_ids()));
     create_particles(reader);
     fields.reinit(grid.partitioner);
-    stages = stages_of(run_settings.scheme);
+    stages = stages_of(run_settings.method.scheme);
 
     particle_check  = check_particles(grid, materials, *particles);
     max_signal_rate = Utilities::MPI::max(particle_check.max_signal_rate, comm);
@@ -314,58 +177,10 @@ namespace dealmpm
   void
   Simulation<dim>::read_run_settings(SceneReader &reader)
   {
-    RunSettings &s = run_settings;
-    {
-      SectionScope time(reader, "Time");
-      s.end_time        = reader.get_positive("End time");
-      s.cfl_time_step   = reader.get("Time step method") == "CFL";
-      s.fixed_time_step = reader.get_positive("Time step");
-      s.cfl_number      = reader.get_double("CFL number");
-      if (!(s.cfl_number > 0 && s.cfl_number <= 1))
-        reader.fail("CFL number", "a number in (0, 1]");
-      s.max_steps = reader.get_integer("Maximum number of steps");
-    }
-    {
-      SectionScope      mpm(reader, "MPM");
-      const std::string update = reader.get("Velocity update");
-      s.scheme         = parse_update_scheme(reader.get("Stress update"));
-      s.apic           = update == "APIC";
-      s.shape_function = parse_shape_function(reader.get("Shape function"));
-      s.flip_fraction =
-        update == "FLIP" ?
-          1. :
-          (update == "blend" ? reader.get_double("Blend factor") : 0.);
-      if (!(s.flip_fraction >= 0 && s.flip_fraction <= 1))
-        reader.fail("Blend factor", "a number in [0, 1]");
-      s.relative_mass_threshold =
-        reader.get_nonnegative("Nodal mass threshold");
-      if (s.relative_mass_threshold > 1e-3)
-        reader.fail(
-          "Nodal mass threshold",
-          "a number in [0, 1e-3]: particles still use the nodes below it, "
-          "which then have no velocity");
-      s.stop_when_particles_leave =
-        reader.get("Particles leaving the grid") == "stop";
-    }
-    {
-      SectionScope checks(reader, "Checks");
-      s.energy_growth_limit = reader.get_nonnegative("Energy growth limit");
-      s.cfl_warning         = reader.get_double("CFL warning");
-      s.memory_limit        = reader.get_nonnegative("Memory limit") * 1e9;
-      if (!(s.cfl_warning > 0 && s.cfl_warning <= 1))
-        reader.fail("CFL warning", "a number in (0, 1]");
-    }
-    {
-      SectionScope output(reader, "Output");
-      s.output_directory = reader.get("Directory");
-      if (s.output_directory.empty())
-        reader.fail("Directory", "a folder name");
-      s.output_interval    = reader.get_nonnegative("Interval");
-      s.write_particles    = reader.get_bool("Write particles");
-      s.write_grid         = reader.get_bool("Write grid");
-      s.write_particle_csv = reader.get_bool("Particle CSV");
-      s.progress_interval  = reader.get_nonnegative("Progress interval");
-    }
+    run_settings.time   = TimeStepping::read(reader);
+    run_settings.method = MethodSettings::read(reader);
+    run_settings.checks = CheckSettings::read(reader);
+    run_settings.output = OutputSettings::read(reader);
   }
 
   template <int dim>
@@ -461,7 +276,7 @@ namespace dealmpm
                                 const GridSize<dim> &size)
   {
     memory                 = estimate_memory(size, bodies);
-    const double limit     = run_settings.memory_limit;
+    const double limit     = run_settings.checks.memory_limit;
     const double available = limit > 0 ? limit : available_memory(comm);
     if (available > 0 && memory.bytes > available)
       {
@@ -508,9 +323,9 @@ namespace dealmpm
                                          *grid.mapping,
                                          material_models,
                                          internal,
-                                         run_settings.apic,
+                                         run_settings.method.apic,
                                          has_particle_domain(
-                                           run_settings.shape_function));
+                                           run_settings.method.shape_function));
     particles->handler.signals.particle_lost.connect(
       [this](const typename Particles::ParticleIterator<dim> &p,
              const typename Triangulation<dim>::active_cell_iterator &) {
@@ -567,7 +382,7 @@ namespace dealmpm
       }
     const Statistics s = statistics();
     mass_threshold =
-      run_settings.relative_mass_threshold * s.mass / s.n_particles;
+      run_settings.method.relative_mass_threshold * s.mass / s.n_particles;
   }
 
   template <int dim>
@@ -592,10 +407,10 @@ namespace dealmpm
   double
   Simulation<dim>::time_step() const
   {
-    if (!run_settings.cfl_time_step)
-      return run_settings.fixed_time_step;
+    if (!run_settings.time.cfl_time_step)
+      return run_settings.time.fixed_time_step;
     AssertThrow(max_signal_rate > 0, ExcInternalError());
-    return run_settings.cfl_number / max_signal_rate;
+    return run_settings.time.cfl_number / max_signal_rate;
   }
 
   template <int dim>
@@ -605,7 +420,7 @@ namespace dealmpm
     {
       TimerOutput::Scope t(*computing_timer, "stencil");
       kernel.compute_stencil(grid, *particles, stencil);
-      if (run_settings.apic)
+      if (run_settings.method.apic)
         record_positions(grid, *particles, stencil);
     }
     if (Utilities::MPI::logical_or(stencil.failed, comm))
@@ -616,7 +431,7 @@ namespace dealmpm
                        dt);
     bool              left_cell = false;
     StressUpdate<dim> stress_update(materials, *particles, dt);
-    const double      flip = run_settings.flip_fraction;
+    const double      flip = run_settings.method.flip_fraction;
     for (const Stage stage : stages)
       switch (stage)
         {
@@ -745,7 +560,7 @@ namespace dealmpm
   Simulation<dim>::check_fixed_time_step(const double dt)
   {
     const double cfl = dt * max_signal_rate;
-    if (cfl <= run_settings.cfl_warning || (cfl_warned && cfl <= 1))
+    if (cfl <= run_settings.checks.cfl_warning || (cfl_warned && cfl <= 1))
       return;
     std::ostringstream text;
     text << std::setprecision(3) << "step " << step + 1
@@ -759,8 +574,8 @@ namespace dealmpm
                      short_number(1. / max_signal_rate) +
                      ": set a smaller 'Time/Time step' or 'Time/Time step "
                      "method = CFL'");
-    pcout << "warning: " << text.str()
-          << " (above 'Checks/CFL warning' = " << run_settings.cfl_warning
+    pcout << "warning: " << text.str() << " (above 'Checks/CFL warning' = "
+          << run_settings.checks.cfl_warning
           << "; unstable above 1, at a step of "
           << short_number(1. / max_signal_rate) << "); warned once"
           << std::endl;
@@ -787,7 +602,7 @@ namespace dealmpm
             << 100 * accuracy.report().energy_drift
             << " % of the energy put in (limit 'Checks/Energy growth limit' "
                "= "
-            << 100 * run_settings.energy_growth_limit
+            << 100 * run_settings.checks.energy_growth_limit
             << " %); the particle whose energy grew most: "
             << first_message(local.gain == largest ? particle.str() : "", comm)
             << ". Energy grows when particles cross cells and when nodes "
@@ -817,7 +632,7 @@ namespace dealmpm
     std::ostringstream message;
     message << "step " << step << " (t = " << current_time << "): " << n_lost
             << " particle(s) left the grid (first: " << first << ")";
-    if (run_settings.stop_when_particles_leave)
+    if (run_settings.method.stop_when_particles_leave)
       throw RunError(message.str() +
                      "; set 'MPM/Particles leaving the grid = remove' "
                      "to drop such particles instead");
@@ -830,7 +645,7 @@ namespace dealmpm
     const std::function<void()> &write_statistics_row)
   {
     TimerOutput::Scope t(*computing_timer, "output");
-    const std::string &dir    = run_settings.output_directory;
+    const std::string &dir    = run_settings.output.directory;
     const bool         writer = Utilities::MPI::this_mpi_process(comm) == 0;
     std::ostringstream context;
     context << "; the output in " << dir << "/ is complete";
@@ -858,16 +673,16 @@ namespace dealmpm
         }
     };
     std::string particle_file, grid_file;
-    if (run_settings.write_particles)
+    if (run_settings.output.write_particles)
       attempt([&] {
         particle_output.build_patches(*particles, materials);
         particle_file = particle_output.write(dir, output_counter, comm);
       });
-    if (run_settings.write_grid)
+    if (run_settings.output.write_grid)
       attempt([&] {
         grid_file = write_grid_output(grid, fields, dir, output_counter);
       });
-    if (run_settings.write_particle_csv)
+    if (run_settings.output.write_particle_csv)
       attempt([&] {
         std::ostringstream name;
         name << dir << "/particles_" << std::setw(5) << std::setfill('0')
@@ -908,15 +723,15 @@ namespace dealmpm
     if (writer)
       try
         {
-          std::filesystem::create_directories(s.output_directory);
+          std::filesystem::create_directories(s.output.directory);
           try
             {
               // An earlier run's series beside the new one (its later
               // steps, its grid files) would mislead whoever opens the
               // folder.
-              n_removed = remove_earlier_output(s.output_directory);
+              n_removed = remove_earlier_output(s.output.directory);
               stats     = std::make_unique<StatisticsFile>(
-                s.output_directory + "/statistics.csv", dim, initial.has_error);
+                s.output.directory + "/statistics.csv", dim, initial.has_error);
             }
           catch (const OutputError &e)
             {
@@ -930,18 +745,20 @@ namespace dealmpm
     problem = Utilities::MPI::broadcast(comm, problem, 0);
     if (!problem.empty())
       throw InputError(scene_file + ": entry 'Output/Directory' = '" +
-                       s.output_directory +
+                       s.output.directory +
                        "': expected a folder that can be created and "
                        "written (" +
                        problem + ")");
     agree_on_output_error(output_problem, "", comm);
-    Progress progress(std::cout, s.progress_interval, writer && s.verbose);
+    Progress progress(std::cout,
+                      s.output.progress_interval,
+                      writer && s.output.verbose);
 
     const double local_particles =
       particles->handler.n_locally_owned_particles();
     const double fewest = Utilities::MPI::min(local_particles, comm);
     const double most   = Utilities::MPI::max(local_particles, comm);
-    if (s.verbose)
+    if (s.output.verbose)
       {
         pcout << "dealmpm: " << dim << "D, "
               << grid.triangulation.n_global_active_cells() << " cells, "
@@ -951,17 +768,17 @@ namespace dealmpm
               << " rank(s) (" << fewest << " to " << most
               << " particles per rank), about "
               << short_number(memory.bytes / 1e9) << " GB estimated; output in "
-              << s.output_directory << "/";
+              << s.output.directory << "/";
         if (n_removed > 0)
           pcout << " (removed " << n_removed << " files of an earlier run)";
         pcout << std::endl;
       }
-    if (s.write_grid)
+    if (s.output.write_grid)
       {
         // The grid output at t = 0 shows the particles' mass and velocity
         // p / m on the nodes, as every later one does, instead of zeros.
         kernel.compute_stencil(grid, *particles, stencil);
-        if (s.apic)
+        if (s.method.apic)
           record_positions(grid, *particles, stencil);
         if (!Utilities::MPI::logical_or(stencil.failed, comm))
           {
@@ -997,18 +814,18 @@ namespace dealmpm
         last_output_step = step;
       };
 
-    double       next_output      = s.output_interval;
+    double       next_output      = s.output.interval;
     double       particle_steps   = 0;
     double       stepping_time    = 0;
     double       dt               = 0;
-    const double time_tolerance   = 1e-9 * s.end_time;
+    const double time_tolerance   = 1e-9 * s.time.end_time;
     const auto   with_last_output = [&](const RunError &error) {
       return RunError(
         std::string(error.what()) + ". The last good output (t = " +
-        short_number(last_output_time) + ") is in " + s.output_directory + "/");
+        short_number(last_output_time) + ") is in " + s.output.directory + "/");
     };
-    while (current_time < s.end_time - time_tolerance &&
-           (s.max_steps == 0 || step < s.max_steps))
+    while (current_time < s.time.end_time - time_tolerance &&
+           (s.time.max_steps == 0 || step < s.time.max_steps))
       {
         // mpirun passes the signal to every rank, but not at the same
         // moment: the ranks stop at the same step only if they agree.
@@ -1019,13 +836,13 @@ namespace dealmpm
           throw RunError("step " + std::to_string(step) +
                          " (t = " + short_number(current_time) +
                          "): no particles are left in the grid");
-        dt = std::min(time_step(), s.end_time - current_time);
+        dt = std::min(time_step(), s.time.end_time - current_time);
         const double n_particles = particles->handler.n_global_particles();
         // Stepping time: the step and its checks, not the output.
         const auto start = std::chrono::steady_clock::now();
         try
           {
-            if (!s.cfl_time_step)
+            if (!s.time.cfl_time_step)
               check_fixed_time_step(dt);
             advance(dt);
           }
@@ -1035,13 +852,13 @@ namespace dealmpm
           }
         particle_steps += n_particles;
 
-        const bool last = !(current_time < s.end_time - time_tolerance) ||
-                          (s.max_steps != 0 && step >= s.max_steps);
+        const bool last = !(current_time < s.time.end_time - time_tolerance) ||
+                          (s.time.max_steps != 0 && step >= s.time.max_steps);
         const bool output_due =
-          last || (s.output_interval > 0 &&
+          last || (s.output.interval > 0 &&
                    current_time >= next_output - time_tolerance);
         const bool energy_check_due =
-          s.energy_growth_limit > 0 &&
+          s.checks.energy_growth_limit > 0 &&
           (output_due || step % energy_check_interval == 0);
         Statistics now;
         double     work = 0;
@@ -1051,7 +868,7 @@ namespace dealmpm
             work = external_work();
             accuracy.observe(now, work);
             if (energy_check_due &&
-                accuracy.report().energy_drift > s.energy_growth_limit)
+                accuracy.report().energy_drift > s.checks.energy_growth_limit)
               throw with_last_output(energy_growth_error());
           }
         stepping_time += std::chrono::duration<double>(
@@ -1061,13 +878,13 @@ namespace dealmpm
           {
             // The next multiple of the interval (no loop: a tiny interval
             // cannot make it spin).
-            if (s.output_interval > 0)
+            if (s.output.interval > 0)
               next_output =
-                (std::floor(current_time / s.output_interval + 1e-9) + 1) *
-                s.output_interval;
+                (std::floor(current_time / s.output.interval + 1e-9) + 1) *
+                s.output.interval;
             output(dt, now, work);
           }
-        progress.update(step, current_time, dt, s.end_time, n_particles);
+        progress.update(step, current_time, dt, s.time.end_time, n_particles);
       }
     if (stopped_by_signal != 0 && last_output_step != step)
       {
@@ -1077,7 +894,7 @@ namespace dealmpm
         output(dt, now, work);
       }
 
-    if (s.verbose)
+    if (s.output.verbose)
       {
         computing_timer->print_summary();
         pcout << "dealmpm: " << accuracy.report() << std::endl;
@@ -1098,7 +915,7 @@ namespace dealmpm
     if (stopped_by_signal != 0)
       pcout << "dealmpm: stopped by " << signal_name(stopped_by_signal)
             << " at step " << step << " (t = " << current_time
-            << "); output in " << s.output_directory << "/ is complete"
+            << "); output in " << s.output.directory << "/ is complete"
             << std::endl;
   }
 

@@ -5,18 +5,22 @@
 
 #include <dealmpm/base/errors.h>
 #include <dealmpm/diagnostics/accuracy_report.h>
+#include <dealmpm/diagnostics/check_settings.h>
 #include <dealmpm/diagnostics/memory_estimate.h>
 #include <dealmpm/diagnostics/statistics.h>
 #include <dealmpm/effects/effect.h>
 #include <dealmpm/grid/background_grid.h>
 #include <dealmpm/grid/boundary_conditions.h>
 #include <dealmpm/grid/nodal_fields.h>
+#include <dealmpm/io/output_settings.h>
 #include <dealmpm/io/particle_output.h>
 #include <dealmpm/io/pvd_series.h>
 #include <dealmpm/materials/material.h>
 #include <dealmpm/materials/stress_update.h>
 #include <dealmpm/particles/body.h>
 #include <dealmpm/particles/particle_set.h>
+#include <dealmpm/schemes/method_settings.h>
+#include <dealmpm/schemes/time_stepping.h>
 #include <dealmpm/schemes/update_scheme.h>
 #include <dealmpm/transfer/kernel.h>
 
@@ -35,35 +39,13 @@ namespace dealmpm
     unsigned int n_materials = 1;
   };
 
-  /** Time stepping, transfer and output settings of a run. */
+  /** A run's settings, each section read by the part it belongs to. */
   struct RunSettings
   {
-    double       end_time        = 1;
-    bool         cfl_time_step   = true;
-    double       fixed_time_step = 1e-3;
-    double       cfl_number      = 0.5;
-    unsigned int max_steps       = 0; ///< 0: no limit
-    UpdateScheme scheme          = UpdateScheme::MUSL;
-    double       flip_fraction   = 1; ///< 1 FLIP, 0 PIC
-    bool         apic            = false;
-    /** "linear", "uGIMP" or "cpGIMP". */
-    ShapeFunction shape_function            = ShapeFunction::linear;
-    double        relative_mass_threshold   = 1e-9;
-    bool          stop_when_particles_leave = false;
-    /** Fraction of the energy put in; 0: no check. */
-    double energy_growth_limit = 0.1;
-    /** Fixed time step: particle CFL number that gets a warning. */
-    double cfl_warning = 0.5;
-    /** Bytes the run may use; 0: what the machines have available. */
-    double memory_limit = 0;
-
-    std::string output_directory   = "output";
-    double      output_interval    = 0.1;
-    bool        write_particles    = true;
-    bool        write_grid         = false;
-    bool        write_particle_csv = false;
-    double      progress_interval  = 5;
-    bool        verbose            = true;
+    TimeStepping   time;
+    MethodSettings method;
+    CheckSettings  checks;
+    OutputSettings output;
   };
 
   /**

@@ -1,0 +1,37 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <dealmpm/base/scene_reader.h>
+#include <dealmpm/schemes/update_scheme.h>
+#include <dealmpm/transfer/kernel.h>
+
+#include <string>
+
+namespace dealmpm
+{
+  using namespace dealii;
+
+  /**
+   * The "MPM" section: the stress update scheme, the shape function, the
+   * velocity transfer, the nodal mass threshold and what happens to
+   * particles that leave the grid.
+   */
+  struct MethodSettings
+  {
+    UpdateScheme  scheme                    = UpdateScheme::MUSL;
+    double        flip_fraction             = 1; ///< 1 FLIP, 0 PIC
+    bool          apic                      = false;
+    ShapeFunction shape_function            = ShapeFunction::linear;
+    double        relative_mass_threshold   = 1e-9;
+    bool          stop_when_particles_leave = false;
+
+    /** Declare the section's entries. */
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /** Read and check the section (the reader at the top level). */
+    static MethodSettings
+    read(SceneReader &reader);
+  };
+} // namespace dealmpm

@@ -1,0 +1,57 @@
+#include <dealmpm/io/output_settings.h>
+
+namespace dealmpm
+{
+  void
+  OutputSettings::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    prm.declare_entry(
+      "Directory",
+      "output",
+      Patterns::Anything(),
+      "Folder for all output (created; relative to the working directory). "
+      "The files of an earlier run in it (particles_*, grid_*, "
+      "statistics.csv, *.pvd) are removed first; other files stay.");
+    prm.declare_entry(
+      "Interval",
+      "0.1",
+      Patterns::Anything(),
+      "Simulated time between outputs (s); 0: only the first and last step.");
+    prm.declare_entry("Write particles",
+                      "true",
+                      Patterns::Bool(),
+                      "Particle .vtu/.pvtu files and particles.pvd.");
+    prm.declare_entry(
+      "Write grid",
+      "false",
+      Patterns::Bool(),
+      "Grid .vtu/.pvtu files (nodal mass and velocity, level, rank) and grid.pvd.");
+    prm.declare_entry(
+      "Particle CSV",
+      "false",
+      Patterns::Bool(),
+      "Also particles_NNNNN.csv (id, position, velocity, displacement, J, body).");
+    prm.declare_entry("Progress interval",
+                      "5",
+                      Patterns::Anything(),
+                      "Seconds of wall time between progress lines (0: none).");
+    prm.leave_subsection();
+  }
+
+  OutputSettings
+  OutputSettings::read(SceneReader &reader)
+  {
+    OutputSettings s;
+    SectionScope   output(reader, "Output");
+    s.directory = reader.get("Directory");
+    if (s.directory.empty())
+      reader.fail("Directory", "a folder name");
+    s.interval           = reader.get_nonnegative("Interval");
+    s.write_particles    = reader.get_bool("Write particles");
+    s.write_grid         = reader.get_bool("Write grid");
+    s.write_particle_csv = reader.get_bool("Particle CSV");
+    s.progress_interval  = reader.get_nonnegative("Progress interval");
+    return s;
+  }
+} // namespace dealmpm

@@ -1,0 +1,88 @@
+#include <dealmpm/schemes/method_settings.h>
+
+namespace dealmpm
+{
+  void
+  MethodSettings::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("MPM");
+    prm.declare_entry(
+      "Stress update",
+      "MUSL",
+      Patterns::Selection(update_scheme_pattern()),
+      "When the stress is updated: 'MUSL' (last, with the grid velocity "
+      "re-mapped from the updated particles: robust where nodes carry "
+      "little mass; the default, chosen by the defaults study in "
+      "benchmarks/README.md), 'USL' (last, with the step's new grid "
+      "velocity; one sweep, about 1.5x faster, but with linear shape "
+      "functions unstable when particles cross cells), 'USF' (first, with "
+      "the velocity at the start of the step; gains energy).");
+    prm.declare_entry(
+      "Shape function",
+      "linear",
+      Patterns::Selection(shape_function_pattern()),
+      "Particle-node weights: 'linear' (the grid's Q1 functions at the "
+      "particle; cheapest, but noisy when particles cross cells), 'uGIMP' "
+      "(their average over a fixed particle domain of one particle "
+      "spacing), 'cpGIMP' (the domain stretches with F's diagonal), 'CPDI' "
+      "(the domain is the parallelogram F maps it to; for large shear and "
+      "rotation, any quadrilateral grid), 'quadratic B-spline' (smooth, "
+      "3^dim nodes per particle; a uniform box grid without local "
+      "refinement). GIMP needs axis-aligned box cells. GIMP and CPDI add "
+      "dim doubles per particle.");
+    prm.declare_entry(
+      "Velocity update",
+      "FLIP",
+      Patterns::Selection("FLIP|PIC|blend|APIC"),
+      "Particle velocity from the grid: FLIP (increment, little "
+      "dissipation), PIC (interpolated velocity, dissipative), "
+      "blend (Blend factor x FLIP + (1 - Blend factor) x PIC), or APIC "
+      "(Jiang et al. 2015: PIC plus a per-particle affine velocity, "
+      "conserves angular momentum; adds dim x dim doubles per particle; "
+      "with USL or USF).");
+    prm.declare_entry("Blend factor",
+                      "0.99",
+                      Patterns::Anything(),
+                      "FLIP fraction for 'blend', in [0, 1].");
+    prm.declare_entry(
+      "Nodal mass threshold",
+      "1e-9",
+      Patterns::Anything(),
+      "Nodes with mass below this fraction of the mean particle "
+      "mass are inactive (no velocity), in [0, 1e-3]: a guard "
+      "against division by round-off, not a physical cut-off.");
+    prm.declare_entry(
+      "Particles leaving the grid",
+      "remove",
+      Patterns::Selection("remove|stop"),
+      "'remove': drop them with a warning and count them in the "
+      "statistics; 'stop': end the run with a message.");
+    prm.leave_subsection();
+  }
+
+  MethodSettings
+  MethodSettings::read(SceneReader &reader)
+  {
+    MethodSettings    s;
+    SectionScope      mpm(reader, "MPM");
+    const std::string update = reader.get("Velocity update");
+    s.scheme                 = parse_update_scheme(reader.get("Stress update"));
+    s.apic                   = update == "APIC";
+    s.shape_function = parse_shape_function(reader.get("Shape function"));
+    s.flip_fraction =
+      update == "FLIP" ?
+        1. :
+        (update == "blend" ? reader.get_double("Blend factor") : 0.);
+    if (!(s.flip_fraction >= 0 && s.flip_fraction <= 1))
+      reader.fail("Blend factor", "a number in [0, 1]");
+    s.relative_mass_threshold = reader.get_nonnegative("Nodal mass threshold");
+    if (s.relative_mass_threshold > 1e-3)
+      reader.fail(
+        "Nodal mass threshold",
+        "a number in [0, 1e-3]: particles still use the nodes below it, "
+        "which then have no velocity");
+    s.stop_when_particles_leave =
+      reader.get("Particles leaving the grid") == "stop";
+    return s;
+  }
+} // namespace dealmpm
