@@ -4,6 +4,7 @@
 #include <dealmpm/base/errors.h>
 #include <dealmpm/core/simulation.h>
 #include <dealmpm/core/stop_signal.h>
+#include <dealmpm/diagnostics/run_messages.h>
 #include <dealmpm/grid/grid_update.h>
 #include <dealmpm/io/grid_output.h>
 #include <dealmpm/io/output_file.h>
@@ -23,41 +24,6 @@
 
 namespace dealmpm
 {
-  namespace
-  {
-    std::string
-    format_point(const double *x, const unsigned int dim)
-    {
-      std::ostringstream s;
-      s << std::setprecision(6) << '(';
-      for (unsigned int d = 0; d < dim; ++d)
-        s << (d ? ", " : "") << x[d];
-      s << ')';
-      return s.str();
-    }
-
-    /** x with 3 significant digits (messages). */
-    std::string
-    short_number(const double x)
-    {
-      std::ostringstream s;
-      s << std::setprecision(3) << x;
-      return s.str();
-    }
-
-    /** The message of the lowest rank that has one, on every rank. */
-    std::string
-    first_message(const std::string &local, const MPI_Comm comm)
-    {
-      const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
-      const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
-      const unsigned int root =
-        Utilities::MPI::min(local.empty() ? n_ranks : rank, comm);
-      if (root == n_ranks)
-        return "";
-      return Utilities::MPI::broadcast(comm, local, root);
-    }
-  } // namespace
 
   template <int dim>
   void
@@ -163,7 +129,7 @@ namespace dealmpm
                                 reader, grid.triangulation.get_boundary_ids()));
     create_particles(reader);
     fields.reinit(grid.partitioner);
-    stages = stages_of(run_settings.method.scheme);
+    stages = stages_of<dim>(run_settings.method.scheme);
 
     particle_check  = check_particles(grid, materials, *particles);
     max_signal_rate = Utilities::MPI::max(particle_check.max_signal_rate, comm);
@@ -308,11 +274,10 @@ namespace dealmpm
           if (s.first[d] < g.first[d] - tolerance ||
               s.second[d] > g.second[d] + tolerance)
             reader.fail("Shape",
-                        "a body inside the grid " +
-                          format_point(&g.first[0], dim) + " - " +
-                          format_point(&g.second[0], dim) + ", but it spans " +
-                          format_point(&s.first[0], dim) + " - " +
-                          format_point(&s.second[0], dim));
+                        "a body inside the grid " + format_point(g.first) +
+                          " - " + format_point(g.second) + ", but it spans " +
+                          format_point(s.first) + " - " +
+                          format_point(s.second));
       }
 
     std::vector<std::vector<FieldDescription>> internal;
@@ -417,89 +382,25 @@ namespace dealmpm
   void
   Simulation<dim>::advance(const double dt)
   {
-    {
-      TimerOutput::Scope t(*computing_timer, "stencil");
-      kernel.compute_stencil(grid, *particles, stencil);
-      if (run_settings.method.apic)
-        record_positions(grid, *particles, stencil);
-    }
-    if (Utilities::MPI::logical_or(stencil.failed, comm))
-      stop_on_particle(stencil.failed,
-                       stencil.failed_particle,
-                       stencil.failed_location,
-                       stencil.failure,
-                       dt);
-    bool              left_cell = false;
-    StressUpdate<dim> stress_update(materials, *particles, dt);
-    const double      flip = run_settings.method.flip_fraction;
-    for (const Stage stage : stages)
-      switch (stage)
-        {
-          case Stage::p2g_all:
-          case Stage::p2g_mass_momentum:
-            case Stage::p2g_force: {
-              TimerOutput::Scope t(*computing_timer, "P2G");
-              particle_to_grid(grid,
-                               *particles,
-                               stencil,
-                               fields,
-                               stage != Stage::p2g_force,
-                               stage != Stage::p2g_mass_momentum);
-              break;
-            }
-          case Stage::apply_effects:
-            for (unsigned int e = 0; e < effects.size(); ++e)
-              {
-                TimerOutput::Scope t(*computing_timer,
-                                     "effect: " + effect_names[e]);
-                effects[e]->add_nodal_forces(
-                  StepState<dim>{grid, *particles, stencil, current_time, dt},
-                  fields);
-              }
-            // Damping-like effects act on the total force.
-            for (unsigned int e = 0; e < effects.size(); ++e)
-              {
-                TimerOutput::Scope t(*computing_timer,
-                                     "effect: " + effect_names[e]);
-                effects[e]->adjust_nodal_forces(fields);
-              }
-            break;
-            case Stage::grid_update: {
-              TimerOutput::Scope t(*computing_timer, "grid update");
-              update_nodal_velocity(fields,
-                                    dt,
-                                    mass_threshold,
-                                    boundary_conditions);
-              break;
-            }
-            case Stage::velocity_from_momentum: {
-              TimerOutput::Scope t(*computing_timer, "grid update");
-              velocity_from_momentum(fields,
-                                     mass_threshold,
-                                     boundary_conditions);
-              break;
-            }
-            case Stage::g2p_motion_and_stress: {
-              TimerOutput::Scope t(*computing_timer, "G2P and stress update");
-              left_cell = grid_to_particle<G2P::motion_and_deformation>(
-                grid, stencil, fields, dt, flip, *particles, stress_update);
-              break;
-            }
-            case Stage::g2p_motion: {
-              TimerOutput::Scope t(*computing_timer, "G2P");
-              left_cell = grid_to_particle<G2P::motion>(
-                grid, stencil, fields, dt, flip, *particles);
-              break;
-            }
-            case Stage::g2p_stress: {
-              TimerOutput::Scope t(*computing_timer, "stress update");
-              grid_to_particle<G2P::deformation>(
-                grid, stencil, fields, dt, flip, *particles, stress_update);
-              break;
-            }
-        }
+    StepState<dim> state(grid,
+                         *particles,
+                         kernel,
+                         stencil,
+                         fields,
+                         boundary_conditions,
+                         materials,
+                         effects,
+                         effect_names,
+                         run_settings.method,
+                         mass_threshold,
+                         step + 1,
+                         current_time,
+                         dt,
+                         *computing_timer);
+    for (const Stage<dim> &stage : stages)
+      stage.run(state, stage.name);
 
-    particle_check                  = stress_update.check;
+    particle_check                  = state.stress_update.check;
     const ParticleCheck<dim> &check = particle_check;
     {
       // One reduction for both: min of (-rate, J).
@@ -511,35 +412,20 @@ namespace dealmpm
       accuracy.observe_step(extremes[1], dt * max_signal_rate);
     }
     if (Utilities::MPI::logical_or(check.failed, comm))
-      stop_on_particle(
-        check.failed, check.particle, check.location, check.reason, dt);
+      stop_on_particle(check.failed,
+                       check.particle,
+                       check.location,
+                       check.reason,
+                       step + 1,
+                       current_time + dt,
+                       comm);
     current_time += dt;
     ++step;
-    if (Utilities::MPI::logical_or(left_cell, comm))
+    if (Utilities::MPI::logical_or(state.left_cell, comm))
       {
         TimerOutput::Scope t(*computing_timer, "relocate");
         relocate_particles();
       }
-  }
-
-  template <int dim>
-  void
-  Simulation<dim>::stop_on_particle(const bool                  failed_here,
-                                    const types::particle_index particle,
-                                    const Point<dim>           &location,
-                                    const std::string          &reason,
-                                    const double                dt) const
-  {
-    const std::string failure =
-      first_message(failed_here ?
-                      "particle " + std::to_string(particle) + " at " +
-                        format_point(&location[0], dim) + ": " + reason :
-                      "",
-                    comm);
-    std::ostringstream message;
-    message << "step " << step + 1 << " (t = " << current_time + dt
-            << "): " << failure;
-    throw RunError(message.str());
   }
 
   template <int dim>
@@ -548,11 +434,12 @@ namespace dealmpm
   {
     const bool here = particles->handler.n_locally_owned_particles() > 0 &&
                       particle_check.max_signal_rate == max_signal_rate;
-    return first_message(
-      here ? "particle " + std::to_string(particle_check.fastest) + " at " +
-               format_point(&particle_check.fastest_location[0], dim) :
-             "",
-      comm);
+    return first_message(here ?
+                           "particle " +
+                             std::to_string(particle_check.fastest) + " at " +
+                             format_point(particle_check.fastest_location) :
+                           "",
+                         comm);
   }
 
   template <int dim>
@@ -594,8 +481,7 @@ namespace dealmpm
     const double       largest = Utilities::MPI::max(local.gain, comm);
     std::ostringstream particle;
     particle << std::setprecision(3) << "particle " << local.particle << " at "
-             << format_point(&local.location[0], dim) << " (+" << local.gain
-             << " J)";
+             << format_point(local.location) << " (+" << local.gain << " J)";
     std::ostringstream message;
     message << std::setprecision(3) << "step " << step
             << " (t = " << current_time << "): the total energy grew by "
@@ -627,7 +513,7 @@ namespace dealmpm
       first_message(lost_this_step.empty() ?
                       "" :
                       "id " + std::to_string(lost_this_step[0].first) + " at " +
-                        format_point(&lost_this_step[0].second[0], dim),
+                        format_point(lost_this_step[0].second),
                     comm);
     std::ostringstream message;
     message << "step " << step << " (t = " << current_time << "): " << n_lost

@@ -19,8 +19,8 @@ namespace dealmpm
       {}
 
       void
-      add_nodal_forces(const StepState<dim> &,
-                       NodalFields<dim> &fields) const override
+      add_nodal_forces(const EffectContext<dim> &,
+                       NodalFields<dim> &fields) override
       {
         const unsigned int n    = fields.mass.locally_owned_size();
         const double      *mass = fields.mass.begin();
@@ -56,7 +56,7 @@ namespace dealmpm
       {}
 
       void
-      adjust_nodal_forces(NodalFields<dim> &fields) const override
+      adjust_nodal_forces(NodalFields<dim> &fields) override
       {
         const unsigned int n = fields.mass.locally_owned_size();
         for (unsigned int d = 0; d < dim; ++d)

@@ -22,36 +22,4 @@ namespace dealmpm
     return "USL|USF|MUSL";
   }
 
-  std::vector<Stage>
-  stages_of(const UpdateScheme scheme)
-  {
-    switch (scheme)
-      {
-        case UpdateScheme::USL:
-          // G2P and the stress update share one sweep: both use v*.
-          return {Stage::p2g_all,
-                  Stage::apply_effects,
-                  Stage::grid_update,
-                  Stage::g2p_motion_and_stress};
-        case UpdateScheme::USF:
-          return {Stage::p2g_mass_momentum,
-                  Stage::velocity_from_momentum,
-                  Stage::g2p_stress,
-                  Stage::p2g_force,
-                  Stage::apply_effects,
-                  Stage::grid_update,
-                  Stage::g2p_motion};
-        case UpdateScheme::MUSL:
-          // Re-mapping the updated particle momentum smooths v* where nodes
-          // have little mass (a stressed particle entering an empty cell).
-          return {Stage::p2g_all,
-                  Stage::apply_effects,
-                  Stage::grid_update,
-                  Stage::g2p_motion,
-                  Stage::p2g_mass_momentum,
-                  Stage::velocity_from_momentum,
-                  Stage::g2p_stress};
-      }
-    return {};
-  }
 } // namespace dealmpm

@@ -52,7 +52,12 @@ stop_with() {
   local signal=$1 code=$2 folder=$3 whom=$4; shift 4
   "$@" -s "Output/Directory=$folder" "${long[@]}" > "$folder.log" 2>&1 &
   local pid=$!
-  sleep 1.5
+  # Signal once the run is stepping (its handlers are in place): start-up
+  # takes longer on a loaded machine than any fixed pause.
+  for _ in $(seq 600); do
+    [ "$(cat "$folder/statistics.csv" 2> /dev/null | wc -l)" -ge 3 ] && break
+    sleep 0.1
+  done
   if [ "$whom" = children ]; then kill -"$signal" $(pgrep -P $pid); else kill -"$signal" $pid; fi
   wait $pid
   local got=$?

@@ -20,6 +20,7 @@
 #include <dealmpm/particles/body.h>
 #include <dealmpm/particles/particle_set.h>
 #include <dealmpm/schemes/method_settings.h>
+#include <dealmpm/schemes/stages.h>
 #include <dealmpm/schemes/time_stepping.h>
 #include <dealmpm/schemes/update_scheme.h>
 #include <dealmpm/transfer/kernel.h>
@@ -176,14 +177,6 @@ namespace dealmpm
     create_particles(SceneReader &reader);
     void
     relocate_particles();
-    /** Throw the RunError for the first particle (over all ranks) that
-     * stopped the step; collective, called when any rank has one. */
-    [[noreturn]] void
-    stop_on_particle(const bool                  failed_here,
-                     const types::particle_index particle,
-                     const Point<dim>           &location,
-                     const std::string          &reason,
-                     const double                dt) const;
     /** Write the output files of the current state on every rank, then
      * (rank 0) @p write_statistics_row and the series entries, so that no
      * entry and no row is on disk before the files they stand for.
@@ -223,7 +216,7 @@ namespace dealmpm
     MemoryEstimate                              memory;
     AccuracyMonitor                             accuracy;
     Stencil<dim>                                stencil;
-    std::vector<Stage>                          stages;
+    std::vector<Stage<dim>>                     stages;
     double                                      mass_threshold = 0;
     /** Made last in the constructor: a TimerOutput destroyed while an
      * input error propagates prints a warning about MPI. */

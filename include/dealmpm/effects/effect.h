@@ -12,15 +12,9 @@
 
 namespace dealmpm
 {
-  /**
-   * Optional physics a scene lists under "Effects". An effect that is not
-   * listed is never constructed: it allocates nothing, runs no loop and has
-   * no timer section. Effects act on the summed nodal fields between P2G and
-   * the grid update, on the locally owned nodes.
-   */
-  /** What an effect may read during a step. */
+  /** What an effect sees of the step it acts in. */
   template <int dim>
-  struct StepState
+  struct EffectContext
   {
     const BackgroundGrid<dim> &grid;
     const ParticleSet<dim>    &particles;
@@ -29,6 +23,16 @@ namespace dealmpm
     double                     dt;
   };
 
+  /**
+   * Optional physics a scene lists under "Effects". An effect that is not
+   * listed is never constructed: it allocates nothing, runs no loop and has
+   * no timer section. Effects act at named points of the step (the stages
+   * in schemes/stages.h call them), on the locally owned nodes: after P2G
+   * (external forces, then adjustments of the total force), after the grid
+   * update and its boundary conditions (where contact and coupling will act
+   * on v*), and after G2P. The hooks may change the effect's own state (its
+   * accumulators).
+   */
   template <int dim>
   class Effect
   {
@@ -42,16 +46,30 @@ namespace dealmpm
     initialize_particles(ParticleSet<dim> & /*particles*/) const
     {}
 
-    /** Add external nodal forces (body forces, tractions). An effect that
-     * writes ghost entries compresses the force vectors itself. */
+    /** After P2G: add external nodal forces (body forces, tractions). An
+     * effect that writes ghost entries compresses the force vectors itself. */
     virtual void
-    add_nodal_forces(const StepState<dim> & /*state*/,
-                     NodalFields<dim> & /*fields*/) const
+    add_nodal_forces(const EffectContext<dim> & /*state*/,
+                     NodalFields<dim> & /*fields*/)
     {}
 
-    /** Change the total nodal forces once all are in (damping). */
+    /** After every effect's forces: change the total nodal forces
+     * (damping). */
     virtual void
-    adjust_nodal_forces(NodalFields<dim> & /*fields*/) const
+    adjust_nodal_forces(NodalFields<dim> & /*fields*/)
+    {}
+
+    /** After the grid update and its boundary conditions: act on v* and the
+     * increment (contact, coupling). */
+    virtual void
+    after_grid_update(const EffectContext<dim> & /*state*/,
+                      NodalFields<dim> & /*fields*/)
+    {}
+
+    /** After G2P moved the particles (erosion, rigid bodies). */
+    virtual void
+    after_g2p(const EffectContext<dim> & /*state*/,
+              ParticleSet<dim> & /*particles*/)
     {}
 
     /** Work done so far on this rank's particles by the effect's forces,
@@ -93,9 +111,9 @@ namespace dealmpm
    */
   template <int dim, typename BodyForce>
   double
-  add_particle_body_force(const StepState<dim> &state,
-                          NodalFields<dim>     &fields,
-                          const BodyForce      &body_force)
+  add_particle_body_force(const EffectContext<dim> &state,
+                          NodalFields<dim>         &fields,
+                          const BodyForce          &body_force)
   {
     const CoreFields &f = state.particles.fields;
     double           *force[dim];

@@ -19,8 +19,8 @@ namespace dealmpm
     body_force(const Point<dim> &X, const double t) const = 0;
 
     void
-    add_nodal_forces(const StepState<dim> &state,
-                     NodalFields<dim>     &fields) const override
+    add_nodal_forces(const EffectContext<dim> &state,
+                     NodalFields<dim>         &fields) override
     {
       work += state.dt *
               add_particle_body_force(state, fields, [&](const Point<dim> &X) {
@@ -41,8 +41,7 @@ namespace dealmpm
     }
 
   private:
-    /** Left-point sum of the power over the steps; the nodal-force hook is
-     * const, and this bookkeeping does not change the physics. */
-    mutable double work = 0;
+    /** Left-point sum of the power over the steps. */
+    double work = 0;
   };
 } // namespace dealmpm

@@ -1,0 +1,97 @@
+#pragma once
+
+#include <deal.II/base/timer.h>
+
+#include <dealmpm/effects/effect.h>
+#include <dealmpm/grid/background_grid.h>
+#include <dealmpm/grid/boundary_conditions.h>
+#include <dealmpm/grid/nodal_fields.h>
+#include <dealmpm/materials/material.h>
+#include <dealmpm/materials/stress_update.h>
+#include <dealmpm/particles/particle_set.h>
+#include <dealmpm/schemes/method_settings.h>
+#include <dealmpm/transfer/kernel.h>
+#include <dealmpm/transfer/stencil.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace dealmpm
+{
+  /**
+   * Everything one explicit step works on, handed to each stage
+   * (schemes/stages.h): the run's parts (grid, particles, shape function and
+   * its stencil, nodal fields, boundary conditions, materials, effects), the
+   * step's time and size, and what the step learns on the way (the stress
+   * update's particle check, whether a particle left its cell). Made by the
+   * simulation for every step; the stages know nothing else of the run.
+   */
+  template <int dim>
+  struct StepState
+  {
+    StepState(const BackgroundGrid<dim>     &grid,
+              ParticleSet<dim>              &particles,
+              const Kernel<dim>             &kernel,
+              Stencil<dim>                  &stencil,
+              NodalFields<dim>              &fields,
+              const BoundaryConditions<dim> &boundary_conditions,
+              const std::vector<std::unique_ptr<Material<dim>>> &materials,
+              std::vector<std::unique_ptr<Effect<dim>>>         &effects,
+              const std::vector<std::string>                    &effect_names,
+              const MethodSettings                              &method,
+              const double                                       mass_threshold,
+              const unsigned int                                 step,
+              const double                                       time,
+              const double                                       dt,
+              TimerOutput                                       &timer)
+      : grid(grid)
+      , particles(particles)
+      , kernel(kernel)
+      , stencil(stencil)
+      , fields(fields)
+      , boundary_conditions(boundary_conditions)
+      , materials(materials)
+      , effects(effects)
+      , effect_names(effect_names)
+      , method(method)
+      , mass_threshold(mass_threshold)
+      , step(step)
+      , time(time)
+      , dt(dt)
+      , timer(timer)
+      , stress_update(materials, particles, dt)
+    {}
+
+    const BackgroundGrid<dim>                         &grid;
+    ParticleSet<dim>                                  &particles;
+    const Kernel<dim>                                 &kernel;
+    Stencil<dim>                                      &stencil;
+    NodalFields<dim>                                  &fields;
+    const BoundaryConditions<dim>                     &boundary_conditions;
+    const std::vector<std::unique_ptr<Material<dim>>> &materials;
+    std::vector<std::unique_ptr<Effect<dim>>>         &effects;
+    const std::vector<std::string>                    &effect_names;
+    const MethodSettings                              &method;
+    /** Nodes lighter than this are inactive. */
+    double mass_threshold;
+    /** The step's number (from 1) and its start time, for messages. */
+    unsigned int step;
+    double       time;
+    double       dt;
+    TimerOutput &timer;
+
+    /** The stress update and what it learns of the particles. */
+    StressUpdate<dim> stress_update;
+    /** Some particle left its cell in G2P (they are relocated after the
+     * step). */
+    bool left_cell = false;
+
+    /** What an effect sees of the step. */
+    EffectContext<dim>
+    effect_context() const
+    {
+      return {grid, particles, stencil, time, dt};
+    }
+  };
+} // namespace dealmpm

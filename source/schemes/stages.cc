@@ -1,0 +1,211 @@
+#include <dealmpm/diagnostics/run_messages.h>
+#include <dealmpm/grid/grid_update.h>
+#include <dealmpm/schemes/stages.h>
+#include <dealmpm/transfer/grid_to_particle.h>
+#include <dealmpm/transfer/particle_to_grid.h>
+
+namespace dealmpm
+{
+  template <int dim>
+  std::vector<Stage<dim>>
+  stages_of(const UpdateScheme scheme)
+  {
+    using namespace stages;
+    const Stage<dim> first[]          = {{"stencil", &stencil<dim>}};
+    const Stage<dim> p2g_and_forces[] = {
+      {"P2G", &p2g<dim>},
+      {"effects after P2G", &effect_forces<dim>},
+      {"grid update", &grid_update<dim>},
+      {"effects after the grid update", &effects_after_grid_update<dim>}};
+    std::vector<Stage<dim>> list(std::begin(first), std::end(first));
+    switch (scheme)
+      {
+        case UpdateScheme::USL:
+          // G2P and the stress update share one sweep: both use v*.
+          list.insert(list.end(),
+                      std::begin(p2g_and_forces),
+                      std::end(p2g_and_forces));
+          list.push_back(
+            {"G2P and stress update", &g2p_and_stress_update<dim>});
+          break;
+        case UpdateScheme::USF:
+          list.push_back({"P2G", &p2g_mass_momentum<dim>});
+          list.push_back({"grid update", &velocity_from_momentum<dim>});
+          list.push_back({"stress update", &stress_update<dim>});
+          list.push_back({"P2G", &p2g_force<dim>});
+          list.insert(list.end(),
+                      std::begin(p2g_and_forces) + 1,
+                      std::end(p2g_and_forces));
+          list.push_back({"G2P", &g2p<dim>});
+          break;
+        case UpdateScheme::MUSL:
+          // Re-mapping the updated particle momentum smooths v* where nodes
+          // have little mass (a stressed particle entering an empty cell).
+          list.insert(list.end(),
+                      std::begin(p2g_and_forces),
+                      std::end(p2g_and_forces));
+          list.push_back({"G2P", &g2p<dim>});
+          list.push_back({"P2G", &p2g_mass_momentum<dim>});
+          list.push_back({"grid update", &velocity_from_momentum<dim>});
+          list.push_back({"stress update", &stress_update<dim>});
+          break;
+      }
+    list.push_back({"effects after G2P", &effects_after_g2p<dim>});
+    return list;
+  }
+
+  namespace stages
+  {
+    template <int dim>
+    void
+    stencil(StepState<dim> &s, const std::string &timer_section)
+    {
+      {
+        TimerOutput::Scope t(s.timer, timer_section);
+        s.kernel.compute_stencil(s.grid, s.particles, s.stencil);
+        if (s.method.apic)
+          record_positions(s.grid, s.particles, s.stencil);
+      }
+      if (Utilities::MPI::logical_or(s.stencil.failed, s.grid.comm))
+        stop_on_particle(s.stencil.failed,
+                         s.stencil.failed_particle,
+                         s.stencil.failed_location,
+                         s.stencil.failure,
+                         s.step,
+                         s.time + s.dt,
+                         s.grid.comm);
+    }
+
+    template <int dim>
+    void
+    p2g(StepState<dim> &s, const std::string &timer_section)
+    {
+      TimerOutput::Scope t(s.timer, timer_section);
+      particle_to_grid(s.grid, s.particles, s.stencil, s.fields, true, true);
+    }
+
+    template <int dim>
+    void
+    p2g_mass_momentum(StepState<dim> &s, const std::string &timer_section)
+    {
+      TimerOutput::Scope t(s.timer, timer_section);
+      particle_to_grid(s.grid, s.particles, s.stencil, s.fields, true, false);
+    }
+
+    template <int dim>
+    void
+    p2g_force(StepState<dim> &s, const std::string &timer_section)
+    {
+      TimerOutput::Scope t(s.timer, timer_section);
+      particle_to_grid(s.grid, s.particles, s.stencil, s.fields, false, true);
+    }
+
+    /** Call @p hook on every effect, each in its own timer section. */
+    template <int dim, typename Hook>
+    void
+    for_each_effect(StepState<dim> &s, const Hook &hook)
+    {
+      for (unsigned int e = 0; e < s.effects.size(); ++e)
+        {
+          TimerOutput::Scope t(s.timer, "effect: " + s.effect_names[e]);
+          hook(*s.effects[e]);
+        }
+    }
+
+    template <int dim>
+    void
+    effect_forces(StepState<dim> &s, const std::string &)
+    {
+      const EffectContext<dim> context = s.effect_context();
+      for_each_effect(s, [&](Effect<dim> &effect) {
+        effect.add_nodal_forces(context, s.fields);
+      });
+      // Damping-like effects act on the total force.
+      for_each_effect(s, [&](Effect<dim> &effect) {
+        effect.adjust_nodal_forces(s.fields);
+      });
+    }
+
+    template <int dim>
+    void
+    grid_update(StepState<dim> &s, const std::string &timer_section)
+    {
+      TimerOutput::Scope t(s.timer, timer_section);
+      update_nodal_velocity(s.fields,
+                            s.dt,
+                            s.mass_threshold,
+                            s.boundary_conditions);
+    }
+
+    template <int dim>
+    void
+    effects_after_grid_update(StepState<dim> &s, const std::string &)
+    {
+      const EffectContext<dim> context = s.effect_context();
+      for_each_effect(s, [&](Effect<dim> &effect) {
+        effect.after_grid_update(context, s.fields);
+      });
+    }
+
+    template <int dim>
+    void
+    velocity_from_momentum(StepState<dim> &s, const std::string &timer_section)
+    {
+      TimerOutput::Scope t(s.timer, timer_section);
+      dealmpm::velocity_from_momentum(s.fields,
+                                      s.mass_threshold,
+                                      s.boundary_conditions);
+    }
+
+    template <int dim>
+    void
+    g2p_and_stress_update(StepState<dim> &s, const std::string &timer_section)
+    {
+      TimerOutput::Scope t(s.timer, timer_section);
+      s.left_cell =
+        grid_to_particle<G2P::motion_and_deformation>(s.grid,
+                                                      s.stencil,
+                                                      s.fields,
+                                                      s.dt,
+                                                      s.method.flip_fraction,
+                                                      s.particles,
+                                                      s.stress_update);
+    }
+
+    template <int dim>
+    void
+    g2p(StepState<dim> &s, const std::string &timer_section)
+    {
+      TimerOutput::Scope t(s.timer, timer_section);
+      s.left_cell = grid_to_particle<G2P::motion>(
+        s.grid, s.stencil, s.fields, s.dt, s.method.flip_fraction, s.particles);
+    }
+
+    template <int dim>
+    void
+    stress_update(StepState<dim> &s, const std::string &timer_section)
+    {
+      TimerOutput::Scope t(s.timer, timer_section);
+      grid_to_particle<G2P::deformation>(s.grid,
+                                         s.stencil,
+                                         s.fields,
+                                         s.dt,
+                                         s.method.flip_fraction,
+                                         s.particles,
+                                         s.stress_update);
+    }
+
+    template <int dim>
+    void
+    effects_after_g2p(StepState<dim> &s, const std::string &)
+    {
+      const EffectContext<dim> context = s.effect_context();
+      for_each_effect(s, [&](Effect<dim> &effect) {
+        effect.after_g2p(context, s.particles);
+      });
+    }
+  } // namespace stages
+
+  template std::vector<Stage<2>> stages_of(UpdateScheme);
+  template std::vector<Stage<3>> stages_of(UpdateScheme);
+} // namespace dealmpm
