@@ -43,13 +43,6 @@ namespace dealmpm
                       "1",
                       Patterns::Integer(1, 10000),
                       "How many 'Material N' sections the scene has.");
-    prm.declare_entry(
-      "Effects",
-      "",
-      Patterns::Anything(),
-      "Comma-separated optional physics; what is not listed costs "
-      "nothing. Available: " +
-        effect_registry<dim>().describe());
 
     BackgroundGrid<dim>::declare_parameters(prm);
     BoundaryConditions<dim>::declare_parameters(prm);
@@ -59,34 +52,8 @@ namespace dealmpm
         Body<dim>::declare_parameters(prm);
         prm.leave_subsection();
       }
-    const auto &models = material_registry<dim>();
-    for (unsigned int m = 1; m <= shape.n_materials; ++m)
-      {
-        prm.enter_subsection("Material " + std::to_string(m));
-        prm.declare_entry(
-          "Model",
-          "linear elastic",
-          Patterns::Selection(models.pattern()),
-          "Constitutive model: " + models.describe() +
-            "Its parameters go in a subsection named after it.");
-        prm.declare_entry("Density",
-                          "1000",
-                          Patterns::Anything(),
-                          "Reference density (kg/m^3), > 0.");
-        for (const auto &name : models.names())
-          {
-            prm.enter_subsection(name);
-            models.get(name).declare(prm);
-            prm.leave_subsection();
-          }
-        prm.leave_subsection();
-      }
-    for (const auto &name : effect_registry<dim>().names())
-      {
-        prm.enter_subsection(section_title(name));
-        effect_registry<dim>().get(name).declare(prm);
-        prm.leave_subsection();
-      }
+    declare_material_sections<dim>(prm, shape.n_materials);
+    declare_effect_parameters<dim>(prm);
     TimeStepping::declare_parameters(prm);
     MethodSettings::declare_parameters(prm);
     CheckSettings::declare_parameters(prm);
@@ -106,8 +73,15 @@ namespace dealmpm
   {
     SceneReader reader(prm, scene_file, overrides);
     read_run_settings(reader);
-    read_materials(reader, shape);
-    read_effects(reader);
+    {
+      MaterialSections<dim> read =
+        read_material_sections<dim>(reader, shape.n_materials);
+      EffectList<dim> listed = read_effects(reader, read);
+      materials              = std::move(read.materials);
+      material_models        = std::move(read.models);
+      effects                = std::move(listed.effects);
+      effect_names           = std::move(listed.names);
+    }
     for (unsigned int b = 1; b <= shape.n_bodies; ++b)
       {
         SectionScope section(reader, "Body " + std::to_string(b));
@@ -147,93 +121,6 @@ namespace dealmpm
     run_settings.method = MethodSettings::read(reader);
     run_settings.checks = CheckSettings::read(reader);
     run_settings.output = OutputSettings::read(reader);
-  }
-
-  template <int dim>
-  void
-  Simulation<dim>::read_materials(SceneReader &reader, const SceneShape &shape)
-  {
-    for (unsigned int m = 1; m <= shape.n_materials; ++m)
-      {
-        SectionScope      section(reader, "Material " + std::to_string(m));
-        const std::string model   = reader.get("Model");
-        const double      density = reader.get_positive("Density");
-        SectionScope      parameters(reader, model);
-        materials.push_back(material_registry<dim>().get(model).create(reader));
-        materials.back()->density = density;
-        material_models.push_back(model);
-      }
-  }
-
-  template <int dim>
-  void
-  Simulation<dim>::read_effects(SceneReader &reader)
-  {
-    const auto &registry = effect_registry<dim>();
-    for (const auto &name :
-         Utilities::split_string_list(reader.get("Effects"), ','))
-      {
-        if (!registry.has(name))
-          reader.fail("Effects",
-                      "a comma-separated list of: " + registry.describe());
-        if (std::find(effect_names.begin(), effect_names.end(), name) !=
-            effect_names.end())
-          reader.fail("Effects", "each effect listed once");
-        {
-          SectionScope section(reader, section_title(name));
-          effects.push_back(registry.get(name).create(reader));
-          effect_names.push_back(name);
-        }
-        if (effects.back()->has_exact_solution())
-          check_known_motion_material(reader, section_title(name));
-      }
-  }
-
-  template <int dim>
-  void
-  Simulation<dim>::check_known_motion_material(SceneReader       &reader,
-                                               const std::string &effect) const
-  {
-    // The body force of a known motion is computed for a neo-Hookean
-    // material with the effect's constants: a different material would give
-    // silently wrong error norms.
-    const ParameterHandler &prm   = reader.handler();
-    const auto              value = [&](const std::vector<std::string> &path,
-                           const std::string              &entry) {
-      return Utilities::string_to_double(prm.get(path, entry));
-    };
-    for (unsigned int m = 0; m < materials.size(); ++m)
-      {
-        const std::string material = "Material " + std::to_string(m + 1);
-        if (material_models[m] != "neo-Hookean")
-          {
-            SectionScope section(reader, effect);
-            reader.fail("Young's modulus",
-                        "a scene whose materials are neo-Hookean (" + material +
-                          " is '" + material_models[m] +
-                          "'): the body force of this motion is computed for "
-                          "a neo-Hookean material");
-          }
-        const std::vector<std::string> model = {material, "neo-Hookean"};
-        for (const auto &[entry, own] :
-             {std::make_pair(std::string("Young's modulus"),
-                             value(model, "Young's modulus")),
-              std::make_pair(std::string("Poisson's ratio"),
-                             value(model, "Poisson's ratio")),
-              std::make_pair(std::string("Density"), materials[m]->density)})
-          {
-            const double mine = value({effect}, entry);
-            if (std::abs(mine - own) > 1e-12 * std::abs(own))
-              {
-                SectionScope       section(reader, effect);
-                std::ostringstream expected;
-                expected << "the value of " << material << "'s " << entry
-                         << " (" << own
-                         << "): the body force is computed for it";
-                reader.fail(entry, expected.str());
-              }
-          }
-      }
   }
 
   template <int dim>

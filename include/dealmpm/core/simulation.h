@@ -9,6 +9,7 @@
 #include <dealmpm/diagnostics/memory_estimate.h>
 #include <dealmpm/diagnostics/statistics.h>
 #include <dealmpm/effects/effect.h>
+#include <dealmpm/effects/effect_list.h>
 #include <dealmpm/grid/background_grid.h>
 #include <dealmpm/grid/boundary_conditions.h>
 #include <dealmpm/grid/nodal_fields.h>
@@ -16,6 +17,7 @@
 #include <dealmpm/io/particle_output.h>
 #include <dealmpm/io/pvd_series.h>
 #include <dealmpm/materials/material.h>
+#include <dealmpm/materials/material_sections.h>
 #include <dealmpm/materials/stress_update.h>
 #include <dealmpm/particles/body.h>
 #include <dealmpm/particles/particle_set.h>
@@ -162,13 +164,6 @@ namespace dealmpm
   private:
     void
     read_run_settings(SceneReader &reader);
-    void
-    read_materials(SceneReader &reader, const SceneShape &shape);
-    void
-    read_effects(SceneReader &reader);
-    void
-    check_known_motion_material(SceneReader       &reader,
-                                const std::string &effect) const;
     /** Refuse a grid (and the bodies in it) that would not fit in memory;
      * called before the cells are made. */
     void
