@@ -13,6 +13,7 @@
 #include <dealmpm/io/progress.h>
 #include <dealmpm/io/statistics_file.h>
 #include <dealmpm/materials/stress_update.h>
+#include <dealmpm/particles/fill_bodies.h>
 #include <dealmpm/transfer/grid_to_particle.h>
 #include <dealmpm/transfer/particle_to_grid.h>
 
@@ -87,8 +88,12 @@ namespace dealmpm
         SectionScope section(reader, "Body " + std::to_string(b));
         bodies.push_back(Body<dim>::read(reader, shape.n_materials));
       }
-    grid.create(reader,
-                [&](const GridSize<dim> &size) { check_memory(reader, size); });
+    grid.create(reader, [&](const GridSize<dim> &size) {
+      memory = check_memory(reader.file_name(),
+                            estimate_memory(size, bodies),
+                            run_settings.checks.memory_limit,
+                            comm);
+    });
     {
       const std::string problem =
         kernel.setup(run_settings.method.shape_function, grid);
@@ -125,48 +130,8 @@ namespace dealmpm
 
   template <int dim>
   void
-  Simulation<dim>::check_memory(const SceneReader   &reader,
-                                const GridSize<dim> &size)
-  {
-    memory                 = estimate_memory(size, bodies);
-    const double limit     = run_settings.checks.memory_limit;
-    const double available = limit > 0 ? limit : available_memory(comm);
-    if (available > 0 && memory.bytes > available)
-      {
-        std::ostringstream message;
-        message << std::setprecision(3) << reader.file_name()
-                << ": the scene needs about " << memory.bytes / 1e9 << " GB ("
-                << memory.n_cells << " cells, " << memory.n_particles
-                << " particles), more than the " << available / 1e9
-                << (limit > 0 ? " GB of 'Checks/Memory limit'" :
-                                " GB available on the machine(s) of the run")
-                << ": expected fewer cells or particles per cell, or more "
-                   "machines";
-        throw InputError(message.str());
-      }
-  }
-
-  template <int dim>
-  void
   Simulation<dim>::create_particles(SceneReader &reader)
   {
-    for (unsigned int b = 0; b < bodies.size(); ++b)
-      {
-        SectionScope           section(reader, "Body " + std::to_string(b + 1));
-        const BoundingBox<dim> box = bodies[b].shape->bounding_box();
-        const auto            &g   = grid.bounding_box.get_boundary_points();
-        const auto            &s   = box.get_boundary_points();
-        const double tolerance     = 1e-10 * grid.bounding_box.side_length(0);
-        for (unsigned int d = 0; d < dim; ++d)
-          if (s.first[d] < g.first[d] - tolerance ||
-              s.second[d] > g.second[d] + tolerance)
-            reader.fail("Shape",
-                        "a body inside the grid " + format_point(g.first) +
-                          " - " + format_point(g.second) + ", but it spans " +
-                          format_point(s.first) + " - " +
-                          format_point(s.second));
-      }
-
     std::vector<std::vector<FieldDescription>> internal;
     for (const auto &m : materials)
       internal.push_back(m->internal_variables());
@@ -184,48 +149,16 @@ namespace dealmpm
         lost_this_step.emplace_back(p->get_id(), p->get_location());
       });
 
-    unsigned int id_stride = 1;
-    for (const auto &body : bodies)
-      id_stride =
-        std::max(id_stride,
-                 Utilities::fixed_power<dim>(body.particles_per_direction));
-    for (unsigned int b = 0; b < bodies.size(); ++b)
+    std::vector<double>              densities;
+    std::vector<std::vector<double>> initial;
+    for (unsigned int m = 0; m < materials.size(); ++m)
       {
-        const unsigned int  m = bodies[b].material;
-        std::vector<double> initial(particles->n_internal[m], 0.);
-        materials[m]->initialize_internal_variables(make_array_view(initial));
-        const GeneratedParticles generated =
-          generate_particles(bodies,
-                             b,
-                             materials[m]->density,
-                             grid,
-                             *particles,
-                             initial,
-                             id_stride);
-        const unsigned int overlapped =
-          Utilities::MPI::min(generated.overlapped_body, comm);
-        if (overlapped != numbers::invalid_unsigned_int)
-          {
-            SectionScope section(reader, "Body " + std::to_string(b + 1));
-            reader.fail("Allow overlap",
-                        "a body that does not overlap 'Body " +
-                          std::to_string(overlapped + 1) +
-                          "' (it would be filled twice); set 'Allow overlap "
-                          "= true' in this body to let its particles replace "
-                          "those of Body " +
-                          std::to_string(overlapped + 1) + " there");
-          }
-        if (Utilities::MPI::sum(double(generated.n_created), comm) == 0)
-          {
-            SectionScope section(reader, "Body " + std::to_string(b + 1));
-            reader.fail("Shape",
-                        "a body that covers at least one particle position of "
-                        "the grid (it is smaller than the particle spacing, "
-                        "outside the grid or covered by later bodies that "
-                        "replace it)");
-          }
+        densities.push_back(materials[m]->density);
+        initial.emplace_back(particles->n_internal[m], 0.);
+        materials[m]->initialize_internal_variables(
+          make_array_view(initial.back()));
       }
-    particles->handler.update_cached_numbers();
+    fill_bodies(reader, bodies, densities, initial, grid, *particles);
     if (!effects.empty())
       {
         for (const auto &effect : effects)

@@ -1,8 +1,10 @@
+#include <dealmpm/base/errors.h>
 #include <dealmpm/diagnostics/memory_estimate.h>
 
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <iomanip>
 #include <sstream>
 #include <string>
 
@@ -65,6 +67,29 @@ namespace dealmpm
       }
     MPI_Comm_free(&machine);
     return Utilities::MPI::sum(here, comm);
+  }
+
+  MemoryEstimate
+  check_memory(const std::string    &scene_file,
+               const MemoryEstimate &estimate,
+               const double          limit,
+               const MPI_Comm        comm)
+  {
+    const double available = limit > 0 ? limit : available_memory(comm);
+    if (available > 0 && estimate.bytes > available)
+      {
+        std::ostringstream message;
+        message << std::setprecision(3) << scene_file
+                << ": the scene needs about " << estimate.bytes / 1e9 << " GB ("
+                << estimate.n_cells << " cells, " << estimate.n_particles
+                << " particles), more than the " << available / 1e9
+                << (limit > 0 ? " GB of 'Checks/Memory limit'" :
+                                " GB available on the machine(s) of the run")
+                << ": expected fewer cells or particles per cell, or more "
+                   "machines";
+        throw InputError(message.str());
+      }
+    return estimate;
   }
 
   template MemoryEstimate

@@ -164,10 +164,6 @@ namespace dealmpm
   private:
     void
     read_run_settings(SceneReader &reader);
-    /** Refuse a grid (and the bodies in it) that would not fit in memory;
-     * called before the cells are made. */
-    void
-    check_memory(const SceneReader &reader, const GridSize<dim> &size);
     void
     create_particles(SceneReader &reader);
     void

@@ -5,6 +5,7 @@
 #include <dealmpm/grid/background_grid.h>
 #include <dealmpm/particles/body.h>
 
+#include <string>
 #include <vector>
 
 namespace dealmpm
@@ -27,6 +28,15 @@ namespace dealmpm
   MemoryEstimate
   estimate_memory(const GridSize<dim>          &grid,
                   const std::vector<Body<dim>> &bodies);
+
+  /** @p estimate, or an InputError (about @p scene_file) when it exceeds
+   * @p limit (bytes) or, with no limit (0), the available memory.
+   * Collective. */
+  MemoryEstimate
+  check_memory(const std::string    &scene_file,
+               const MemoryEstimate &estimate,
+               const double          limit,
+               const MPI_Comm        comm);
 
   /** The memory the run may use: the sum, over the machines its ranks run
    * on, of MemAvailable in /proc/meminfo (0 where that is unknown). */
