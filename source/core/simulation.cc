@@ -4,14 +4,10 @@
 #include <dealmpm/base/errors.h>
 #include <dealmpm/core/simulation.h>
 #include <dealmpm/core/stop_signal.h>
+#include <dealmpm/diagnostics/run_guards.h>
 #include <dealmpm/diagnostics/run_messages.h>
 #include <dealmpm/grid/grid_update.h>
-#include <dealmpm/io/grid_output.h>
-#include <dealmpm/io/output_file.h>
-#include <dealmpm/io/output_folder.h>
-#include <dealmpm/io/particle_csv.h>
 #include <dealmpm/io/progress.h>
-#include <dealmpm/io/statistics_file.h>
 #include <dealmpm/materials/stress_update.h>
 #include <dealmpm/particles/fill_bodies.h>
 #include <dealmpm/transfer/grid_to_particle.h>
@@ -19,7 +15,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <filesystem>
 #include <iomanip>
 #include <sstream>
 
@@ -71,9 +66,34 @@ namespace dealmpm
     , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
     , scene_file(scene_file)
     , grid(comm)
+    , output_writer(run_settings.output, comm)
   {
     SceneReader reader(prm, scene_file, overrides);
-    read_run_settings(reader);
+    read_scene(reader, shape);
+    build_grid(reader);
+    create_particles(reader);
+    for (const auto &effect : effects)
+      for (const FieldDescription &field : effect->nodal_fields_per_body())
+        nodal.request_per_body(field);
+    nodal.reinit(grid.partitioner, bodies.size());
+    stages = stages_of<dim>(run_settings.method.scheme);
+
+    particle_check  = check_particles(grid, materials, *particles);
+    max_signal_rate = Utilities::MPI::max(particle_check.max_signal_rate, comm);
+    computing_timer = std::make_unique<TimerOutput>(comm,
+                                                    pcout,
+                                                    TimerOutput::never,
+                                                    TimerOutput::wall_times);
+  }
+
+  template <int dim>
+  void
+  Simulation<dim>::read_scene(SceneReader &reader, const SceneShape &shape)
+  {
+    run_settings.time   = TimeStepping::read(reader);
+    run_settings.method = MethodSettings::read(reader);
+    run_settings.checks = CheckSettings::read(reader);
+    run_settings.output = OutputSettings::read(reader);
     {
       MaterialSections<dim> read =
         read_material_sections<dim>(reader, shape.n_materials);
@@ -88,44 +108,28 @@ namespace dealmpm
         SectionScope section(reader, "Body " + std::to_string(b));
         bodies.push_back(Body<dim>::read(reader, shape.n_materials));
       }
+  }
+
+  template <int dim>
+  void
+  Simulation<dim>::build_grid(SceneReader &reader)
+  {
     grid.create(reader, [&](const GridSize<dim> &size) {
       memory = check_memory(reader.file_name(),
                             estimate_memory(size, bodies),
                             run_settings.checks.memory_limit,
                             comm);
     });
-    {
-      const std::string problem =
-        kernel.setup(run_settings.method.shape_function, grid);
-      if (!problem.empty())
-        {
-          SectionScope mpm(reader, "MPM");
-          reader.fail("Shape function", problem);
-        }
-    }
+    const std::string problem =
+      kernel.setup(run_settings.method.shape_function, grid);
+    if (!problem.empty())
+      {
+        SectionScope mpm(reader, "MPM");
+        reader.fail("Shape function", problem);
+      }
     boundary_conditions.setup(grid,
                               BoundaryConditions<dim>::read(
                                 reader, grid.triangulation.get_boundary_ids()));
-    create_particles(reader);
-    fields.reinit(grid.partitioner);
-    stages = stages_of<dim>(run_settings.method.scheme);
-
-    particle_check  = check_particles(grid, materials, *particles);
-    max_signal_rate = Utilities::MPI::max(particle_check.max_signal_rate, comm);
-    computing_timer = std::make_unique<TimerOutput>(comm,
-                                                    pcout,
-                                                    TimerOutput::never,
-                                                    TimerOutput::wall_times);
-  }
-
-  template <int dim>
-  void
-  Simulation<dim>::read_run_settings(SceneReader &reader)
-  {
-    run_settings.time   = TimeStepping::read(reader);
-    run_settings.method = MethodSettings::read(reader);
-    run_settings.checks = CheckSettings::read(reader);
-    run_settings.output = OutputSettings::read(reader);
   }
 
   template <int dim>
@@ -135,14 +139,19 @@ namespace dealmpm
     std::vector<std::vector<FieldDescription>> internal;
     for (const auto &m : materials)
       internal.push_back(m->internal_variables());
-    particles =
-      std::make_unique<ParticleSet<dim>>(grid.triangulation,
-                                         *grid.mapping,
-                                         material_models,
-                                         internal,
-                                         run_settings.method.apic,
-                                         has_particle_domain(
-                                           run_settings.method.shape_function));
+    std::vector<FieldDescription> method_fields = kernel.particle_fields();
+    if (run_settings.method.apic)
+      method_fields.push_back({"apic_B", dim * dim});
+    std::vector<FieldDescription> effect_fields;
+    for (const auto &effect : effects)
+      for (const FieldDescription &f : effect->particle_fields())
+        effect_fields.push_back(f);
+    particles = std::make_unique<ParticleSet<dim>>(grid.triangulation,
+                                                   *grid.mapping,
+                                                   material_models,
+                                                   internal,
+                                                   method_fields,
+                                                   effect_fields);
     particles->handler.signals.particle_lost.connect(
       [this](const typename Particles::ParticleIterator<dim> &p,
              const typename Triangulation<dim>::active_cell_iterator &) {
@@ -174,8 +183,7 @@ namespace dealmpm
   Statistics
   Simulation<dim>::statistics() const
   {
-    return compute_statistics(
-      *particles, materials, effects, current_time, comm);
+    return compute_statistics(*particles, materials, effects, loop.time, comm);
   }
 
   template <int dim>
@@ -199,6 +207,17 @@ namespace dealmpm
   }
 
   template <int dim>
+  RunState
+  Simulation<dim>::run_state() const
+  {
+    RunState saved = loop;
+    saved.effect_states.clear();
+    for (const auto &effect : effects)
+      saved.effect_states.push_back(effect->saved_state());
+    return saved;
+  }
+
+  template <int dim>
   void
   Simulation<dim>::advance(const double dt)
   {
@@ -206,15 +225,15 @@ namespace dealmpm
                          *particles,
                          kernel,
                          stencil,
-                         fields,
+                         nodal,
                          boundary_conditions,
                          materials,
                          effects,
                          effect_names,
                          run_settings.method,
                          mass_threshold,
-                         step + 1,
-                         current_time,
+                         loop.step + 1,
+                         loop.time,
                          dt,
                          *computing_timer);
     for (const Stage<dim> &stage : stages)
@@ -229,93 +248,23 @@ namespace dealmpm
                           comm,
                           ArrayView<double>(extremes, 2));
       max_signal_rate = -extremes[0];
-      accuracy.observe_step(extremes[1], dt * max_signal_rate);
+      loop.accuracy.observe_step(extremes[1], dt * max_signal_rate);
     }
     if (Utilities::MPI::logical_or(check.failed, comm))
       stop_on_particle(check.failed,
                        check.particle,
                        check.location,
                        check.reason,
-                       step + 1,
-                       current_time + dt,
+                       loop.step + 1,
+                       loop.time + dt,
                        comm);
-    current_time += dt;
-    ++step;
+    loop.time += dt;
+    ++loop.step;
     if (Utilities::MPI::logical_or(state.left_cell, comm))
       {
         TimerOutput::Scope t(*computing_timer, "relocate");
         relocate_particles();
       }
-  }
-
-  template <int dim>
-  std::string
-  Simulation<dim>::fastest_particle() const
-  {
-    const bool here = particles->handler.n_locally_owned_particles() > 0 &&
-                      particle_check.max_signal_rate == max_signal_rate;
-    return first_message(here ?
-                           "particle " +
-                             std::to_string(particle_check.fastest) + " at " +
-                             format_point(particle_check.fastest_location) :
-                           "",
-                         comm);
-  }
-
-  template <int dim>
-  void
-  Simulation<dim>::check_fixed_time_step(const double dt)
-  {
-    const double cfl = dt * max_signal_rate;
-    if (cfl <= run_settings.checks.cfl_warning || (cfl_warned && cfl <= 1))
-      return;
-    std::ostringstream text;
-    text << std::setprecision(3) << "step " << step + 1
-         << " (t = " << current_time << "): " << fastest_particle()
-         << ": the fixed time step " << dt
-         << " gives a particle CFL number dt (c + |v|) / h of " << cfl;
-    if (cfl > 1)
-      throw RunError(text.str() +
-                     " > 1, which is unstable; the largest stable step "
-                     "here is " +
-                     short_number(1. / max_signal_rate) +
-                     ": set a smaller 'Time/Time step' or 'Time/Time step "
-                     "method = CFL'");
-    pcout << "warning: " << text.str() << " (above 'Checks/CFL warning' = "
-          << run_settings.checks.cfl_warning
-          << "; unstable above 1, at a step of "
-          << short_number(1. / max_signal_rate) << "); warned once"
-          << std::endl;
-    cfl_warned = true;
-  }
-
-  template <int dim>
-  RunError
-  Simulation<dim>::energy_growth_error() const
-  {
-    std::vector<Tensor<1, dim>> initial_velocity;
-    for (const auto &body : bodies)
-      initial_velocity.push_back(body.velocity);
-    const EnergyGain<dim> local =
-      largest_energy_gain(*particles, materials, effects, initial_velocity);
-    const double       largest = Utilities::MPI::max(local.gain, comm);
-    std::ostringstream particle;
-    particle << std::setprecision(3) << "particle " << local.particle << " at "
-             << format_point(local.location) << " (+" << local.gain << " J)";
-    std::ostringstream message;
-    message << std::setprecision(3) << "step " << step
-            << " (t = " << current_time << "): the total energy grew by "
-            << 100 * accuracy.report().energy_drift
-            << " % of the energy put in (limit 'Checks/Energy growth limit' "
-               "= "
-            << 100 * run_settings.checks.energy_growth_limit
-            << " %); the particle whose energy grew most: "
-            << first_message(local.gain == largest ? particle.str() : "", comm)
-            << ". Energy grows when particles cross cells and when nodes "
-               "carry little mass: try a smaller 'Time/CFL number', "
-               "'MPM/Stress update = MUSL' or a GIMP or CPDI 'MPM/Shape "
-               "function'";
-    return RunError(message.str());
   }
 
   template <int dim>
@@ -328,7 +277,7 @@ namespace dealmpm
       Utilities::MPI::sum(double(lost_this_step.size()), comm);
     if (n_lost == 0)
       return;
-    lost_particles += n_lost;
+    loop.lost_particles += n_lost;
     const std::string first =
       first_message(lost_this_step.empty() ?
                       "" :
@@ -336,7 +285,7 @@ namespace dealmpm
                         format_point(lost_this_step[0].second),
                     comm);
     std::ostringstream message;
-    message << "step " << step << " (t = " << current_time << "): " << n_lost
+    message << "step " << loop.step << " (t = " << loop.time << "): " << n_lost
             << " particle(s) left the grid (first: " << first << ")";
     if (run_settings.method.stop_when_particles_leave)
       throw RunError(message.str() +
@@ -346,192 +295,183 @@ namespace dealmpm
   }
 
   template <int dim>
+  std::string
+  Simulation<dim>::when(const unsigned int step, const double time) const
+  {
+    std::ostringstream text;
+    text << std::setprecision(3) << "step " << step << " (t = " << time << ")";
+    return text.str();
+  }
+
+  template <int dim>
   void
-  Simulation<dim>::write_output(
-    const std::function<void()> &write_statistics_row)
+  Simulation<dim>::guard_fixed_time_step(const double dt)
+  {
+    const std::string warning = check_fixed_time_step(
+      dt, max_signal_rate, run_settings.checks.cfl_warning, cfl_warned, [&] {
+        return when(loop.step + 1, loop.time) + ": " +
+               fastest_particle(particle_check,
+                                max_signal_rate,
+                                *particles,
+                                comm);
+      });
+    if (warning.empty())
+      return;
+    pcout << "warning: " << warning << std::endl;
+    cfl_warned = true;
+  }
+
+  template <int dim>
+  RunError
+  Simulation<dim>::energy_growth_stop() const
+  {
+    std::vector<Tensor<1, dim>> initial_velocity;
+    for (const auto &body : bodies)
+      initial_velocity.push_back(body.velocity);
+    return energy_growth_error(*particles,
+                               materials,
+                               effects,
+                               initial_velocity,
+                               loop.accuracy.report().energy_drift,
+                               run_settings.checks.energy_growth_limit,
+                               when(loop.step, loop.time),
+                               comm);
+  }
+
+  template <int dim>
+  RunError
+  Simulation<dim>::with_last_output(const RunError &error) const
+  {
+    return RunError(std::string(error.what()) + ". The last good output (t = " +
+                    short_number(loop.output.last_time) + ") is in " +
+                    run_settings.output.directory + "/");
+  }
+
+  template <int dim>
+  void
+  Simulation<dim>::write_output(const double      dt,
+                                const Statistics &now,
+                                const double      work,
+                                const Progress   &progress)
   {
     TimerOutput::Scope t(*computing_timer, "output");
-    const std::string &dir    = run_settings.output.directory;
-    const bool         writer = Utilities::MPI::this_mpi_process(comm) == 0;
-    std::ostringstream context;
-    context << "; the output in " << dir << "/ is complete";
-    if (output_counter > 0)
-      context << " up to t = " << last_output_time;
-    else
-      context << " but empty";
+    output_writer.write({*particles, materials, grid, nodal.core},
+                        loop.time,
+                        loop.step,
+                        loop.output,
+                        [&](StatisticsFile &file) {
+                          file.write_row(loop.step,
+                                         loop.time,
+                                         dt,
+                                         now,
+                                         work,
+                                         loop.accuracy.report(),
+                                         loop.lost_particles,
+                                         progress.elapsed_seconds());
+                        });
+  }
 
-    // The files a series entry points to come first, on every rank; the
-    // statistics row and the entries follow once all ranks have them, so
-    // that a run stopped at any moment (or by a full disk) leaves no entry
-    // without its files and row. Each writer does its collective part
-    // before it can fail, so a rank that failed still takes part in the
-    // rest, and all ranks throw together.
-    std::string problem;
-    const auto  attempt = [&problem](const auto &write) {
-      try
-        {
-          write();
-        }
-      catch (const OutputError &e)
-        {
-          if (problem.empty())
-            problem = e.what();
-        }
-    };
-    std::string particle_file, grid_file;
-    if (run_settings.output.write_particles)
-      attempt([&] {
-        particle_output.build_patches(*particles, materials);
-        particle_file = particle_output.write(dir, output_counter, comm);
-      });
-    if (run_settings.output.write_grid)
-      attempt([&] {
-        grid_file = write_grid_output(grid, fields, dir, output_counter);
-      });
-    if (run_settings.output.write_particle_csv)
-      attempt([&] {
-        std::ostringstream name;
-        name << dir << "/particles_" << std::setw(5) << std::setfill('0')
-             << output_counter << ".csv";
-        write_particle_csv(*particles, name.str(), comm);
-      });
-    agree_on_output_error(problem, context.str(), comm);
-    if (writer)
-      attempt([&] {
-        write_statistics_row();
-        if (!particle_file.empty())
-          particle_series.add_and_write(current_time,
-                                        particle_file,
-                                        dir + "/particles.pvd");
-        if (!grid_file.empty())
-          grid_series.add_and_write(current_time, grid_file, dir + "/grid.pvd");
-      });
-    agree_on_output_error(problem, context.str(), comm);
-    ++output_counter;
-    last_output_time = current_time;
+  template <int dim>
+  void
+  Simulation<dim>::map_particles_for_grid_output()
+  {
+    kernel.compute_stencil(grid, *particles, stencil);
+    if (run_settings.method.apic)
+      record_positions(grid, *particles, stencil);
+    if (!Utilities::MPI::logical_or(stencil.failed, comm))
+      {
+        particle_to_grid(grid, *particles, stencil, nodal.core, true, false);
+        velocity_from_momentum(nodal.core, mass_threshold, boundary_conditions);
+      }
+  }
+
+  template <int dim>
+  bool
+  Simulation<dim>::finished() const
+  {
+    const TimeStepping &t = run_settings.time;
+    return !(loop.time < t.end_time - 1e-9 * t.end_time) ||
+           (t.max_steps != 0 && loop.step >= t.max_steps);
+  }
+
+  template <int dim>
+  void
+  Simulation<dim>::take_step(const double dt, Progress &progress)
+  {
+    const RunSettings &s           = run_settings;
+    const double       n_particles = particles->handler.n_global_particles();
+    // Stepping time: the step and its checks, not the output.
+    const auto start = std::chrono::steady_clock::now();
+    try
+      {
+        if (!s.time.cfl_time_step)
+          guard_fixed_time_step(dt);
+        advance(dt);
+      }
+    catch (const RunError &error)
+      {
+        throw with_last_output(error);
+      }
+    loop.particle_steps += n_particles;
+
+    const bool output_due =
+      finished() || (s.output.interval > 0 &&
+                     loop.time >= loop.next_output - 1e-9 * s.time.end_time);
+    const bool energy_check_due =
+      s.checks.energy_growth_limit > 0 &&
+      (output_due || loop.step % energy_check_interval == 0);
+    Statistics now;
+    double     work = 0;
+    if (output_due || energy_check_due)
+      {
+        now  = statistics();
+        work = external_work();
+        loop.accuracy.observe(now, work);
+        if (energy_check_due &&
+            loop.accuracy.report().energy_drift > s.checks.energy_growth_limit)
+          throw with_last_output(energy_growth_stop());
+      }
+    loop.stepping_time +=
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+        .count();
+    if (output_due)
+      {
+        // The next multiple of the interval (no loop: a tiny interval
+        // cannot make it spin).
+        if (s.output.interval > 0)
+          loop.next_output =
+            (std::floor(loop.time / s.output.interval + 1e-9) + 1) *
+            s.output.interval;
+        write_output(dt, now, work, progress);
+      }
+    progress.update(loop.step, loop.time, dt, s.time.end_time, n_particles);
   }
 
   template <int dim>
   void
   Simulation<dim>::run()
   {
-    const RunSettings &s      = run_settings;
-    const bool         writer = Utilities::MPI::this_mpi_process(comm) == 0;
-    const StopSignalHandlers        signal_handlers;
-    const Statistics                initial = statistics();
-    std::unique_ptr<StatisticsFile> stats;
-    // Every rank learns whether rank 0 could make the folder: a rank that
-    // throws alone would leave the others waiting. The broadcast also keeps
-    // the others from writing before rank 0 has removed the earlier run's
-    // files.
-    std::string  problem, output_problem;
-    unsigned int n_removed = 0;
-    if (writer)
-      try
-        {
-          std::filesystem::create_directories(s.output.directory);
-          try
-            {
-              // An earlier run's series beside the new one (its later
-              // steps, its grid files) would mislead whoever opens the
-              // folder.
-              n_removed = remove_earlier_output(s.output.directory);
-              stats     = std::make_unique<StatisticsFile>(
-                s.output.directory + "/statistics.csv", dim, initial.has_error);
-            }
-          catch (const OutputError &e)
-            {
-              output_problem = e.what();
-            }
-        }
-      catch (const std::exception &e)
-        {
-          problem = e.what();
-        }
-    problem = Utilities::MPI::broadcast(comm, problem, 0);
-    if (!problem.empty())
-      throw InputError(scene_file + ": entry 'Output/Directory' = '" +
-                       s.output.directory +
-                       "': expected a folder that can be created and "
-                       "written (" +
-                       problem + ")");
-    agree_on_output_error(output_problem, "", comm);
+    const RunSettings       &s = run_settings;
+    const StopSignalHandlers signal_handlers;
+    const Statistics         initial = statistics();
+    const unsigned int       n_removed =
+      output_writer.open(scene_file, initial.has_error);
     Progress progress(std::cout,
                       s.output.progress_interval,
-                      writer && s.output.verbose);
-
-    const double local_particles =
-      particles->handler.n_locally_owned_particles();
-    const double fewest = Utilities::MPI::min(local_particles, comm);
-    const double most   = Utilities::MPI::max(local_particles, comm);
+                      Utilities::MPI::this_mpi_process(comm) == 0 &&
+                        s.output.verbose);
     if (s.output.verbose)
-      {
-        pcout << "dealmpm: " << dim << "D, "
-              << grid.triangulation.n_global_active_cells() << " cells, "
-              << grid.dof_handler.n_dofs() << " nodes, "
-              << static_cast<unsigned long>(initial.n_particles)
-              << " particles, " << Utilities::MPI::n_mpi_processes(comm)
-              << " rank(s) (" << fewest << " to " << most
-              << " particles per rank), about "
-              << short_number(memory.bytes / 1e9) << " GB estimated; output in "
-              << s.output.directory << "/";
-        if (n_removed > 0)
-          pcout << " (removed " << n_removed << " files of an earlier run)";
-        pcout << std::endl;
-      }
+      print_start(initial, n_removed);
+    // The grid output at t = 0 shows the particles' mass and velocity p / m
+    // on the nodes, as every later one does, instead of zeros.
     if (s.output.write_grid)
-      {
-        // The grid output at t = 0 shows the particles' mass and velocity
-        // p / m on the nodes, as every later one does, instead of zeros.
-        kernel.compute_stencil(grid, *particles, stencil);
-        if (s.method.apic)
-          record_positions(grid, *particles, stencil);
-        if (!Utilities::MPI::logical_or(stencil.failed, comm))
-          {
-            particle_to_grid(grid, *particles, stencil, fields, true, false);
-            velocity_from_momentum(fields, mass_threshold, boundary_conditions);
-          }
-      }
-    accuracy.start(initial);
-    write_output([&] {
-      stats->write_row(0,
-                       0.,
-                       0.,
-                       initial,
-                       0.,
-                       accuracy.report(),
-                       0,
-                       progress.elapsed_seconds());
-    });
-    unsigned int last_output_step = step;
-    // The statistics of the state written (already observed).
-    const auto output =
-      [&](const double dt, const Statistics &now, const double work) {
-        write_output([&] {
-          stats->write_row(step,
-                           current_time,
-                           dt,
-                           now,
-                           work,
-                           accuracy.report(),
-                           lost_particles,
-                           progress.elapsed_seconds());
-        });
-        last_output_step = step;
-      };
+      map_particles_for_grid_output();
+    loop.accuracy.start(initial);
+    write_output(0., initial, 0., progress);
 
-    double       next_output      = s.output.interval;
-    double       particle_steps   = 0;
-    double       stepping_time    = 0;
-    double       dt               = 0;
-    const double time_tolerance   = 1e-9 * s.time.end_time;
-    const auto   with_last_output = [&](const RunError &error) {
-      return RunError(
-        std::string(error.what()) + ". The last good output (t = " +
-        short_number(last_output_time) + ") is in " + s.output.directory + "/");
-    };
-    while (current_time < s.time.end_time - time_tolerance &&
-           (s.time.max_steps == 0 || step < s.time.max_steps))
+    loop.next_output = s.output.interval;
+    double dt        = 0;
+    while (!finished())
       {
         // mpirun passes the signal to every rank, but not at the same
         // moment: the ranks stop at the same step only if they agree.
@@ -539,90 +479,67 @@ namespace dealmpm
         if (stopped_by_signal != 0)
           break;
         if (particles->handler.n_global_particles() == 0)
-          throw RunError("step " + std::to_string(step) +
-                         " (t = " + short_number(current_time) +
-                         "): no particles are left in the grid");
-        dt = std::min(time_step(), s.time.end_time - current_time);
-        const double n_particles = particles->handler.n_global_particles();
-        // Stepping time: the step and its checks, not the output.
-        const auto start = std::chrono::steady_clock::now();
-        try
-          {
-            if (!s.time.cfl_time_step)
-              check_fixed_time_step(dt);
-            advance(dt);
-          }
-        catch (const RunError &error)
-          {
-            throw with_last_output(error);
-          }
-        particle_steps += n_particles;
-
-        const bool last = !(current_time < s.time.end_time - time_tolerance) ||
-                          (s.time.max_steps != 0 && step >= s.time.max_steps);
-        const bool output_due =
-          last || (s.output.interval > 0 &&
-                   current_time >= next_output - time_tolerance);
-        const bool energy_check_due =
-          s.checks.energy_growth_limit > 0 &&
-          (output_due || step % energy_check_interval == 0);
-        Statistics now;
-        double     work = 0;
-        if (output_due || energy_check_due)
-          {
-            now  = statistics();
-            work = external_work();
-            accuracy.observe(now, work);
-            if (energy_check_due &&
-                accuracy.report().energy_drift > s.checks.energy_growth_limit)
-              throw with_last_output(energy_growth_error());
-          }
-        stepping_time += std::chrono::duration<double>(
-                           std::chrono::steady_clock::now() - start)
-                           .count();
-        if (output_due)
-          {
-            // The next multiple of the interval (no loop: a tiny interval
-            // cannot make it spin).
-            if (s.output.interval > 0)
-              next_output =
-                (std::floor(current_time / s.output.interval + 1e-9) + 1) *
-                s.output.interval;
-            output(dt, now, work);
-          }
-        progress.update(step, current_time, dt, s.time.end_time, n_particles);
+          throw RunError(when(loop.step, loop.time) +
+                         ": no particles are left in the grid");
+        dt = std::min(time_step(), s.time.end_time - loop.time);
+        take_step(dt, progress);
       }
-    if (stopped_by_signal != 0 && last_output_step != step)
+    if (stopped_by_signal != 0 && loop.output.last_step != loop.step)
       {
         const Statistics now  = statistics();
         const double     work = external_work();
-        accuracy.observe(now, work);
-        output(dt, now, work);
+        loop.accuracy.observe(now, work);
+        write_output(dt, now, work, progress);
       }
-
     if (s.output.verbose)
-      {
-        computing_timer->print_summary();
-        pcout << "dealmpm: " << accuracy.report() << std::endl;
-        const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
-        const double       rate =
-          stepping_time > 0 ? particle_steps / stepping_time : 0;
-        pcout << "dealmpm: " << step << " steps to t = " << current_time << ", "
-              << std::setprecision(4) << rate / 1e6 << " M particle-steps/s on "
-              << n_ranks << " rank(s) (" << rate / 1e6 / n_ranks
-              << " M per core)";
-        Utilities::System::MemoryStats memory;
-        Utilities::System::get_memory_stats(memory);
-        pcout << ", peak memory " << memory.VmHWM / 1024 << " MB on rank 0";
-        if (lost_particles > 0)
-          pcout << ", " << lost_particles << " particle(s) left the grid";
-        pcout << std::endl;
-      }
+      print_summary();
     if (stopped_by_signal != 0)
       pcout << "dealmpm: stopped by " << signal_name(stopped_by_signal)
-            << " at step " << step << " (t = " << current_time
+            << " at step " << loop.step << " (t = " << loop.time
             << "); output in " << s.output.directory << "/ is complete"
             << std::endl;
+  }
+
+  template <int dim>
+  void
+  Simulation<dim>::print_start(const Statistics  &initial,
+                               const unsigned int n_removed) const
+  {
+    const double local_particles =
+      particles->handler.n_locally_owned_particles();
+    const double fewest = Utilities::MPI::min(local_particles, comm);
+    const double most   = Utilities::MPI::max(local_particles, comm);
+    pcout << "dealmpm: " << dim << "D, "
+          << grid.triangulation.n_global_active_cells() << " cells, "
+          << grid.dof_handler.n_dofs() << " nodes, "
+          << static_cast<unsigned long>(initial.n_particles) << " particles, "
+          << Utilities::MPI::n_mpi_processes(comm) << " rank(s) (" << fewest
+          << " to " << most << " particles per rank), about "
+          << short_number(memory.bytes / 1e9) << " GB estimated; output in "
+          << run_settings.output.directory << "/";
+    if (n_removed > 0)
+      pcout << " (removed " << n_removed << " files of an earlier run)";
+    pcout << std::endl;
+  }
+
+  template <int dim>
+  void
+  Simulation<dim>::print_summary() const
+  {
+    computing_timer->print_summary();
+    pcout << "dealmpm: " << loop.accuracy.report() << std::endl;
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+    const double       rate =
+      loop.stepping_time > 0 ? loop.particle_steps / loop.stepping_time : 0;
+    pcout << "dealmpm: " << loop.step << " steps to t = " << loop.time << ", "
+          << std::setprecision(4) << rate / 1e6 << " M particle-steps/s on "
+          << n_ranks << " rank(s) (" << rate / 1e6 / n_ranks << " M per core)";
+    Utilities::System::MemoryStats used;
+    Utilities::System::get_memory_stats(used);
+    pcout << ", peak memory " << used.VmHWM / 1024 << " MB on rank 0";
+    if (loop.lost_particles > 0)
+      pcout << ", " << loop.lost_particles << " particle(s) left the grid";
+    pcout << std::endl;
   }
 
   template class Simulation<2>;

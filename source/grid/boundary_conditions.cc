@@ -17,20 +17,84 @@ namespace dealmpm
     prm.declare_entry(
       "Boundary conditions",
       "",
-      Patterns::Anything(),
-      "Velocity condition per boundary id, e.g. '0: slip, 2: no-slip'. "
-      "'no-slip' fixes the nodes, 'slip' removes the normal velocity, "
-      "'free' (the default for ids not listed) does nothing.");
+      Patterns::Map(
+        Patterns::Integer(0, numbers::internal_face_boundary_id - 1),
+        Patterns::Selection(boundary_condition_registry<dim>().pattern())),
+      "Velocity condition per boundary id, e.g. '0: slip, 2: no-slip': " +
+        boundary_condition_registry<dim>().describe() +
+        "Ids not listed are free.");
     prm.leave_subsection();
   }
 
+  namespace
+  {
+    template <int dim>
+    class NoSlip : public BoundaryCondition<dim>
+    {
+    public:
+      bool
+      fixes_nodes() const override
+      {
+        return true;
+      }
+      std::vector<Tensor<1, dim>>
+      removed_directions(const Tensor<1, dim> &) const override
+      {
+        return {};
+      }
+    };
+
+    template <int dim>
+    class Slip : public BoundaryCondition<dim>
+    {
+    public:
+      std::vector<Tensor<1, dim>>
+      removed_directions(const Tensor<1, dim> &normal) const override
+      {
+        return {normal};
+      }
+    };
+
+    template <int dim>
+    class Free : public BoundaryCondition<dim>
+    {
+    public:
+      std::vector<Tensor<1, dim>>
+      removed_directions(const Tensor<1, dim> &) const override
+      {
+        return {};
+      }
+    };
+  } // namespace
+
   template <int dim>
-  std::map<types::boundary_id, BoundaryKind>
+  BoundaryConditionRegistry<dim> &
+  boundary_condition_registry()
+  {
+    static BoundaryConditionRegistry<dim> registry = [] {
+      BoundaryConditionRegistry<dim> r;
+      r.add("no-slip", "fixes the nodes.", [] {
+        return std::make_unique<NoSlip<dim>>();
+      });
+      r.add("slip", "removes the normal velocity.", [] {
+        return std::make_unique<Slip<dim>>();
+      });
+      r.add("free", "does nothing.", [] {
+        return std::make_unique<Free<dim>>();
+      });
+      return r;
+    }();
+    return registry;
+  }
+
+  template <int dim>
+  std::map<types::boundary_id, std::string>
   BoundaryConditions<dim>::read(SceneReader                           &reader,
                                 const std::vector<types::boundary_id> &grid_ids)
   {
-    SectionScope                               grid(reader, "Grid");
-    std::map<types::boundary_id, BoundaryKind> kinds;
+    SectionScope grid(reader, "Grid");
+    const auto  &registry = boundary_condition_registry<dim>();
+    std::map<types::boundary_id, std::string> names;
     for (const auto &item :
          Utilities::split_string_list(reader.get("Boundary conditions"), ','))
       {
@@ -46,8 +110,8 @@ namespace dealmpm
         if (parts.size() != 2 || id < 0 ||
             id >= static_cast<long>(numbers::internal_face_boundary_id))
           reader.fail("Boundary conditions",
-                      "a list of 'id: kind' pairs (kind no-slip, slip or "
-                      "free)");
+                      "a list of 'id: kind' pairs (kind " + registry.pattern() +
+                        ")");
         if (std::find(grid_ids.begin(), grid_ids.end(), id) == grid_ids.end())
           {
             std::string known;
@@ -57,38 +121,76 @@ namespace dealmpm
                         "boundary ids the grid has (" + known + "), not " +
                           std::to_string(id));
           }
-        if (parts[1] == "no-slip")
-          kinds[id] = BoundaryKind::no_slip;
-        else if (parts[1] == "slip")
-          kinds[id] = BoundaryKind::slip;
-        else if (parts[1] == "free")
-          kinds[id] = BoundaryKind::free;
-        else
+        if (!registry.has(parts[1]))
           reader.fail("Boundary conditions",
-                      "kind 'no-slip', 'slip' or 'free', not '" + parts[1] +
+                      "kind " + registry.pattern() + ", not '" + parts[1] +
                         "'");
+        names[id] = parts[1];
       }
-    return kinds;
+    return names;
   }
 
   template <int dim>
   void
   BoundaryConditions<dim>::setup(
-    const BackgroundGrid<dim>                        &grid,
-    const std::map<types::boundary_id, BoundaryKind> &kinds)
+    const BackgroundGrid<dim>                       &grid,
+    const std::map<types::boundary_id, std::string> &names)
   {
-    // Per constrained node: fixed, or the face normals grouped into
-    // directions. Faces that meet at less than 30 degrees (a curved or
-    // slightly kinked boundary) share one averaged normal; only a real
-    // corner gets a second one, so slip stays slip on curved walls.
-    struct Collected
-    {
-      bool                        fixed = false;
-      std::vector<Tensor<1, dim>> directions; ///< sums of aligned normals
-    };
-    std::map<unsigned int, Collected> collected;
-    const double                      same_direction = std::cos(M_PI / 6);
+    conditions.clear();
+    for (const auto &[id, name] : names)
+      conditions[id] = boundary_condition_registry<dim>().get(name).create();
+    rebuild(grid);
+  }
 
+  namespace
+  {
+    /** Add @p n to @p directions: faces that meet at less than 30 degrees
+     * (a curved or slightly kinked boundary) share one averaged normal;
+     * only a real corner gets a second one, so slip stays slip on curved
+     * walls. */
+    template <int dim>
+    void
+    merge_direction(std::vector<Tensor<1, dim>> &directions,
+                    const Tensor<1, dim>        &n)
+    {
+      const double same_direction = std::cos(M_PI / 6);
+      for (auto &direction : directions)
+        {
+          const double cosine = direction * n / direction.norm();
+          if (std::abs(cosine) > same_direction)
+            {
+              direction += (cosine > 0 ? 1. : -1.) * n;
+              return;
+            }
+        }
+      directions.push_back(n);
+    }
+
+    /** Unit normal of a boundary face (its sign unspecified). */
+    template <typename Face>
+    auto
+    face_normal(const Face &face)
+    {
+      constexpr int  dim = Face::AccessorType::space_dimension;
+      Tensor<1, dim> normal;
+      if constexpr (dim == 2)
+        {
+          const Tensor<1, dim> edge = face->vertex(1) - face->vertex(0);
+          normal[0]                 = edge[1];
+          normal[1]                 = -edge[0];
+        }
+      else
+        normal = cross_product_3d(face->vertex(1) - face->vertex(0),
+                                  face->vertex(2) - face->vertex(0));
+      return normal / normal.norm();
+    }
+  } // namespace
+
+  template <int dim>
+  std::map<unsigned int, typename BoundaryConditions<dim>::Collected>
+  BoundaryConditions<dim>::collect_nodes(const BackgroundGrid<dim> &grid) const
+  {
+    std::map<unsigned int, Collected> collected;
     for (const auto &cell : grid.dof_handler.active_cell_iterators())
       {
         if (!cell->is_locally_owned() || !cell->at_boundary())
@@ -98,20 +200,14 @@ namespace dealmpm
             const auto face = cell->face(f);
             if (!face->at_boundary())
               continue;
-            const auto kind = kinds.find(face->boundary_id());
-            if (kind == kinds.end() || kind->second == BoundaryKind::free)
+            const auto found = conditions.find(face->boundary_id());
+            if (found == conditions.end())
               continue;
-            Tensor<1, dim> normal;
-            if constexpr (dim == 2)
-              {
-                const Tensor<1, dim> edge = face->vertex(1) - face->vertex(0);
-                normal[0]                 = edge[1];
-                normal[1]                 = -edge[0];
-              }
-            else
-              normal = cross_product_3d(face->vertex(1) - face->vertex(0),
-                                        face->vertex(2) - face->vertex(0));
-            normal /= normal.norm();
+            const BoundaryCondition<dim>     &condition = *found->second;
+            const std::vector<Tensor<1, dim>> removed =
+              condition.removed_directions(face_normal(face));
+            if (!condition.fixes_nodes() && removed.empty())
+              continue;
             for (unsigned int v = 0; v < face->n_vertices(); ++v)
               {
                 const types::global_dof_index dof =
@@ -121,30 +217,22 @@ namespace dealmpm
                   continue;
                 Collected &node =
                   collected[grid.partitioner->global_to_local(dof)];
-                if (kind->second == BoundaryKind::no_slip)
-                  {
-                    node.fixed = true;
-                    continue;
-                  }
-                bool merged = false;
-                for (auto &direction : node.directions)
-                  {
-                    const double cosine = direction * normal / direction.norm();
-                    if (std::abs(cosine) > same_direction)
-                      {
-                        direction += (cosine > 0 ? 1. : -1.) * normal;
-                        merged = true;
-                        break;
-                      }
-                  }
-                if (!merged)
-                  node.directions.push_back(normal);
+                if (condition.fixes_nodes())
+                  node.fixed = true;
+                for (const Tensor<1, dim> &n : removed)
+                  merge_direction(node.directions, n);
               }
           }
       }
+    return collected;
+  }
 
+  template <int dim>
+  void
+  BoundaryConditions<dim>::rebuild(const BackgroundGrid<dim> &grid)
+  {
     nodes.clear();
-    for (const auto &[local_index, c] : collected)
+    for (const auto &[local_index, c] : collect_nodes(grid))
       {
         Node node{local_index, 0, {}};
         if (c.fixed)

@@ -34,15 +34,18 @@ namespace dealmpm
     const Mapping<dim>                               &mapping,
     const std::vector<std::string>                   &model_names,
     const std::vector<std::vector<FieldDescription>> &internal_variables,
-    const bool                                        affine_velocity,
-    const bool                                        particle_domain)
+    const std::vector<FieldDescription>              &method_fields,
+    const std::vector<FieldDescription>              &effect_fields)
     : layout(core_layout<dim>(fields))
   {
-    fields.domain_half_length = particle_domain ?
-                                  layout.add("domain_half_length", dim) :
+    for (const FieldDescription &f : method_fields)
+      layout.add(f.name, f.n_components);
+    fields.domain_half_length = layout.has("domain_half_length") ?
+                                  layout.offset("domain_half_length") :
                                   numbers::invalid_unsigned_int;
-    fields.affine_velocity = affine_velocity ? layout.add("apic_B", dim * dim) :
-                                               numbers::invalid_unsigned_int;
+    fields.affine_velocity    = layout.has("apic_B") ?
+                                  layout.offset("apic_B") :
+                                  numbers::invalid_unsigned_int;
     // One block of internal variables per model in use, shared by the
     // materials of that model.
     std::map<std::string, unsigned int> block_of_model;
@@ -64,6 +67,9 @@ namespace dealmpm
         block_of_model[model_names[m]] = first;
         internal_offset.push_back(first);
       }
+    for (const FieldDescription &f : effect_fields)
+      if (!layout.has(f.name))
+        layout.add(f.name, f.n_components);
     handler.initialize(tria, mapping, layout.size());
   }
 

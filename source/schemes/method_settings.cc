@@ -1,4 +1,5 @@
 #include <dealmpm/schemes/method_settings.h>
+#include <dealmpm/transfer/kernel.h>
 
 namespace dealmpm
 {
@@ -17,19 +18,10 @@ namespace dealmpm
       "velocity; one sweep, about 1.5x faster, but with linear shape "
       "functions unstable when particles cross cells), 'USF' (first, with "
       "the velocity at the start of the step; gains energy).");
-    prm.declare_entry(
-      "Shape function",
-      "linear",
-      Patterns::Selection(shape_function_pattern()),
-      "Particle-node weights: 'linear' (the grid's Q1 functions at the "
-      "particle; cheapest, but noisy when particles cross cells), 'uGIMP' "
-      "(their average over a fixed particle domain of one particle "
-      "spacing), 'cpGIMP' (the domain stretches with F's diagonal), 'CPDI' "
-      "(the domain is the parallelogram F maps it to; for large shear and "
-      "rotation, any quadrilateral grid), 'quadratic B-spline' (smooth, "
-      "3^dim nodes per particle; a uniform box grid without local "
-      "refinement). GIMP needs axis-aligned box cells. GIMP and CPDI add "
-      "dim doubles per particle.");
+    prm.declare_entry("Shape function",
+                      "linear",
+                      Patterns::Selection(shape_function_pattern()),
+                      shape_function_documentation());
     prm.declare_entry(
       "Velocity update",
       "FLIP",
@@ -68,7 +60,7 @@ namespace dealmpm
     const std::string update = reader.get("Velocity update");
     s.scheme                 = parse_update_scheme(reader.get("Stress update"));
     s.apic                   = update == "APIC";
-    s.shape_function = parse_shape_function(reader.get("Shape function"));
+    s.shape_function         = reader.get("Shape function");
     s.flip_fraction =
       update == "FLIP" ?
         1. :

@@ -1,117 +1,199 @@
-#include <deal.II/base/exceptions.h>
-
 #include <dealmpm/transfer/kernel.h>
+#include <dealmpm/transfer/quadratic_bspline.h>
+
+#include <set>
+#include <stdexcept>
 
 namespace dealmpm
 {
   namespace
   {
-    const std::pair<ShapeFunction, const char *> names[] = {
-      {ShapeFunction::linear, "linear"},
-      {ShapeFunction::uGIMP, "uGIMP"},
-      {ShapeFunction::cpGIMP, "cpGIMP"},
-      {ShapeFunction::CPDI, "CPDI"},
-      {ShapeFunction::quadratic_bspline, "quadratic B-spline"}};
+    template <int dim>
+    class Linear : public ShapeFunction<dim>
+    {
+    public:
+      std::string
+      setup(BackgroundGrid<dim> &) override
+      {
+        return "";
+      }
+
+      void
+      compute_stencil(const BackgroundGrid<dim> &grid,
+                      const ParticleSet<dim>    &particles,
+                      Stencil<dim>              &stencil) const override
+      {
+        compute_linear_stencil(grid, particles, stencil);
+      }
+    };
+
+    /** GIMP and CPDI keep each particle's initial domain half-lengths. */
+    template <int dim>
+    class WithParticleDomain : public ShapeFunction<dim>
+    {
+    public:
+      std::vector<FieldDescription>
+      particle_fields() const override
+      {
+        return {{"domain_half_length", dim}};
+      }
+    };
+
+    template <int dim>
+    class GIMP : public WithParticleDomain<dim>
+    {
+    public:
+      explicit GIMP(const bool follow_deformation)
+        : follow_deformation(follow_deformation)
+      {}
+
+      std::string
+      setup(BackgroundGrid<dim> &grid) override
+      {
+        if (!grid.cartesian)
+          return "'linear' or 'CPDI' on this grid: GIMP needs cells that "
+                 "are axis-aligned boxes (a rectangle grid, or such a mesh)";
+        grid.find_neighbors();
+        return "";
+      }
+
+      void
+      compute_stencil(const BackgroundGrid<dim> &grid,
+                      const ParticleSet<dim>    &particles,
+                      Stencil<dim>              &stencil) const override
+      {
+        compute_gimp_stencil(grid, particles, follow_deformation, stencil);
+      }
+
+    private:
+      bool follow_deformation;
+    };
+
+    template <int dim>
+    class CPDI : public WithParticleDomain<dim>
+    {
+    public:
+      std::string
+      setup(BackgroundGrid<dim> &grid) override
+      {
+        grid.find_neighbors();
+        return "";
+      }
+
+      void
+      compute_stencil(const BackgroundGrid<dim> &grid,
+                      const ParticleSet<dim>    &particles,
+                      Stencil<dim>              &stencil) const override
+      {
+        compute_cpdi_stencil(grid, particles, stencil);
+      }
+    };
+
+    template <int dim>
+    class QuadraticBSpline : public ShapeFunction<dim>
+    {
+    public:
+      std::string
+      setup(BackgroundGrid<dim> &grid) override
+      {
+        const std::string problem = QuadraticBSplineGrid<dim>::check(grid);
+        if (!problem.empty())
+          return "another shape function on this grid: the quadratic "
+                 "B-spline needs " +
+                 problem;
+        grid.find_neighbors();
+        spline = QuadraticBSplineGrid<dim>();
+        spline.setup(grid);
+        return "";
+      }
+
+      void
+      compute_stencil(const BackgroundGrid<dim> &grid,
+                      const ParticleSet<dim>    &particles,
+                      Stencil<dim>              &stencil) const override
+      {
+        compute_bspline_stencil(grid, spline, particles, stencil);
+      }
+
+    private:
+      QuadraticBSplineGrid<dim> spline;
+    };
+
+    template <int dim>
+    ShapeFunctionRegistry<dim>
+    built_in_shape_functions()
+    {
+      ShapeFunctionRegistry<dim> registry;
+      registry.add("linear",
+                   "the grid's Q1 functions at the particle; cheapest, but "
+                   "noisy when particles cross cells.",
+                   [] { return std::make_unique<Linear<dim>>(); });
+      registry.add("uGIMP",
+                   "the Q1 functions averaged over a fixed particle domain "
+                   "of one particle spacing; needs axis-aligned box cells.",
+                   [] { return std::make_unique<GIMP<dim>>(false); });
+      registry.add("cpGIMP",
+                   "as uGIMP, the domain stretching with F's diagonal.",
+                   [] { return std::make_unique<GIMP<dim>>(true); });
+      registry.add("CPDI",
+                   "the domain is the parallelogram F maps it to; for large "
+                   "shear and rotation, any quadrilateral grid.",
+                   [] { return std::make_unique<CPDI<dim>>(); });
+      registry.add("quadratic B-spline",
+                   "smooth, 3^dim nodes per particle; a uniform box grid "
+                   "without local refinement.",
+                   [] { return std::make_unique<QuadraticBSpline<dim>>(); });
+      return registry;
+    }
   } // namespace
+
+  template <int dim>
+  ShapeFunctionRegistry<dim> &
+  shape_function_registry()
+  {
+    static ShapeFunctionRegistry<dim> registry =
+      built_in_shape_functions<dim>();
+    return registry;
+  }
 
   std::string
   shape_function_pattern()
   {
+    std::set<std::string> names;
+    for (const auto &n : shape_function_registry<2>().names())
+      names.insert(n);
+    for (const auto &n : shape_function_registry<3>().names())
+      names.insert(n);
     std::string pattern;
-    for (const auto &[kind, name] : names)
-      pattern += (pattern.empty() ? "" : "|") + std::string(name);
+    for (const auto &n : names)
+      pattern += (pattern.empty() ? "" : "|") + n;
     return pattern;
   }
 
-  ShapeFunction
-  parse_shape_function(const std::string &name)
-  {
-    for (const auto &[kind, n] : names)
-      if (name == n)
-        return kind;
-    AssertThrow(false, ExcMessage("unknown shape function '" + name + "'"));
-    return ShapeFunction::linear;
-  }
-
   std::string
-  to_string(const ShapeFunction kind)
+  shape_function_documentation()
   {
-    for (const auto &[k, name] : names)
-      if (k == kind)
-        return name;
-    return "?";
-  }
-
-  bool
-  has_particle_domain(const ShapeFunction kind)
-  {
-    return kind == ShapeFunction::uGIMP || kind == ShapeFunction::cpGIMP ||
-           kind == ShapeFunction::CPDI;
+    return "Particle-node weights: " + shape_function_registry<3>().describe() +
+           "GIMP and CPDI add dim doubles per particle.";
   }
 
   template <int dim>
   std::string
-  Kernel<dim>::setup(const ShapeFunction kind, BackgroundGrid<dim> &grid)
+  Kernel<dim>::setup(const std::string &name, BackgroundGrid<dim> &grid)
   {
-    shape_function = kind;
-    spline.reset();
-    switch (kind)
-      {
-        case ShapeFunction::linear:
-          return "";
-        case ShapeFunction::uGIMP:
-        case ShapeFunction::cpGIMP:
-          if (!grid.cartesian)
-            return "'linear' or 'CPDI' on this grid: GIMP needs cells that "
-                   "are axis-aligned boxes (a rectangle grid, or such a mesh)";
-          grid.find_neighbors();
-          return "";
-        case ShapeFunction::CPDI:
-          grid.find_neighbors();
-          return "";
-          case ShapeFunction::quadratic_bspline: {
-            const std::string problem = QuadraticBSplineGrid<dim>::check(grid);
-            if (!problem.empty())
-              return "another shape function on this grid: the quadratic "
-                     "B-spline needs " +
-                     problem;
-            grid.find_neighbors();
-            spline = std::make_unique<QuadraticBSplineGrid<dim>>();
-            spline->setup(grid);
-            return "";
-          }
-      }
-    return "";
-  }
-
-  template <int dim>
-  void
-  Kernel<dim>::compute_stencil(const BackgroundGrid<dim> &grid,
-                               const ParticleSet<dim>    &particles,
-                               Stencil<dim>              &stencil) const
-  {
-    stencil.failed = false;
-    switch (shape_function)
-      {
-        case ShapeFunction::linear:
-          compute_linear_stencil(grid, particles, stencil);
-          break;
-        case ShapeFunction::uGIMP:
-        case ShapeFunction::cpGIMP:
-          compute_gimp_stencil(grid,
-                               particles,
-                               shape_function == ShapeFunction::cpGIMP,
-                               stencil);
-          break;
-        case ShapeFunction::CPDI:
-          compute_cpdi_stencil(grid, particles, stencil);
-          break;
-        case ShapeFunction::quadratic_bspline:
-          compute_bspline_stencil(grid, *spline, particles, stencil);
-          break;
-      }
+    const ShapeFunctionRegistry<dim> &registry = shape_function_registry<dim>();
+    if (!registry.has(name))
+      return "one of " + registry.pattern() + " (no '" + name +
+             "' is registered in " + std::to_string(dim) + "D)";
+    chosen         = name;
+    shape_function = registry.get(name).create();
+    return shape_function->setup(grid);
   }
 
   template class Kernel<2>;
   template class Kernel<3>;
+  template ShapeFunctionRegistry<2> &
+  shape_function_registry();
+  template ShapeFunctionRegistry<3> &
+  shape_function_registry();
 } // namespace dealmpm

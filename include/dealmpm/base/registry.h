@@ -18,13 +18,16 @@ namespace dealmpm
    * models, effects). Each entry declares its own parameters in a subsection
    * and builds itself from them, so user code can add models from outside the
    * library (see examples/) and the help text lists every registered name.
+   * @p Signature: what create() takes (shape functions and boundary
+   * conditions have no parameters and take nothing).
    */
-  template <typename Product>
+  template <typename Product,
+            typename Signature = std::unique_ptr<Product>(SceneReader &)>
   class Registry
   {
   public:
     using Declare = std::function<void(ParameterHandler &)>;
-    using Create  = std::function<std::unique_ptr<Product>(SceneReader &)>;
+    using Create  = std::function<Signature>;
 
     struct Entry
     {
@@ -43,6 +46,16 @@ namespace dealmpm
         const Create      &create)
     {
       entries[name] = Entry{name, description, declare, create};
+    }
+
+    /** Register a name whose product has no parameters. */
+    void
+    add(const std::string &name,
+        const std::string &description,
+        const Create      &create)
+    {
+      add(
+        name, description, [](ParameterHandler &) {}, create);
     }
 
     bool

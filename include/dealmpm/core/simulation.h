@@ -4,6 +4,7 @@
 #include <deal.II/base/timer.h>
 
 #include <dealmpm/base/errors.h>
+#include <dealmpm/core/run_state.h>
 #include <dealmpm/diagnostics/accuracy_report.h>
 #include <dealmpm/diagnostics/check_settings.h>
 #include <dealmpm/diagnostics/memory_estimate.h>
@@ -12,10 +13,10 @@
 #include <dealmpm/effects/effect_list.h>
 #include <dealmpm/grid/background_grid.h>
 #include <dealmpm/grid/boundary_conditions.h>
-#include <dealmpm/grid/nodal_fields.h>
+#include <dealmpm/grid/nodal_field_set.h>
 #include <dealmpm/io/output_settings.h>
-#include <dealmpm/io/particle_output.h>
-#include <dealmpm/io/pvd_series.h>
+#include <dealmpm/io/output_writer.h>
+#include <dealmpm/io/progress.h>
 #include <dealmpm/materials/material.h>
 #include <dealmpm/materials/material_sections.h>
 #include <dealmpm/materials/stress_update.h>
@@ -101,18 +102,17 @@ namespace dealmpm
     double
     time() const
     {
-      return current_time;
+      return loop.time;
     }
     unsigned int
     step_number() const
     {
-      return step;
+      return loop.step;
     }
-    const RunSettings &
-    settings() const
-    {
-      return run_settings;
-    }
+    /** The loop's state with each effect's accumulators, as it would be
+     * saved. */
+    RunState
+    run_state() const;
     ParticleSet<dim> &
     particle_set()
     {
@@ -126,7 +126,13 @@ namespace dealmpm
     const NodalFields<dim> &
     nodal_fields() const
     {
-      return fields;
+      return nodal.core;
+    }
+    /** Every nodal field, the per-body ones included. */
+    const NodalFieldSet<dim> &
+    nodal_field_set() const
+    {
+      return nodal;
     }
     /** The material of index m (0-based, "Material m+1"). */
     const Material<dim> &
@@ -138,7 +144,7 @@ namespace dealmpm
     const AccuracyReport &
     accuracy_report() const
     {
-      return accuracy.report();
+      return loop.accuracy.report();
     }
     /** Work done so far by effects without a potential (all ranks). */
     double
@@ -153,7 +159,7 @@ namespace dealmpm
     double
     n_lost_particles() const
     {
-      return lost_particles;
+      return loop.lost_particles;
     }
     TimerOutput &
     timer()
@@ -162,29 +168,47 @@ namespace dealmpm
     }
 
   private:
+    /** Pass two over the scene: settings, materials, effects, bodies. */
     void
-    read_run_settings(SceneReader &reader);
+    read_scene(SceneReader &reader, const SceneShape &shape);
+    /** The grid (after the memory check), the shape function's grid data
+     * and the boundary conditions. */
+    void
+    build_grid(SceneReader &reader);
     void
     create_particles(SceneReader &reader);
     void
     relocate_particles();
-    /** Write the output files of the current state on every rank, then
-     * (rank 0) @p write_statistics_row and the series entries, so that no
-     * entry and no row is on disk before the files they stand for.
-     * Collective; throws OutputError on every rank when any rank failed. */
+    /** One step of the loop with its checks and, when due, an output. */
     void
-    write_output(const std::function<void()> &write_statistics_row);
-    /** "particle N at (x, y)": the one with the largest signal rate over all
-     * ranks (collective). */
+    take_step(const double dt, Progress &progress);
+    bool
+    finished() const;
+    /** The output of the current state (statistics @p now, work @p work
+     * of the effects), through the output writer; collective. */
+    void
+    write_output(const double      dt,
+                 const Statistics &now,
+                 const double      work,
+                 const Progress   &progress);
+    /** P2G of the initial state, so that the first grid output shows it. */
+    void
+    map_particles_for_grid_output();
+    /** "step N (t = T)" for messages. */
     std::string
-    fastest_particle() const;
-    /** A fixed step above the particle CFL limit stops the run; above the
-     * warning bound it is said once. */
+    when(const unsigned int step, const double time) const;
+    /** Stop on an unstable fixed step, warn once on a large one. */
     void
-    check_fixed_time_step(const double dt);
+    guard_fixed_time_step(const double dt);
     /** The stop of a run whose energy grew past the limit (collective). */
     RunError
-    energy_growth_error() const;
+    energy_growth_stop() const;
+    RunError
+    with_last_output(const RunError &error) const;
+    void
+    print_start(const Statistics &initial, const unsigned int n_removed) const;
+    void
+    print_summary() const;
 
     /** Steps between energy checks besides the outputs: a statistics sweep
      * costs about a fifth of a step. */
@@ -202,10 +226,9 @@ namespace dealmpm
     std::vector<std::string>                    effect_names;
     std::vector<Body<dim>>                      bodies;
     std::unique_ptr<ParticleSet<dim>>           particles;
-    NodalFields<dim>                            fields;
+    NodalFieldSet<dim>                          nodal;
     Kernel<dim>                                 kernel;
     MemoryEstimate                              memory;
-    AccuracyMonitor                             accuracy;
     Stencil<dim>                                stencil;
     std::vector<Stage<dim>>                     stages;
     double                                      mass_threshold = 0;
@@ -213,19 +236,13 @@ namespace dealmpm
      * input error propagates prints a warning about MPI. */
     std::unique_ptr<TimerOutput> computing_timer;
 
-    double             current_time    = 0;
-    unsigned int       step            = 0;
-    double             max_signal_rate = 0; ///< of the last stress update
-    ParticleCheck<dim> particle_check;      ///< this rank's, of the last step
-    bool               cfl_warned     = false;
-    double             lost_particles = 0;
+    RunState loop; ///< time, step, outputs, monitor: what a resume needs
+    double   max_signal_rate = 0;      ///< of the last stress update
+    ParticleCheck<dim> particle_check; ///< this rank's, of the last step
+    bool               cfl_warned = false;
     std::vector<std::pair<types::particle_index, Point<dim>>> lost_this_step;
-
-    unsigned int        output_counter    = 0;
-    double              last_output_time  = 0;
-    int                 stopped_by_signal = 0;
-    ParticleOutput<dim> particle_output;
-    PvdSeries           particle_series, grid_series;
+    int               stopped_by_signal = 0;
+    OutputWriter<dim> output_writer;
   };
 
   /** Read Dimension, Number of bodies and Number of materials (pass one of

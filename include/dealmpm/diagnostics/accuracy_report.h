@@ -33,6 +33,14 @@ namespace dealmpm
     bool   has_error      = false;
     double error_L2       = 0;
     double error_max      = 0;
+
+    template <class Archive>
+    void
+    serialize(Archive &archive, const unsigned int /*version*/)
+    {
+      archive &energy_drift &momentum_drift &mass_loss &min_J &max_cfl;
+      archive &has_error &error_L2                            &error_max;
+    }
   };
 
   class AccuracyMonitor
@@ -56,6 +64,13 @@ namespace dealmpm
     report() const
     {
       return current;
+    }
+
+    template <class Archive>
+    void
+    serialize(Archive &archive, const unsigned int /*version*/)
+    {
+      archive &initial &max_energy_supplied &max_kinetic_energy &current;
     }
 
   private:

@@ -32,6 +32,15 @@ namespace dealmpm
     {
       return kinetic_energy + strain_energy + gravitational_energy;
     }
+
+    template <class Archive>
+    void
+    serialize(Archive &archive, const unsigned int /*version*/)
+    {
+      archive &n_particles &mass &momentum[0] & momentum[1] & momentum[2];
+      archive &kinetic_energy &strain_energy &gravitational_energy;
+      archive &has_error &error_L2           &error_max;
+    }
   };
 
   /** A particle and how much its energy grew since the start. */

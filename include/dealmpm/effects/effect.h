@@ -4,11 +4,12 @@
 
 #include <dealmpm/base/registry.h>
 #include <dealmpm/grid/background_grid.h>
-#include <dealmpm/grid/nodal_fields.h>
+#include <dealmpm/grid/nodal_field_set.h>
 #include <dealmpm/particles/particle_set.h>
 #include <dealmpm/transfer/stencil.h>
 
 #include <string>
+#include <vector>
 
 namespace dealmpm
 {
@@ -21,6 +22,8 @@ namespace dealmpm
     const Stencil<dim>        &stencil;
     double                     time; ///< at the start of the step
     double                     dt;
+    /** Every nodal field, the per-body ones included. */
+    NodalFieldSet<dim> &field_set;
   };
 
   /**
@@ -38,6 +41,24 @@ namespace dealmpm
   {
   public:
     virtual ~Effect() = default;
+
+    /** Per-particle fields the effect stores (name, components): added to
+     * the property layout only when the effect is listed; find them with
+     * particles.layout.offset(name). */
+    virtual std::vector<FieldDescription>
+    particle_fields() const
+    {
+      return {};
+    }
+
+    /** Nodal fields the effect needs once per body (name, components), in
+     * the nodal field set only when the effect is listed (contact asks for
+     * a velocity per body). */
+    virtual std::vector<FieldDescription>
+    nodal_fields_per_body() const
+    {
+      return {};
+    }
 
     /** Set initial particle state (a velocity field, a pre-deformed state),
      * once, after the bodies are made; particles may be moved (they are
@@ -79,6 +100,18 @@ namespace dealmpm
     {
       return 0;
     }
+
+    /** The effect's accumulators, for a saved run (core/run_state.h). */
+    virtual std::vector<double>
+    saved_state() const
+    {
+      return {};
+    }
+
+    /** Take back what saved_state() gave. */
+    virtual void
+    restore_state(const std::vector<double> & /*state*/)
+    {}
 
     /** Potential energy of a mass at x, for the statistics. */
     virtual double

@@ -34,6 +34,18 @@ namespace dealmpm
       return work;
     }
 
+    std::vector<double>
+    saved_state() const override
+    {
+      return {work};
+    }
+
+    void
+    restore_state(const std::vector<double> &state) override
+    {
+      work = state.at(0);
+    }
+
     bool
     has_exact_solution() const override
     {

@@ -2,26 +2,58 @@
 
 #include <deal.II/base/tensor.h>
 
+#include <dealmpm/base/registry.h>
 #include <dealmpm/grid/background_grid.h>
 #include <dealmpm/grid/nodal_fields.h>
 
 #include <map>
+#include <memory>
+#include <string>
 #include <vector>
 
 namespace dealmpm
 {
-  enum class BoundaryKind
+  /**
+   * A velocity condition on the nodes of the boundary faces of one id
+   * ('Grid/Boundary conditions = id: name, ...'). Built in: 'no-slip',
+   * 'slip', 'free' (boundary_condition_registry()); a user registers
+   * another from C++.
+   */
+  template <int dim>
+  class BoundaryCondition
   {
-    free,
-    no_slip, ///< all velocity components zero
-    slip     ///< normal velocity zero, tangential free
+  public:
+    virtual ~BoundaryCondition() = default;
+
+    /** Whether the nodes lose every velocity component (no-slip). */
+    virtual bool
+    fixes_nodes() const
+    {
+      return false;
+    }
+
+    /** The directions whose velocity component the nodes lose on a face of
+     * unit normal @p normal (its sign unspecified): slip the normal, free
+     * none. */
+    virtual std::vector<Tensor<1, dim>>
+    removed_directions(const Tensor<1, dim> &normal) const = 0;
   };
+
+  template <int dim>
+  using BoundaryConditionRegistry =
+    Registry<BoundaryCondition<dim>, std::unique_ptr<BoundaryCondition<dim>>()>;
+
+  template <int dim>
+  BoundaryConditionRegistry<dim> &
+  boundary_condition_registry();
 
   /**
    * Velocity conditions on grid nodes by boundary id, applied to the nodal
    * velocity v* of each step. A node on two slip faces that meet at a corner
    * (more than 30 degrees) loses both normal components, on a curved wall
-   * only the averaged normal one; a node on any no-slip face is fixed.
+   * only the averaged normal one; a node on any no-slip face is fixed. The
+   * conditions are kept, so that rebuild() finds the nodes of a changed
+   * grid.
    */
   template <int dim>
   class BoundaryConditions
@@ -30,13 +62,19 @@ namespace dealmpm
     static void
     declare_parameters(ParameterHandler &prm);
 
-    /** Read "Grid/Boundary conditions"; every id must be one of @p grid_ids. */
-    static std::map<types::boundary_id, BoundaryKind>
+    /** Read "Grid/Boundary conditions" (id -> registered name); every id
+     * must be one of @p grid_ids. */
+    static std::map<types::boundary_id, std::string>
     read(SceneReader &reader, const std::vector<types::boundary_id> &grid_ids);
 
+    /** Make the named conditions and find their nodes on @p grid. */
     void
-    setup(const BackgroundGrid<dim>                        &grid,
-          const std::map<types::boundary_id, BoundaryKind> &kinds);
+    setup(const BackgroundGrid<dim>                       &grid,
+          const std::map<types::boundary_id, std::string> &names);
+
+    /** Find the nodes again after the grid changed. */
+    void
+    rebuild(const BackgroundGrid<dim> &grid);
 
     /** Remove the constrained components of a nodal vector field on the
      * locally owned nodes. */
@@ -61,6 +99,18 @@ namespace dealmpm
       unsigned int                    n_normals = 0;
       std::array<Tensor<1, dim>, dim> normals; ///< orthonormal
     };
+    /** A constrained node: fixed, or the directions it loses. */
+    struct Collected
+    {
+      bool                        fixed = false;
+      std::vector<Tensor<1, dim>> directions; ///< sums of aligned normals
+    };
+    /** Per locally owned constrained node (local index): what it loses. */
+    std::map<unsigned int, Collected>
+    collect_nodes(const BackgroundGrid<dim> &grid) const;
+
+    std::map<types::boundary_id, std::shared_ptr<const BoundaryCondition<dim>>>
+                      conditions;
     std::vector<Node> nodes;
   };
 } // namespace dealmpm

@@ -22,6 +22,20 @@ namespace dealmpm
                   const std::string &file,
                   const std::string &pvd_path);
 
+    bool
+    operator==(const PvdSeries &other) const
+    {
+      return entries == other.entries;
+    }
+
+    /** Needs <boost/serialization/{vector,utility,string}.hpp>. */
+    template <class Archive>
+    void
+    serialize(Archive &archive, const unsigned int /*version*/)
+    {
+      archive &entries;
+    }
+
   private:
     std::vector<std::pair<double, std::string>> entries;
   };

@@ -43,16 +43,19 @@ namespace dealmpm
   {
   public:
     /**
-     * @p internal_variables: per material index, the model's internal
-     * variables; models that share a name share storage.
+     * The layout is built from what the parts of the run ask for, in this
+     * order: the core fields, @p method_fields (the shape function's and
+     * the transfer's: "domain_half_length", "apic_B"), per material index
+     * the model's @p internal_variables (models that share a name share
+     * storage), then the listed effects' @p effect_fields.
      */
     ParticleSet(
       const Triangulation<dim>                         &tria,
       const Mapping<dim>                               &mapping,
       const std::vector<std::string>                   &model_names,
       const std::vector<std::vector<FieldDescription>> &internal_variables,
-      const bool                                        affine_velocity = false,
-      const bool particle_domain = false);
+      const std::vector<FieldDescription>              &method_fields = {},
+      const std::vector<FieldDescription>              &effect_fields = {});
 
     PropertyLayout layout;
     CoreFields     fields;

@@ -4,7 +4,6 @@
 
 #include <dealmpm/base/scene_reader.h>
 #include <dealmpm/schemes/update_scheme.h>
-#include <dealmpm/transfer/kernel.h>
 
 #include <string>
 
@@ -19,12 +18,13 @@ namespace dealmpm
    */
   struct MethodSettings
   {
-    UpdateScheme  scheme                    = UpdateScheme::MUSL;
-    double        flip_fraction             = 1; ///< 1 FLIP, 0 PIC
-    bool          apic                      = false;
-    ShapeFunction shape_function            = ShapeFunction::linear;
-    double        relative_mass_threshold   = 1e-9;
-    bool          stop_when_particles_leave = false;
+    UpdateScheme scheme        = UpdateScheme::MUSL;
+    double       flip_fraction = 1; ///< 1 FLIP, 0 PIC
+    bool         apic          = false;
+    /** A name from shape_function_registry(). */
+    std::string shape_function            = "linear";
+    double      relative_mass_threshold   = 1e-9;
+    bool        stop_when_particles_leave = false;
 
     /** Declare the section's entries. */
     static void

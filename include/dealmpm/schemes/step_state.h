@@ -5,7 +5,7 @@
 #include <dealmpm/effects/effect.h>
 #include <dealmpm/grid/background_grid.h>
 #include <dealmpm/grid/boundary_conditions.h>
-#include <dealmpm/grid/nodal_fields.h>
+#include <dealmpm/grid/nodal_field_set.h>
 #include <dealmpm/materials/material.h>
 #include <dealmpm/materials/stress_update.h>
 #include <dealmpm/particles/particle_set.h>
@@ -34,7 +34,7 @@ namespace dealmpm
               ParticleSet<dim>              &particles,
               const Kernel<dim>             &kernel,
               Stencil<dim>                  &stencil,
-              NodalFields<dim>              &fields,
+              NodalFieldSet<dim>            &field_set,
               const BoundaryConditions<dim> &boundary_conditions,
               const std::vector<std::unique_ptr<Material<dim>>> &materials,
               std::vector<std::unique_ptr<Effect<dim>>>         &effects,
@@ -49,7 +49,8 @@ namespace dealmpm
       , particles(particles)
       , kernel(kernel)
       , stencil(stencil)
-      , fields(fields)
+      , field_set(field_set)
+      , fields(field_set.core)
       , boundary_conditions(boundary_conditions)
       , materials(materials)
       , effects(effects)
@@ -63,12 +64,13 @@ namespace dealmpm
       , stress_update(materials, particles, dt)
     {}
 
-    const BackgroundGrid<dim>                         &grid;
-    ParticleSet<dim>                                  &particles;
-    const Kernel<dim>                                 &kernel;
-    Stencil<dim>                                      &stencil;
-    NodalFields<dim>                                  &fields;
-    const BoundaryConditions<dim>                     &boundary_conditions;
+    const BackgroundGrid<dim>     &grid;
+    ParticleSet<dim>              &particles;
+    const Kernel<dim>             &kernel;
+    Stencil<dim>                  &stencil;
+    NodalFieldSet<dim>            &field_set;
+    NodalFields<dim>              &fields; ///< the core ones
+    const BoundaryConditions<dim> &boundary_conditions;
     const std::vector<std::unique_ptr<Material<dim>>> &materials;
     std::vector<std::unique_ptr<Effect<dim>>>         &effects;
     const std::vector<std::string>                    &effect_names;
@@ -91,7 +93,7 @@ namespace dealmpm
     EffectContext<dim>
     effect_context() const
     {
-      return {grid, particles, stencil, time, dt};
+      return {grid, particles, stencil, time, dt, field_set};
     }
   };
 } // namespace dealmpm

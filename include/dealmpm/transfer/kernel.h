@@ -1,64 +1,108 @@
 #pragma once
 
-#include <dealmpm/transfer/quadratic_bspline.h>
+#include <dealmpm/base/registry.h>
+#include <dealmpm/grid/background_grid.h>
+#include <dealmpm/particles/particle_set.h>
 #include <dealmpm/transfer/stencil.h>
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace dealmpm
 {
-  /** The particle-node weight functions a scene can choose. */
-  enum class ShapeFunction
+  /**
+   * A particle-node weight function ('MPM/Shape function'): it prepares
+   * the per-mesh data only it needs and computes every particle's stencil
+   * (nodes, weights, gradients). The built-in ones (linear, uGIMP, cpGIMP,
+   * CPDI, quadratic B-spline) are registered in shape_function_registry();
+   * a user registers another from C++ before the scene is read.
+   */
+  template <int dim>
+  class ShapeFunction
   {
-    linear,
-    uGIMP,
-    cpGIMP,
-    CPDI,
-    quadratic_bspline
+  public:
+    virtual ~ShapeFunction() = default;
+
+    /** Prepare for @p grid; returns what the grid lacks for this shape
+     * function (empty when it suits), as "<what to use instead>: <why>".
+     * Collective; called again after the grid changes. */
+    virtual std::string
+    setup(BackgroundGrid<dim> &grid) = 0;
+
+    virtual void
+    compute_stencil(const BackgroundGrid<dim> &grid,
+                    const ParticleSet<dim>    &particles,
+                    Stencil<dim>              &stencil) const = 0;
+
+    /** Per-particle fields it stores (GIMP and CPDI: the particle domain's
+     * initial half-lengths, "domain_half_length"). */
+    virtual std::vector<FieldDescription>
+    particle_fields() const
+    {
+      return {};
+    }
   };
 
-  /** "linear|uGIMP|cpGIMP|CPDI|quadratic B-spline" */
+  template <int dim>
+  using ShapeFunctionRegistry =
+    Registry<ShapeFunction<dim>, std::unique_ptr<ShapeFunction<dim>>()>;
+
+  /** The shape functions a scene can name, built-in ones first. */
+  template <int dim>
+  ShapeFunctionRegistry<dim> &
+  shape_function_registry();
+
+  /** "a|b|c": the names registered in 2D or 3D, for the parameter's
+   * pattern. */
   std::string
   shape_function_pattern();
 
-  ShapeFunction
-  parse_shape_function(const std::string &name);
-
+  /** What each registered shape function does, for the documentation. */
   std::string
-  to_string(ShapeFunction kind);
+  shape_function_documentation();
 
-  /** GIMP and CPDI store each particle's initial domain half-lengths. */
-  bool
-  has_particle_domain(ShapeFunction kind);
-
-  /**
-   * The chosen shape function with the per-mesh data only it needs (cell
-   * neighbours for GIMP and CPDI, the node blocks of the B-spline): no
-   * kernel pays for another's.
-   */
+  /** The scene's shape function, set up for the grid. */
   template <int dim>
   class Kernel
   {
   public:
-    /** Prepare for @p grid; returns what the grid lacks for this kernel
-     * (empty when it suits). Collective; call again after mesh changes. */
+    /** Choose the shape function registered as @p name and prepare it for
+     * @p grid; returns what the grid lacks for it (empty when it suits).
+     * Collective. */
     std::string
-    setup(const ShapeFunction kind, BackgroundGrid<dim> &grid);
+    setup(const std::string &name, BackgroundGrid<dim> &grid);
+
+    /** Prepare again after the grid changed (collective). */
+    std::string
+    rebuild(BackgroundGrid<dim> &grid)
+    {
+      return shape_function->setup(grid);
+    }
 
     void
     compute_stencil(const BackgroundGrid<dim> &grid,
                     const ParticleSet<dim>    &particles,
-                    Stencil<dim>              &stencil) const;
-
-    ShapeFunction
-    kind() const
+                    Stencil<dim>              &stencil) const
     {
-      return shape_function;
+      stencil.failed = false;
+      shape_function->compute_stencil(grid, particles, stencil);
+    }
+
+    const std::string &
+    name() const
+    {
+      return chosen;
+    }
+
+    std::vector<FieldDescription>
+    particle_fields() const
+    {
+      return shape_function->particle_fields();
     }
 
   private:
-    ShapeFunction shape_function = ShapeFunction::linear;
-    std::unique_ptr<QuadraticBSplineGrid<dim>> spline;
+    std::string                         chosen;
+    std::unique_ptr<ShapeFunction<dim>> shape_function;
   };
 } // namespace dealmpm

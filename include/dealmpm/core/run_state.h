@@ -1,0 +1,46 @@
+#pragma once
+
+#include <dealmpm/diagnostics/accuracy_report.h>
+#include <dealmpm/io/output_record.h>
+
+#include <iosfwd>
+#include <vector>
+
+namespace dealmpm
+{
+  /**
+   * Everything a run has learnt besides its particles and grid: where it is
+   * (time, step), what it has written (the output record), when it writes
+   * next, its speed counters, the particles it lost, the accuracy monitor,
+   * and each effect's accumulators (in the order the scene lists them,
+   * filled when the state is saved). Written and read whole, so that a
+   * later `resume` can rebuild the loop from a saved run instead of from
+   * the scene's start.
+   */
+  struct RunState
+  {
+    double          time           = 0;
+    unsigned int    step           = 0;
+    double          next_output    = 0;
+    double          particle_steps = 0; ///< summed over the steps
+    double          stepping_time  = 0; ///< wall seconds of steps + checks
+    double          lost_particles = 0; ///< all ranks
+    OutputRecord    output;
+    AccuracyMonitor accuracy;
+    std::vector<std::vector<double>> effect_states;
+
+    template <class Archive>
+    void
+    serialize(Archive &archive, const unsigned int /*version*/)
+    {
+      archive &time &step &next_output &particle_steps &stepping_time;
+      archive &lost_particles &output &accuracy        &effect_states;
+    }
+
+    /** As text with every double to the last bit. */
+    void
+    save(std::ostream &out) const;
+    void
+    load(std::istream &in);
+  };
+} // namespace dealmpm

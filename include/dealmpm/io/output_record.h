@@ -1,0 +1,28 @@
+#pragma once
+
+#include <dealmpm/io/pvd_series.h>
+
+namespace dealmpm
+{
+  /**
+   * What a run has written so far: the number of outputs (the next file's
+   * counter), the last output's time and step, and the .pvd series. Part of
+   * the run's state (core/run_state.h), so that a resumed run continues the
+   * numbering and the series.
+   */
+  struct OutputRecord
+  {
+    unsigned int counter   = 0;
+    double       last_time = 0;
+    unsigned int last_step = 0;
+    PvdSeries    particle_series;
+    PvdSeries    grid_series;
+
+    template <class Archive>
+    void
+    serialize(Archive &archive, const unsigned int /*version*/)
+    {
+      archive &counter &last_time &last_step &particle_series &grid_series;
+    }
+  };
+} // namespace dealmpm
