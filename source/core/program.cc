@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <dlfcn.h>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -83,6 +84,33 @@ namespace dealmpm
 
   namespace
   {
+    /** Where the library was loaded from (dladdr on an object of its own). */
+    const char library_anchor = 0;
+
+    /**
+     * The study's plot script: an installed library finds the installed copy
+     * at DEALMPM_PLOT_SCRIPT_FROM_LIBRARY, relative to its own folder
+     * (lib/ -> share/dealmpm/, wherever the prefix was moved); a library in
+     * its build tree uses the source tree's DEALMPM_PLOT_SCRIPT. Empty when
+     * there is neither (no plots).
+     */
+    std::string
+    plot_script()
+    {
+      Dl_info info;
+      if (dladdr(&library_anchor, &info) != 0 && info.dli_fname != nullptr)
+        {
+          const std::filesystem::path installed =
+            std::filesystem::path(info.dli_fname).parent_path() /
+            DEALMPM_PLOT_SCRIPT_FROM_LIBRARY;
+          std::error_code error;
+          if (std::filesystem::is_regular_file(installed, error))
+            return std::filesystem::canonical(installed, error).string();
+        }
+      const std::string source_tree = DEALMPM_PLOT_SCRIPT;
+      return std::filesystem::exists(source_tree) ? source_tree : "";
+    }
+
     int
     run_study_command(int argc, char **argv)
     {
@@ -109,11 +137,10 @@ namespace dealmpm
           std::cerr << "dealmpm: --study needs a study file\n\n" << usage;
           return 1;
         }
-      const std::string script = DEALMPM_PLOT_SCRIPT;
       return run_study(file,
                        jobs,
                        std::filesystem::read_symlink("/proc/self/exe"),
-                       std::filesystem::exists(script) ? script : "");
+                       plot_script());
     }
   } // namespace
 
