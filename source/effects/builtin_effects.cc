@@ -111,12 +111,13 @@ namespace dealmpm
     return title;
   }
 
-  template <int dim>
-  Registry<Effect<dim>> &
-  effect_registry()
+  namespace
   {
-    static Registry<Effect<dim>> registry = [] {
-      Registry<Effect<dim>> r;
+    /** Gravity and local damping: the effects of ordinary scenes. */
+    template <int dim>
+    void
+    add_forces_and_damping(Registry<Effect<dim>> &r)
+    {
       r.add(
         "gravity",
         "uniform body force (section Gravity: Acceleration).",
@@ -146,6 +147,13 @@ namespace dealmpm
             reader.fail("Coefficient", "a number in [0, 1)");
           return std::make_unique<LocalDamping<dim>>(alpha);
         });
+    }
+
+    /** The verification problems: effects with an exact solution. */
+    template <int dim>
+    void
+    add_known_motions(Registry<Effect<dim>> &r)
+    {
       r.add(
         "manufactured solution",
         "the axis-aligned manufactured solution of Wallstedt and Guilkey "
@@ -196,6 +204,17 @@ namespace dealmpm
             reader.get_positive("Amplitude"),
             reader.get_positive("Wave speed"));
         });
+    }
+  } // namespace
+
+  template <int dim>
+  Registry<Effect<dim>> &
+  effect_registry()
+  {
+    static Registry<Effect<dim>> registry = [] {
+      Registry<Effect<dim>> r;
+      add_forces_and_damping(r);
+      add_known_motions(r);
       return r;
     }();
     return registry;

@@ -201,6 +201,113 @@ namespace dealmpm
   }
 
   template <int dim>
+  GridCell<dim>
+  BackgroundGrid<dim>::make_cell(
+    const typename DoFHandler<dim>::active_cell_iterator &dof_cell,
+    bool                                                 &box)
+  {
+    constexpr unsigned int n_vertices = GridCell<dim>::n_vertices;
+    GridCell<dim>          c;
+    c.cell = dof_cell;
+    for (unsigned int v = 0; v < n_vertices; ++v)
+      c.vertices[v] = dof_cell->vertex(v);
+    c.h       = dof_cell->minimum_vertex_distance();
+    c.measure = dof_cell->measure();
+
+    // Affine when x(xi) is linear: each vertex = v0 + sum of the edge
+    // vectors along its set bits.
+    Tensor<2, dim> J;
+    for (unsigned int d = 0; d < dim; ++d)
+      for (unsigned int e = 0; e < dim; ++e)
+        J[e][d] = c.vertices[1u << d][e] - c.vertices[0][e];
+    bool affine = true;
+    box         = true;
+    for (unsigned int v = 0; v < n_vertices; ++v)
+      {
+        Point<dim> expected = c.vertices[0];
+        for (unsigned int d = 0; d < dim; ++d)
+          if ((v >> d) & 1u)
+            for (unsigned int e = 0; e < dim; ++e)
+              expected[e] += J[e][d];
+        if (expected.distance(c.vertices[v]) > 1e-12 * c.h)
+          affine = false;
+      }
+    for (unsigned int d = 0; d < dim; ++d)
+      for (unsigned int e = 0; e < dim; ++e)
+        if (d != e && std::abs(J[e][d]) > 1e-12 * c.h)
+          box = false;
+    c.affine           = affine;
+    c.inverse_jacobian = invert(J);
+    if (!affine)
+      {
+        Point<dim> centre;
+        for (unsigned int d = 0; d < dim; ++d)
+          centre[d] = 0.5;
+        c.affine           = false;
+        c.inverse_jacobian = c.inverse_jacobian_at(centre);
+      }
+
+    add_effective_nodes(dof_cell, c);
+    return c;
+  }
+
+  template <int dim>
+  void
+  BackgroundGrid<dim>::add_effective_nodes(
+    const typename DoFHandler<dim>::active_cell_iterator &dof_cell,
+    GridCell<dim>                                        &c)
+  {
+    constexpr unsigned int               n_vertices = GridCell<dim>::n_vertices;
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    // Effective nodes: vertex DoFs with constrained ones replaced by their
+    // masters, weighted.
+    dof_cell->get_dof_indices(dofs);
+    bool constrained = false;
+    for (const auto dof : dofs)
+      constrained = constrained || hanging_node_constraints.is_constrained(dof);
+    c.first_node = cell_nodes.size();
+    if (!constrained)
+      {
+        for (const auto dof : dofs)
+          cell_nodes.push_back(partitioner->global_to_local(dof));
+        c.n_nodes = n_vertices;
+      }
+    else
+      {
+        std::vector<types::global_dof_index>        nodes;
+        std::vector<std::array<double, n_vertices>> weights;
+        const auto add = [&](const types::global_dof_index node,
+                             const unsigned int            v,
+                             const double                  w) {
+          const auto        it = std::find(nodes.begin(), nodes.end(), node);
+          const std::size_t k  = it - nodes.begin();
+          if (it == nodes.end())
+            {
+              nodes.push_back(node);
+              weights.emplace_back();
+              weights.back().fill(0.);
+            }
+          weights[k][v] += w;
+        };
+        for (unsigned int v = 0; v < n_vertices; ++v)
+          if (hanging_node_constraints.is_constrained(dofs[v]))
+            for (const auto &entry :
+                 *hanging_node_constraints.get_constraint_entries(dofs[v]))
+              add(entry.first, v, entry.second);
+          else
+            add(dofs[v], v, 1.);
+        c.n_nodes      = nodes.size();
+        c.first_weight = cell_node_weights.size();
+        for (unsigned int k = 0; k < nodes.size(); ++k)
+          {
+            cell_nodes.push_back(partitioner->global_to_local(nodes[k]));
+            for (unsigned int v = 0; v < n_vertices; ++v)
+              cell_node_weights.push_back(weights[k][v]);
+          }
+      }
+  }
+
+  template <int dim>
   void
   BackgroundGrid<dim>::setup()
   {
@@ -235,123 +342,40 @@ namespace dealmpm
     ghost_cells.clear();
     cell_nodes.clear();
     cell_node_weights.clear();
-    constexpr unsigned int               n_vertices = GridCell<dim>::n_vertices;
-    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    bool                                 all_boxes = true;
-    Point<dim>                           lower, upper;
-    bool                                 first = true;
+    bool       all_boxes = true;
+    Point<dim> lower, upper;
+    bool       first = true;
     for (const auto &dof_cell : dof_handler.active_cell_iterators())
       {
         if (!dof_cell->is_locally_owned() && !dof_cell->is_ghost())
           continue;
-        GridCell<dim> c;
-        c.cell = dof_cell;
-        for (unsigned int v = 0; v < n_vertices; ++v)
-          c.vertices[v] = dof_cell->vertex(v);
-        c.h       = dof_cell->minimum_vertex_distance();
-        c.measure = dof_cell->measure();
-
-        // Affine when x(xi) is linear: each vertex = v0 + sum of the edge
-        // vectors along its set bits.
-        Tensor<2, dim> J;
-        for (unsigned int d = 0; d < dim; ++d)
-          for (unsigned int e = 0; e < dim; ++e)
-            J[e][d] = c.vertices[1u << d][e] - c.vertices[0][e];
-        bool affine = true, box = true;
-        for (unsigned int v = 0; v < n_vertices; ++v)
-          {
-            Point<dim> expected = c.vertices[0];
-            for (unsigned int d = 0; d < dim; ++d)
-              if ((v >> d) & 1u)
-                for (unsigned int e = 0; e < dim; ++e)
-                  expected[e] += J[e][d];
-            if (expected.distance(c.vertices[v]) > 1e-12 * c.h)
-              affine = false;
-          }
-        for (unsigned int d = 0; d < dim; ++d)
-          for (unsigned int e = 0; e < dim; ++e)
-            if (d != e && std::abs(J[e][d]) > 1e-12 * c.h)
-              box = false;
-        all_boxes          = all_boxes && affine && box;
-        c.affine           = affine;
-        c.inverse_jacobian = invert(J);
-        if (!affine)
-          {
-            Point<dim> centre;
-            for (unsigned int d = 0; d < dim; ++d)
-              centre[d] = 0.5;
-            c.affine           = false;
-            c.inverse_jacobian = c.inverse_jacobian_at(centre);
-          }
-
-        // Effective nodes: vertex DoFs with constrained ones replaced by their
-        // masters, weighted.
-        dof_cell->get_dof_indices(dofs);
-        bool constrained = false;
-        for (const auto dof : dofs)
-          constrained =
-            constrained || hanging_node_constraints.is_constrained(dof);
-        c.first_node = cell_nodes.size();
-        if (!constrained)
-          {
-            for (const auto dof : dofs)
-              cell_nodes.push_back(partitioner->global_to_local(dof));
-            c.n_nodes = n_vertices;
-          }
-        else
-          {
-            std::vector<types::global_dof_index>        nodes;
-            std::vector<std::array<double, n_vertices>> weights;
-            const auto add = [&](const types::global_dof_index node,
-                                 const unsigned int            v,
-                                 const double                  w) {
-              const auto it       = std::find(nodes.begin(), nodes.end(), node);
-              const std::size_t k = it - nodes.begin();
-              if (it == nodes.end())
-                {
-                  nodes.push_back(node);
-                  weights.emplace_back();
-                  weights.back().fill(0.);
-                }
-              weights[k][v] += w;
-            };
-            for (unsigned int v = 0; v < n_vertices; ++v)
-              if (hanging_node_constraints.is_constrained(dofs[v]))
-                for (const auto &entry :
-                     *hanging_node_constraints.get_constraint_entries(dofs[v]))
-                  add(entry.first, v, entry.second);
-              else
-                add(dofs[v], v, 1.);
-            c.n_nodes      = nodes.size();
-            c.first_weight = cell_node_weights.size();
-            for (unsigned int k = 0; k < nodes.size(); ++k)
-              {
-                cell_nodes.push_back(partitioner->global_to_local(nodes[k]));
-                for (unsigned int v = 0; v < n_vertices; ++v)
-                  cell_node_weights.push_back(weights[k][v]);
-              }
-          }
-
-        for (unsigned int v = 0; v < n_vertices; ++v)
+        bool                box = true;
+        const GridCell<dim> c   = make_cell(dof_cell, box);
+        all_boxes               = all_boxes && c.affine && box;
+        for (const Point<dim> &x : c.vertices)
           {
             for (unsigned int d = 0; d < dim; ++d)
               {
-                lower[d] = first ? c.vertices[v][d] :
-                                   std::min(lower[d], c.vertices[v][d]);
-                upper[d] = first ? c.vertices[v][d] :
-                                   std::max(upper[d], c.vertices[v][d]);
+                lower[d] = first ? x[d] : std::min(lower[d], x[d]);
+                upper[d] = first ? x[d] : std::max(upper[d], x[d]);
               }
             first = false;
           }
         (dof_cell->is_locally_owned() ? cells : ghost_cells).push_back(c);
       }
     neighbors.clear();
-
+    // The mapping is made once: the particle handler keeps a reference to
+    // it. Refining boxes gives boxes, so it stays right when the grid
+    // changes.
+    const bool was_cartesian = cartesian;
     cartesian = Utilities::MPI::min(all_boxes ? 1 : 0, comm) == 1;
-    if (cartesian)
-      mapping = std::make_unique<MappingCartesian<dim>>();
+    if (!mapping)
+      mapping = cartesian ? std::unique_ptr<Mapping<dim>>(
+                              std::make_unique<MappingCartesian<dim>>()) :
+                            std::make_unique<MappingQ1<dim>>();
     else
-      mapping = std::make_unique<MappingQ1<dim>>();
+      AssertThrow(cartesian || !was_cartesian,
+                  ExcMessage("a grid of boxes changed into one that is not"));
 
     for (unsigned int d = 0; d < dim; ++d)
       {

@@ -92,6 +92,18 @@ namespace dealmpm
     void
     advance(const double dt);
 
+    /**
+     * Change the grid between steps: @p set_flags marks cells of the
+     * triangulation for refinement or coarsening. The particles move to the
+     * new cells (none lost, none duplicated) and every part that keeps grid
+     * data rebuilds, in this order: the grid (nodes, hanging-node
+     * constraints, cell data; the mapping is kept), the shape function's
+     * tables, the boundary conditions' nodes, the nodal fields; the stable
+     * step is found again. Collective.
+     */
+    void
+    change_grid(const std::function<void(Triangulation<dim> &)> &set_flags);
+
     /** The CFL time step of the current state (or the fixed one). */
     double
     time_step() const;

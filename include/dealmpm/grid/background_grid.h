@@ -94,7 +94,9 @@ namespace dealmpm
       const std::function<void(const GridSize<dim> &)> &before_allocating =
         [](const GridSize<dim> &) {});
 
-    /** (Re)build DoFs, constraints and the cell data after mesh changes. */
+    /** (Re)build DoFs, constraints, the node layout and the cell data, and
+     * forget the neighbour tables (the shape function asks for them again),
+     * after the mesh changed. The mapping is kept. */
     void
     setup();
 
@@ -105,7 +107,8 @@ namespace dealmpm
     AffineConstraints<double>                          hanging_node_constraints;
     std::shared_ptr<const Utilities::MPI::Partitioner> partitioner;
     /** MappingCartesian when every cell is an axis-aligned box (the particle
-     * sort is about 2.5x cheaper), MappingQ1 otherwise. */
+     * sort is about 2.5x cheaper), MappingQ1 otherwise; made by the first
+     * setup() and kept (the particle handler holds it). */
     std::unique_ptr<Mapping<dim>> mapping;
     bool                          cartesian = true;
     BoundingBox<dim>              bounding_box;
@@ -139,6 +142,16 @@ namespace dealmpm
   private:
     void
     refine_box(SceneReader &reader);
+    /** The cell data of one owned or ghost cell; @p box: whether it is an
+     * axis-aligned box. */
+    GridCell<dim>
+    make_cell(const typename DoFHandler<dim>::active_cell_iterator &dof_cell,
+              bool                                                 &box);
+    /** Its effective nodes (hanging ones replaced by their masters). */
+    void
+    add_effective_nodes(
+      const typename DoFHandler<dim>::active_cell_iterator &dof_cell,
+      GridCell<dim>                                        &c);
     /** How many cells Global refinements and Local refinement make of
      * @p n_coarse cells filling @p box; refuses more than 2e8. */
     GridSize<dim>

@@ -1,0 +1,276 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+
+#include <dealmpm/base/errors.h>
+#include <dealmpm/core/simulation.h>
+#include <dealmpm/core/stop_signal.h>
+#include <dealmpm/diagnostics/run_guards.h>
+#include <dealmpm/diagnostics/run_messages.h>
+#include <dealmpm/grid/grid_update.h>
+#include <dealmpm/transfer/particle_to_grid.h>
+
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+// The run loop of Simulation: outputs, checks between steps, progress and
+// the closing report. Construction and the step are in simulation.cc.
+namespace dealmpm
+{
+  template <int dim>
+  std::string
+  Simulation<dim>::when(const unsigned int step, const double time) const
+  {
+    std::ostringstream text;
+    text << std::setprecision(3) << "step " << step << " (t = " << time << ")";
+    return text.str();
+  }
+
+  template <int dim>
+  void
+  Simulation<dim>::guard_fixed_time_step(const double dt)
+  {
+    const std::string warning = check_fixed_time_step(
+      dt, max_signal_rate, run_settings.checks.cfl_warning, cfl_warned, [&] {
+        return when(loop.step + 1, loop.time) + ": " +
+               fastest_particle(particle_check,
+                                max_signal_rate,
+                                *particles,
+                                comm);
+      });
+    if (warning.empty())
+      return;
+    pcout << "warning: " << warning << std::endl;
+    cfl_warned = true;
+  }
+
+  template <int dim>
+  RunError
+  Simulation<dim>::energy_growth_stop() const
+  {
+    std::vector<Tensor<1, dim>> initial_velocity;
+    for (const auto &body : bodies)
+      initial_velocity.push_back(body.velocity);
+    return energy_growth_error(*particles,
+                               materials,
+                               effects,
+                               initial_velocity,
+                               loop.accuracy.report().energy_drift,
+                               run_settings.checks.energy_growth_limit,
+                               when(loop.step, loop.time),
+                               comm);
+  }
+
+  template <int dim>
+  RunError
+  Simulation<dim>::with_last_output(const RunError &error) const
+  {
+    return RunError(std::string(error.what()) + ". The last good output (t = " +
+                    short_number(loop.output.last_time) + ") is in " +
+                    run_settings.output.directory + "/");
+  }
+
+  template <int dim>
+  void
+  Simulation<dim>::write_output(const double      dt,
+                                const Statistics &now,
+                                const double      work,
+                                const Progress   &progress)
+  {
+    TimerOutput::Scope t(*computing_timer, "output");
+    output_writer.write({*particles, materials, grid, nodal.core},
+                        loop.time,
+                        loop.step,
+                        loop.output,
+                        [&](StatisticsFile &file) {
+                          file.write_row(loop.step,
+                                         loop.time,
+                                         dt,
+                                         now,
+                                         work,
+                                         loop.accuracy.report(),
+                                         loop.lost_particles,
+                                         progress.elapsed_seconds());
+                        });
+  }
+
+  template <int dim>
+  void
+  Simulation<dim>::map_particles_for_grid_output()
+  {
+    kernel.compute_stencil(grid, *particles, stencil);
+    if (run_settings.method.apic)
+      record_positions(grid, *particles, stencil);
+    if (!Utilities::MPI::logical_or(stencil.failed, comm))
+      {
+        particle_to_grid(grid, *particles, stencil, nodal.core, true, false);
+        velocity_from_momentum(nodal.core, mass_threshold, boundary_conditions);
+      }
+  }
+
+  template <int dim>
+  bool
+  Simulation<dim>::finished() const
+  {
+    const TimeStepping &t = run_settings.time;
+    return !(loop.time < t.end_time - 1e-9 * t.end_time) ||
+           (t.max_steps != 0 && loop.step >= t.max_steps);
+  }
+
+  template <int dim>
+  void
+  Simulation<dim>::take_step(const double dt, Progress &progress)
+  {
+    const RunSettings &s           = run_settings;
+    const double       n_particles = particles->handler.n_global_particles();
+    // Stepping time: the step and its checks, not the output.
+    const auto start = std::chrono::steady_clock::now();
+    try
+      {
+        if (!s.time.cfl_time_step)
+          guard_fixed_time_step(dt);
+        advance(dt);
+      }
+    catch (const RunError &error)
+      {
+        throw with_last_output(error);
+      }
+    loop.particle_steps += n_particles;
+
+    const bool output_due =
+      finished() || (s.output.interval > 0 &&
+                     loop.time >= loop.next_output - 1e-9 * s.time.end_time);
+    const bool energy_check_due =
+      s.checks.energy_growth_limit > 0 &&
+      (output_due || loop.step % energy_check_interval == 0);
+    Statistics now;
+    double     work = 0;
+    if (output_due || energy_check_due)
+      {
+        now  = statistics();
+        work = external_work();
+        loop.accuracy.observe(now, work);
+        if (energy_check_due &&
+            loop.accuracy.report().energy_drift > s.checks.energy_growth_limit)
+          throw with_last_output(energy_growth_stop());
+      }
+    loop.stepping_time +=
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+        .count();
+    if (output_due)
+      {
+        // The next multiple of the interval (no loop: a tiny interval
+        // cannot make it spin).
+        if (s.output.interval > 0)
+          loop.next_output =
+            (std::floor(loop.time / s.output.interval + 1e-9) + 1) *
+            s.output.interval;
+        write_output(dt, now, work, progress);
+      }
+    progress.update(loop.step, loop.time, dt, s.time.end_time, n_particles);
+  }
+
+  template <int dim>
+  void
+  Simulation<dim>::run()
+  {
+    const RunSettings       &s = run_settings;
+    const StopSignalHandlers signal_handlers;
+    const Statistics         initial = statistics();
+    const unsigned int       n_removed =
+      output_writer.open(scene_file, initial.has_error);
+    Progress progress(std::cout,
+                      s.output.progress_interval,
+                      Utilities::MPI::this_mpi_process(comm) == 0 &&
+                        s.output.verbose);
+    if (s.output.verbose)
+      print_start(initial, n_removed);
+    // The grid output at t = 0 shows the particles' mass and velocity p / m
+    // on the nodes, as every later one does, instead of zeros.
+    if (s.output.write_grid)
+      map_particles_for_grid_output();
+    loop.accuracy.start(initial);
+    write_output(0., initial, 0., progress);
+
+    loop.next_output = s.output.interval;
+    double dt        = 0;
+    while (!finished())
+      {
+        // mpirun passes the signal to every rank, but not at the same
+        // moment: the ranks stop at the same step only if they agree.
+        stopped_by_signal = Utilities::MPI::max(stop_signal(), comm);
+        if (stopped_by_signal != 0)
+          break;
+        if (particles->handler.n_global_particles() == 0)
+          throw RunError(when(loop.step, loop.time) +
+                         ": no particles are left in the grid");
+        dt = std::min(time_step(), s.time.end_time - loop.time);
+        take_step(dt, progress);
+      }
+    if (stopped_by_signal != 0 && loop.output.last_step != loop.step)
+      {
+        const Statistics now  = statistics();
+        const double     work = external_work();
+        loop.accuracy.observe(now, work);
+        write_output(dt, now, work, progress);
+      }
+    if (s.output.verbose)
+      print_summary();
+    if (stopped_by_signal != 0)
+      pcout << "dealmpm: stopped by " << signal_name(stopped_by_signal)
+            << " at step " << loop.step << " (t = " << loop.time
+            << "); output in " << s.output.directory << "/ is complete"
+            << std::endl;
+  }
+
+  template <int dim>
+  void
+  Simulation<dim>::print_start(const Statistics  &initial,
+                               const unsigned int n_removed) const
+  {
+    const double local_particles =
+      particles->handler.n_locally_owned_particles();
+    const double fewest = Utilities::MPI::min(local_particles, comm);
+    const double most   = Utilities::MPI::max(local_particles, comm);
+    pcout << "dealmpm: " << dim << "D, "
+          << grid.triangulation.n_global_active_cells() << " cells, "
+          << grid.dof_handler.n_dofs() << " nodes, "
+          << static_cast<unsigned long>(initial.n_particles) << " particles, "
+          << Utilities::MPI::n_mpi_processes(comm) << " rank(s) (" << fewest
+          << " to " << most << " particles per rank), about "
+          << short_number(memory.bytes / 1e9) << " GB estimated; output in "
+          << run_settings.output.directory << "/";
+    if (n_removed > 0)
+      pcout << " (removed " << n_removed << " files of an earlier run)";
+    pcout << std::endl;
+  }
+
+  template <int dim>
+  void
+  Simulation<dim>::print_summary() const
+  {
+    computing_timer->print_summary();
+    pcout << "dealmpm: " << loop.accuracy.report() << std::endl;
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+    const double       rate =
+      loop.stepping_time > 0 ? loop.particle_steps / loop.stepping_time : 0;
+    pcout << "dealmpm: " << loop.step << " steps to t = " << loop.time << ", "
+          << std::setprecision(4) << rate / 1e6 << " M particle-steps/s on "
+          << n_ranks << " rank(s) (" << rate / 1e6 / n_ranks << " M per core)";
+    Utilities::System::MemoryStats used;
+    Utilities::System::get_memory_stats(used);
+    pcout << ", peak memory " << used.VmHWM / 1024 << " MB on rank 0";
+    if (loop.lost_particles > 0)
+      pcout << ", " << loop.lost_particles << " particle(s) left the grid";
+    pcout << std::endl;
+  }
+
+#define DEALMPM_INSTANTIATE(dim)                                               \
+  template void        Simulation<dim>::run();                                 \
+  template std::string Simulation<dim>::when(const unsigned int, const double) \
+    const;
+  DEALMPM_INSTANTIATE(2)
+  DEALMPM_INSTANTIATE(3)
+#undef DEALMPM_INSTANTIATE
+} // namespace dealmpm
