@@ -11,7 +11,9 @@ case "$mode" in run|test) ;; *) echo "usage: ./build.sh [run|test]" >&2; exit 1 
 packages="cmake g++ make libdeal.ii-dev libeigen3-dev libgtest-dev openmpi-bin libopenmpi-dev ccache python3 python3-matplotlib clang-format"
 missing=""
 for p in $packages; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
+  # No "| grep -q": under pipefail its early exit can fail the pipeline.
+  [[ $(dpkg-query -W -f='${Status}' "$p" 2>/dev/null) == *"install ok installed" ]] \
+    || missing="$missing $p"
 done
 if [ -n "$missing" ]; then
   echo "build.sh: installing$missing"

@@ -311,7 +311,7 @@ namespace dealmpm
     grid.setup();
     const std::string problem = kernel.rebuild(grid);
     if (!problem.empty())
-      throw RunError(when(loop.step, loop.time) +
+      throw RunError(step_and_time(loop.step, loop.time) +
                      ": after the grid changed, 'MPM/Shape function' = '" +
                      kernel.name() + "' needs " + problem);
     boundary_conditions.rebuild(grid);

@@ -19,21 +19,12 @@
 namespace dealmpm
 {
   template <int dim>
-  std::string
-  Simulation<dim>::when(const unsigned int step, const double time) const
-  {
-    std::ostringstream text;
-    text << std::setprecision(3) << "step " << step << " (t = " << time << ")";
-    return text.str();
-  }
-
-  template <int dim>
   void
   Simulation<dim>::guard_fixed_time_step(const double dt)
   {
     const std::string warning = check_fixed_time_step(
       dt, max_signal_rate, run_settings.checks.cfl_warning, cfl_warned, [&] {
-        return when(loop.step + 1, loop.time) + ": " +
+        return step_and_time(loop.step + 1, loop.time) + ": " +
                fastest_particle(particle_check,
                                 max_signal_rate,
                                 *particles,
@@ -58,7 +49,7 @@ namespace dealmpm
                                initial_velocity,
                                loop.accuracy.report().energy_drift,
                                run_settings.checks.energy_growth_limit,
-                               when(loop.step, loop.time),
+                               step_and_time(loop.step, loop.time),
                                comm);
   }
 
@@ -203,7 +194,7 @@ namespace dealmpm
         if (stopped_by_signal != 0)
           break;
         if (particles->handler.n_global_particles() == 0)
-          throw RunError(when(loop.step, loop.time) +
+          throw RunError(step_and_time(loop.step, loop.time) +
                          ": no particles are left in the grid");
         dt = std::min(time_step(), s.time.end_time - loop.time);
         take_step(dt, progress);
@@ -266,11 +257,9 @@ namespace dealmpm
     pcout << std::endl;
   }
 
-#define DEALMPM_INSTANTIATE(dim)                                               \
-  template void        Simulation<dim>::run();                                 \
-  template std::string Simulation<dim>::when(const unsigned int, const double) \
-    const;
-  DEALMPM_INSTANTIATE(2)
-  DEALMPM_INSTANTIATE(3)
-#undef DEALMPM_INSTANTIATE
+  // run() instantiates the loop's other members it calls.
+  template void
+  Simulation<2>::run();
+  template void
+  Simulation<3>::run();
 } // namespace dealmpm

@@ -21,6 +21,14 @@ namespace dealmpm
   }
 
   std::string
+  step_and_time(const unsigned int step, const double time)
+  {
+    std::ostringstream text;
+    text << std::setprecision(3) << "step " << step << " (t = " << time << ")";
+    return text.str();
+  }
+
+  std::string
   short_number(const double x)
   {
     std::ostringstream s;

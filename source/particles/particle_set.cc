@@ -4,6 +4,7 @@
 #include <dealmpm/particles/particle_set.h>
 
 #include <map>
+#include <stdexcept>
 
 namespace dealmpm
 {
@@ -67,9 +68,15 @@ namespace dealmpm
         block_of_model[model_names[m]] = first;
         internal_offset.push_back(first);
       }
+    // An effect's field under a name already taken would silently share
+    // (or overwrite) another part's storage.
     for (const FieldDescription &f : effect_fields)
-      if (!layout.has(f.name))
+      {
+        if (layout.has(f.name))
+          throw std::logic_error("the particle field '" + f.name +
+                                 "' of an effect is already in the layout");
         layout.add(f.name, f.n_components);
+      }
     handler.initialize(tria, mapping, layout.size());
   }
 

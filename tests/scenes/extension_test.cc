@@ -11,7 +11,7 @@ using namespace dealmpm;
 
 namespace
 {
-  /** Spreads each body's mass to its own nodal field, and counts particles
+  /** Spreads each body's mass to its own nodal field, and counts the steps
    * in a particle field of its own; adds no force. */
   class BodyMassEffect : public Effect<2>
   {
@@ -32,7 +32,6 @@ namespace
     add_nodal_forces(const EffectContext<2> &state, NodalFields<2> &) override
     {
       const ParticleSet<2> &particles = state.particles;
-      const unsigned int    visits    = particles.layout.offset("visits");
       const unsigned int    n_bodies  = 2;
       for (unsigned int b = 0; b < n_bodies; ++b)
         state.field_set.per_body("body mass", b, 0) = 0;
@@ -51,13 +50,20 @@ namespace
                  ++e)
               mass.local_element(state.stencil.node[e]) +=
                 state.stencil.N[e] * props[particles.fields.mass];
-            // The handler's property pool is shared: write through it.
-            const_cast<double &>(props[visits]) += 1;
             ++k;
           }
       for (unsigned int b = 0; b < n_bodies; ++b)
         state.field_set.per_body("body mass", b, 0)
           .compress(VectorOperation::add);
+    }
+
+    /** The particles are writable here: count this step on each. */
+    void
+    after_g2p(const EffectContext<2> &, ParticleSet<2> &particles) override
+    {
+      const unsigned int visits = particles.layout.offset("visits");
+      for (auto &p : particles.handler)
+        p.get_properties()[visits] += 1;
     }
   };
 
@@ -165,8 +171,8 @@ TEST(Extension, EffectDeclaresParticleAndPerBodyNodalFields)
   expect_same_statistics(plain->statistics(), with->statistics());
 
   // Each body's field holds its mass (the weights sum to one), and every
-  // particle was visited once per step.
-  auto &set = const_cast<NodalFieldSet<2> &>(with->nodal_field_set());
+  // particle was counted once per step.
+  const NodalFieldSet<2> &set = with->nodal_field_set();
   for (unsigned int b = 0; b < 2; ++b)
     {
       const double total = set.per_body("body mass", b, 0).l1_norm();

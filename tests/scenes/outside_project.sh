@@ -55,6 +55,16 @@ grep -q "dealmpm: CMAKE_BUILD_TYPE set to $build_type" configure.log \
 "$cmake" --build "$work/build" > build.log 2>&1 \
   || { fail "build examples: exit $?"; tail -30 build.log; }
 
+# Whether a binary loads the prefix's libdealmpm.so. Paths compared after
+# realpath: ldd prints $ORIGIN-relative paths from the physical location,
+# while $PWD may reach the same folder through a symlink.
+from_prefix() {
+  local loaded
+  loaded=$(ldd "$1" | sed -n 's/.*libdealmpm\.so => \(.*\) (0x.*/\1/p')
+  [ -n "$loaded" ] \
+    && [ "$(realpath "$loaded")" = "$(realpath "$(find "$prefix" -name libdealmpm.so | head -1)")" ]
+}
+
 # Exactly one deal.II library, of dealmpm's build type; dealmpm from the
 # prefix.
 example=$work/build/custom_material
@@ -63,7 +73,7 @@ expected=libdeal.ii.so
 [ "$build_type" = Debug ] && expected=libdeal.ii.g.so
 [ "$(echo "$deal_ii" | wc -l)" = 1 ] && [[ $deal_ii == $expected* ]] \
   || fail "ldd custom_material: deal.II libraries '$(echo $deal_ii)', expected only $expected"
-ldd "$example" | grep -q "libdealmpm.so => $prefix/" \
+from_prefix "$example" \
   || fail "ldd custom_material: libdealmpm.so not from the prefix: $(ldd "$example" | grep dealmpm)"
 
 # The example runs its scene.
@@ -87,7 +97,7 @@ line="dealmpm was built as $build_type: configure this project with -DCMAKE_BUIL
 # (replaced here by a stub that leaves a mark, so that matplotlib is not
 # needed) drawn by a one-run study.
 program=$prefix/bin/dealmpm
-ldd "$program" | grep -q "libdealmpm.so => $prefix/" \
+from_prefix "$program" \
   || fail "ldd dealmpm: libdealmpm.so not from the prefix: $(ldd "$program" | grep dealmpm)"
 "$program" --help > help.log 2>&1 || fail "installed dealmpm --help: exit $?"
 if [ -x /usr/bin/python3 ]; then

@@ -206,9 +206,6 @@ namespace dealmpm
     /** P2G of the initial state, so that the first grid output shows it. */
     void
     map_particles_for_grid_output();
-    /** "step N (t = T)" for messages. */
-    std::string
-    when(const unsigned int step, const double time) const;
     /** Stop on an unstable fixed step, warn once on a large one. */
     void
     guard_fixed_time_step(const double dt);

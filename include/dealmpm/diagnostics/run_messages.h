@@ -15,6 +15,10 @@ namespace dealmpm
   std::string
   format_point(const Point<dim> &x);
 
+  /** "step N (t = T)", T with 3 significant digits, for messages. */
+  std::string
+  step_and_time(const unsigned int step, const double time);
+
   /** x with 3 significant digits, for messages. */
   std::string
   short_number(const double x);

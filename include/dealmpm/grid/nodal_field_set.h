@@ -73,6 +73,14 @@ namespace dealmpm
       return f.vectors.at(b * f.n_components + c);
     }
 
+    const NodalVector &
+    per_body(const std::string &name,
+             const unsigned int b,
+             const unsigned     c) const
+    {
+      return const_cast<NodalFieldSet &>(*this).per_body(name, b, c);
+    }
+
     /** How many nodal vectors are allocated, the core ones included. */
     unsigned int
     n_vectors() const
