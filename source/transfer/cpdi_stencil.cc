@@ -1,4 +1,5 @@
 #include <dealmpm/transfer/stencil.h>
+#include <dealmpm/transfer/stencil_order.h>
 
 #include <algorithm>
 
@@ -106,7 +107,7 @@ namespace dealmpm
       const CoreFields &f                 = particles.fields;
       const std::size_t n_local = particles.handler.n_locally_owned_particles();
       stencil.begin.resize(n_local + 1);
-      std::size_t k = 0, e = 0;
+      std::size_t e = 0;
 
       NodeAccumulator<dim> gathered;
       // The corners' cells, each once, with the sum over its corners of
@@ -115,12 +116,14 @@ namespace dealmpm
       double               N[n_corners][n_corners];
       Tensor<1, dim>       G[n_corners][n_corners];
       double               N_corner[n_corners];
-      for (unsigned int i = 0; i < grid.cells.size(); ++i)
-        for (const auto &p :
-             particles.handler.particles_in_cell(grid.cells[i].cell))
-          {
-            const auto       props = p.get_properties();
-            const Point<dim> x     = p.get_location();
+      const std::size_t    n_visited = for_each_particle_in_stencil_order(
+        grid,
+        particles.handler,
+        [&](const std::size_t k, const auto &p, const GridCell<dim> &own)
+          DEAL_II_ALWAYS_INLINE {
+            const unsigned int i     = index_in_grid(grid, own);
+            const auto         props = p.get_properties();
+            const Point<dim>   x     = p.get_location();
             // R's columns are the domain's half-edge vectors r_d = F e_d l_d.
             const Tensor<2, dim> F =
               read_tensor<dim>(&props[f.deformation_gradient]);
@@ -148,9 +151,9 @@ namespace dealmpm
                     stencil.failed_location = x;
                     stencil.failure =
                       "its CPDI domain reaches past the cells next to its "
-                      "own (stretched to more than a cell, or far past the "
-                      "grid's boundary); use more particles per cell or "
-                      "cpGIMP";
+                         "own (stretched to more than a cell, or far past the "
+                         "grid's boundary); use more particles per cell or "
+                         "cpGIMP";
                   }
                 unsigned int j = 0;
                 while (j < n_cells && cells[j] != c)
@@ -177,10 +180,9 @@ namespace dealmpm
             for (unsigned int j = 0; j < n_cells; ++j)
               gathered.add_cell(grid, *cells[j], N[j], G[j]);
             gathered.append_to(stencil, k, e);
-            ++k;
-          }
-      stencil.begin[k] = e;
-      AssertThrow(k == n_local, ExcInternalError());
+          });
+      stencil.begin[n_visited] = e;
+      AssertThrow(n_visited == n_local, ExcInternalError());
     }
   } // namespace
 

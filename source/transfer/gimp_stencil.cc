@@ -1,4 +1,5 @@
 #include <dealmpm/transfer/stencil.h>
+#include <dealmpm/transfer/stencil_order.h>
 
 #include <algorithm>
 
@@ -35,15 +36,16 @@ namespace dealmpm
     const CoreFields      &f          = particles.fields;
     const std::size_t n_local = particles.handler.n_locally_owned_particles();
     stencil.begin.resize(n_local + 1);
-    std::size_t k = 0, e = 0;
+    std::size_t e = 0;
 
     NodeAccumulator<dim> gathered;
     double               S[n_vertices];
     Tensor<1, dim>       G[n_vertices];
-    for (unsigned int i = 0; i < grid.cells.size(); ++i)
-      for (const auto &p :
-           particles.handler.particles_in_cell(grid.cells[i].cell))
-        {
+    const std::size_t    n_visited = for_each_particle_in_stencil_order(
+      grid,
+      particles.handler,
+      [&](const std::size_t k, const auto &p, const GridCell<dim> &own)
+        DEAL_II_ALWAYS_INLINE {
           const auto       props = p.get_properties();
           const Point<dim> x     = p.get_location();
           Tensor<1, dim>   l;
@@ -56,7 +58,8 @@ namespace dealmpm
             }
           gathered.clear();
           double covered = 0;
-          for (const GridCell<dim> *c : grid.neighbors[i])
+          for (const GridCell<dim> *c :
+               grid.neighbors[index_in_grid(grid, own)])
             {
               const Point<dim> &x0 = c->vertices[0];
               const Point<dim> &x1 = c->vertices[n_vertices - 1];
@@ -99,10 +102,9 @@ namespace dealmpm
           // Normalise by the covered volume: the partition of unity holds
           // even where a domain reaches past the grid.
           gathered.append_to(stencil, k, e, 1. / covered);
-          ++k;
-        }
-    stencil.begin[k] = e;
-    AssertThrow(k == n_local, ExcInternalError());
+        });
+    stencil.begin[n_visited] = e;
+    AssertThrow(n_visited == n_local, ExcInternalError());
   }
 
   template void

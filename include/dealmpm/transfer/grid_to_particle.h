@@ -4,6 +4,7 @@
 #include <dealmpm/grid/nodal_fields.h>
 #include <dealmpm/particles/particle_set.h>
 #include <dealmpm/transfer/stencil.h>
+#include <dealmpm/transfer/stencil_order.h>
 
 namespace dealmpm
 {
@@ -66,10 +67,11 @@ namespace dealmpm
     const double tolerance = 1e-12;
     bool         left_cell = false;
 
-    std::size_t k = 0;
-    for (const GridCell<dim> &c : grid.cells)
-      for (auto &p : particles.handler.particles_in_cell(c.cell))
-        {
+    for_each_particle_in_stencil_order(
+      grid,
+      particles.handler,
+      [&](const std::size_t k, auto &p, const GridCell<dim> &c)
+        DEAL_II_ALWAYS_INLINE {
           Tensor<1, dim>   v_grid, dv;
           Tensor<2, dim>   L, B, D;
           const Point<dim> x_p = p.get_location();
@@ -133,8 +135,7 @@ namespace dealmpm
               write_tensor<dim>(&props[f.deformation_gradient], F);
               after_deformation(p, props, L, F, c);
             }
-          ++k;
-        }
+        });
     return left_cell;
   }
 } // namespace dealmpm
