@@ -80,10 +80,7 @@ namespace dealmpm
         std::rethrow_exception(error);
       return signal;
     }
-  } // namespace
 
-  namespace
-  {
     /** Where the library was loaded from (dladdr on an object of its own). */
     const char library_anchor = 0;
 
@@ -141,6 +138,97 @@ namespace dealmpm
                        jobs,
                        std::filesystem::read_symlink("/proc/self/exe"),
                        plot_script());
+    }
+
+    /** What a command line without --study asks for. */
+    struct CommandLine
+    {
+      std::string              file;
+      std::vector<std::string> overrides;
+      bool                     print_parameters = false;
+    };
+
+    /**
+     * Reads the options into @p command. Returns the exit code when the
+     * program ends here: 0 after the help, 1 after the usage for a wrong
+     * command line; -1 to go on. Only rank 0 prints.
+     */
+    int
+    read_command_line(int          argc,
+                      char       **argv,
+                      const bool   root,
+                      CommandLine &command)
+    {
+      for (int i = 1; i < argc; ++i)
+        {
+          const std::string arg = argv[i];
+          if (arg == "-h" || arg == "--help")
+            {
+              if (root)
+                std::cout << usage;
+              return 0;
+            }
+          else if (arg == "--print-parameters")
+            command.print_parameters = true;
+          else if (arg == "-s" && i + 1 < argc)
+            command.overrides.push_back(argv[++i]);
+          else if (arg.rfind("-", 0) == 0 || !command.file.empty())
+            {
+              if (root)
+                std::cerr << "dealmpm: unknown option or second scene file '"
+                          << arg << "'\n\n"
+                          << usage;
+              return 1;
+            }
+          else
+            command.file = arg;
+        }
+      if (command.file.empty() && !command.print_parameters)
+        {
+          if (root)
+            std::cerr << "dealmpm: no scene file given\n\n" << usage;
+          return 1;
+        }
+      return -1;
+    }
+
+    /** --print-parameters: every entry for the scene's shape, with the
+     * scene's values (the defaults without a scene). */
+    void
+    print_parameters(const CommandLine &command,
+                     const SceneShape  &shape,
+                     const bool         root)
+    {
+      ParameterHandler prm;
+      if (shape.dim == 2)
+        Simulation<2>::declare_parameters(prm, shape);
+      else
+        Simulation<3>::declare_parameters(prm, shape);
+      if (!command.file.empty())
+        parse_parameter_file(prm, command.file, false);
+      apply_overrides(prm, command.overrides);
+      if (root)
+        prm.print_parameters(std::cout, ParameterHandler::Text);
+    }
+
+    /** Runs the scene, or prints its parameters; the exit code unless
+     * an error ends it (run_program turns those into exit codes). */
+    int
+    run_command(const CommandLine &command, const bool root)
+    {
+      const SceneShape shape =
+        read_scene_shape(command.file, command.overrides);
+      if (!command.file.empty())
+        check_scene_text(command.file, shape.n_bodies, shape.n_materials);
+      if (command.print_parameters)
+        {
+          print_parameters(command, shape, root);
+          return 0;
+        }
+      const int signal =
+        shape.dim == 2 ? run_scene<2>(command.file, command.overrides, shape) :
+                         run_scene<3>(command.file, command.overrides, shape);
+      return signal != 0 ? 128 + signal : 0;
     }
   } // namespace
 
@@ -215,64 +303,13 @@ namespace dealmpm
         return run_study_command(argc, argv);
     Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
     const bool  root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-    std::string file;
-    std::vector<std::string> overrides;
-    bool                     print_parameters = false;
-    for (int i = 1; i < argc; ++i)
-      {
-        const std::string arg = argv[i];
-        if (arg == "-h" || arg == "--help")
-          {
-            if (root)
-              std::cout << usage;
-            return 0;
-          }
-        else if (arg == "--print-parameters")
-          print_parameters = true;
-        else if (arg == "-s" && i + 1 < argc)
-          overrides.push_back(argv[++i]);
-        else if (arg.rfind("-", 0) == 0 || !file.empty())
-          {
-            if (root)
-              std::cerr << "dealmpm: unknown option or second scene file '"
-                        << arg << "'\n\n"
-                        << usage;
-            return 1;
-          }
-        else
-          file = arg;
-      }
-    if (file.empty() && !print_parameters)
-      {
-        if (root)
-          std::cerr << "dealmpm: no scene file given\n\n" << usage;
-        return 1;
-      }
-
+    CommandLine command;
+    if (const int code = read_command_line(argc, argv, root, command);
+        code >= 0)
+      return code;
     try
       {
-        const SceneShape shape = read_scene_shape(file, overrides);
-        if (!file.empty())
-          check_scene_text(file, shape.n_bodies, shape.n_materials);
-        if (print_parameters)
-          {
-            ParameterHandler prm;
-            if (shape.dim == 2)
-              Simulation<2>::declare_parameters(prm, shape);
-            else
-              Simulation<3>::declare_parameters(prm, shape);
-            if (!file.empty())
-              parse_parameter_file(prm, file, false);
-            apply_overrides(prm, overrides);
-            if (root)
-              prm.print_parameters(std::cout, ParameterHandler::Text);
-            return 0;
-          }
-        const int signal = shape.dim == 2 ?
-                             run_scene<2>(file, overrides, shape) :
-                             run_scene<3>(file, overrides, shape);
-        if (signal != 0)
-          return 128 + signal;
+        return run_command(command, root);
       }
     catch (const InputError &e)
       {
@@ -298,6 +335,5 @@ namespace dealmpm
         std::cerr << "dealmpm: internal error: " << one_line(e) << std::endl;
         return 4;
       }
-    return 0;
   }
 } // namespace dealmpm

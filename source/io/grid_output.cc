@@ -13,6 +13,111 @@
 
 namespace dealmpm
 {
+  namespace
+  {
+    /** @p v with hanging nodes interpolated and ghost values (collective):
+     * a node's value as every cell at it shows it. */
+    template <int dim>
+    void
+    ghosted_copy(const BackgroundGrid<dim> &grid,
+                 const NodalVector         &v,
+                 NodalVector               &copy)
+    {
+      copy.reinit(grid.partitioner);
+      copy.copy_locally_owned_data_from(v);
+      grid.hanging_node_constraints.distribute(copy);
+      copy.update_ghost_values();
+    }
+
+    /**
+     * The velocity as one vector field (ParaView's glyphs and stream lines
+     * want one), on an output-only FESystem(FE_Q(1), dim) distributed on
+     * @p vector_dofs, whose vertex values are copied from the scalar nodal
+     * vectors @p components (ghosted).
+     */
+    template <int dim>
+    void
+    velocity_field(const BackgroundGrid<dim>          &grid,
+                   const std::array<NodalVector, dim> &components,
+                   DoFHandler<dim>                    &vector_dofs,
+                   NodalVector                        &velocity)
+    {
+      const FESystem<dim> fe(FE_Q<dim>(1), dim);
+      vector_dofs.distribute_dofs(fe);
+      IndexSet relevant;
+      DoFTools::extract_locally_relevant_dofs(vector_dofs, relevant);
+      velocity.reinit(vector_dofs.locally_owned_dofs(), relevant, grid.comm);
+      for (const auto &cell : vector_dofs.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            const typename DoFHandler<dim>::active_cell_iterator scalar_cell(
+              &grid.triangulation,
+              cell->level(),
+              cell->index(),
+              &grid.dof_handler);
+            for (const unsigned int v : cell->vertex_indices())
+              for (unsigned int d = 0; d < dim; ++d)
+                velocity(cell->vertex_dof_index(v, d)) =
+                  components[d](scalar_cell->vertex_dof_index(v, 0));
+          }
+      // The owner of every node holds a cell at it: its value is the one
+      // all ranks show.
+      velocity.update_ghost_values();
+    }
+
+    /** Per active cell (locally owned ones set): its refinement level and
+     * the rank that owns it. */
+    template <int dim>
+    void
+    cell_levels_and_ranks(const BackgroundGrid<dim> &grid,
+                          Vector<float>             &level,
+                          Vector<float>             &rank)
+    {
+      level.reinit(grid.triangulation.n_active_cells());
+      rank.reinit(grid.triangulation.n_active_cells());
+      for (const auto &cell : grid.triangulation.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            level[cell->active_cell_index()] = cell->level();
+            rank[cell->active_cell_index()]  = cell->subdomain_id();
+          }
+    }
+
+    /** This rank's piece <base>.<rank>.vtu and, on rank 0, the record
+     * <base>.pvtu that lists every rank's piece; returns the record's
+     * name. */
+    template <int dim>
+    std::string
+    write_pieces(const DataOut<dim> &data_out,
+                 const std::string  &directory,
+                 const std::string  &base,
+                 const MPI_Comm      comm)
+    {
+      const auto piece = [&](const unsigned int r) {
+        return base + "." + Utilities::int_to_string(r) + ".vtu";
+      };
+      std::ostringstream vtu;
+      data_out.write_vtu(vtu);
+      OutputFile piece_file(directory + "/" +
+                            piece(Utilities::MPI::this_mpi_process(comm)));
+      piece_file.write(vtu.str());
+      piece_file.commit();
+      if (Utilities::MPI::this_mpi_process(comm) == 0)
+        {
+          std::vector<std::string> pieces;
+          for (unsigned int r = 0; r < Utilities::MPI::n_mpi_processes(comm);
+               ++r)
+            pieces.push_back(piece(r));
+          std::ostringstream pvtu;
+          data_out.write_pvtu_record(pvtu, pieces);
+          OutputFile record(directory + "/" + base + ".pvtu");
+          record.write(pvtu.str());
+          record.commit();
+        }
+      return base + ".pvtu";
+    }
+  } // namespace
+
   template <int dim>
   std::string
   write_grid_output(const BackgroundGrid<dim> &grid,
@@ -22,43 +127,14 @@ namespace dealmpm
   {
     // Everything collective (ghost exchanges) comes before the files, so
     // that a rank that cannot write still takes part in all of it.
-    const auto ghosted = [&](const NodalVector &v, NodalVector &copy) {
-      copy.reinit(grid.partitioner);
-      copy.copy_locally_owned_data_from(v);
-      grid.hanging_node_constraints.distribute(copy);
-      copy.update_ghost_values();
-    };
     NodalVector                  mass;
     std::array<NodalVector, dim> velocity_components;
-    ghosted(fields.mass, mass);
+    ghosted_copy(grid, fields.mass, mass);
     for (unsigned int d = 0; d < dim; ++d)
-      ghosted(fields.velocity[d], velocity_components[d]);
-
-    // The velocity as one vector field (ParaView's glyphs and stream lines
-    // want one), on an output-only FESystem(FE_Q(1), dim) whose vertex
-    // values are copied from the scalar nodal vectors.
-    const FESystem<dim> fe(FE_Q<dim>(1), dim);
-    DoFHandler<dim>     vector_dofs(grid.triangulation);
-    vector_dofs.distribute_dofs(fe);
-    IndexSet relevant;
-    DoFTools::extract_locally_relevant_dofs(vector_dofs, relevant);
-    NodalVector velocity(vector_dofs.locally_owned_dofs(), relevant, grid.comm);
-    for (const auto &cell : vector_dofs.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          const typename DoFHandler<dim>::active_cell_iterator scalar_cell(
-            &grid.triangulation,
-            cell->level(),
-            cell->index(),
-            &grid.dof_handler);
-          for (const unsigned int v : cell->vertex_indices())
-            for (unsigned int d = 0; d < dim; ++d)
-              velocity(cell->vertex_dof_index(v, d)) =
-                velocity_components[d](scalar_cell->vertex_dof_index(v, 0));
-        }
-    // The owner of every node holds a cell at it: its value is the one all
-    // ranks show.
-    velocity.update_ghost_values();
+      ghosted_copy(grid, fields.velocity[d], velocity_components[d]);
+    DoFHandler<dim> vector_dofs(grid.triangulation);
+    NodalVector     velocity;
+    velocity_field<dim>(grid, velocity_components, vector_dofs, velocity);
 
     DataOut<dim> data_out;
     data_out.attach_triangulation(grid.triangulation);
@@ -69,41 +145,15 @@ namespace dealmpm
       std::vector<std::string>(dim, "nodal_velocity"),
       std::vector<DataComponentInterpretation::DataComponentInterpretation>(
         dim, DataComponentInterpretation::component_is_part_of_vector));
-    Vector<float> level(grid.triangulation.n_active_cells());
-    Vector<float> rank(grid.triangulation.n_active_cells());
-    for (const auto &cell : grid.triangulation.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          level[cell->active_cell_index()] = cell->level();
-          rank[cell->active_cell_index()]  = cell->subdomain_id();
-        }
+    Vector<float> level, rank;
+    cell_levels_and_ranks(grid, level, rank);
     data_out.add_data_vector(level, "level");
     data_out.add_data_vector(rank, "mpi_rank");
     data_out.build_patches();
-
-    const std::string base  = "grid_" + Utilities::int_to_string(counter, 5);
-    const auto        piece = [&](const unsigned int r) {
-      return base + "." + Utilities::int_to_string(r) + ".vtu";
-    };
-    std::ostringstream vtu;
-    data_out.write_vtu(vtu);
-    OutputFile piece_file(directory + "/" +
-                          piece(Utilities::MPI::this_mpi_process(grid.comm)));
-    piece_file.write(vtu.str());
-    piece_file.commit();
-    if (Utilities::MPI::this_mpi_process(grid.comm) == 0)
-      {
-        std::vector<std::string> pieces;
-        for (unsigned int r = 0; r < Utilities::MPI::n_mpi_processes(grid.comm);
-             ++r)
-          pieces.push_back(piece(r));
-        std::ostringstream pvtu;
-        data_out.write_pvtu_record(pvtu, pieces);
-        OutputFile record(directory + "/" + base + ".pvtu");
-        record.write(pvtu.str());
-        record.commit();
-      }
-    return base + ".pvtu";
+    return write_pieces(data_out,
+                        directory,
+                        "grid_" + Utilities::int_to_string(counter, 5),
+                        grid.comm);
   }
 
   template std::string

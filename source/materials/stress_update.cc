@@ -1,4 +1,5 @@
 #include <dealmpm/materials/stress_update.h>
+#include <dealmpm/transfer/stencil_order.h>
 
 namespace dealmpm
 {
@@ -10,18 +11,20 @@ namespace dealmpm
   {
     ParticleCheck<dim> check;
     const CoreFields  &f = particles.fields;
-    for (const GridCell<dim> &c : grid.cells)
-      for (const auto &p : particles.handler.particles_in_cell(c.cell))
-        {
-          const auto props = p.get_properties();
-          check.inspect(
-            p,
-            read_vector<dim>(&props[f.velocity]),
-            read_tensor<dim>(&props[f.deformation_gradient]),
-            read_symmetric<dim>(&props[f.stress]),
-            *materials[static_cast<unsigned int>(props[f.material])],
-            c.h);
-        }
+    for_each_particle_in_stencil_order(
+      grid,
+      particles.handler,
+      [&](std::size_t,
+          const auto          &p,
+          const GridCell<dim> &c) DEAL_II_ALWAYS_INLINE {
+        const auto props = p.get_properties();
+        check.inspect(p,
+                      read_vector<dim>(&props[f.velocity]),
+                      read_tensor<dim>(&props[f.deformation_gradient]),
+                      read_symmetric<dim>(&props[f.stress]),
+                      *materials[static_cast<unsigned int>(props[f.material])],
+                      c.h);
+      });
     return check;
   }
 

@@ -9,7 +9,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <limits>
 
 namespace dealmpm
 {
@@ -293,120 +292,6 @@ namespace dealmpm
     return body;
   }
 
-  template <int dim>
-  GeneratedParticles
-  generate_particles(const std::vector<Body<dim>> &bodies,
-                     const unsigned int            body_index,
-                     const double                  density,
-                     const BackgroundGrid<dim>    &grid,
-                     ParticleSet<dim>             &particles,
-                     const std::vector<double>    &initial_internal_variables,
-                     const unsigned int            id_stride)
-  {
-    const Body<dim>   &body = bodies[body_index];
-    GeneratedParticles result;
-    // The first body before this one that contains x, or the first one
-    // after it whose particles replace this one's there.
-    const auto inside = [&](const Point<dim>  &x,
-                            const unsigned int begin,
-                            const unsigned int end,
-                            const bool         replacing_only) {
-      for (unsigned int b = begin; b < end; ++b)
-        if ((!replacing_only || bodies[b].allow_overlap) &&
-            bodies[b].shape->bounding_box().point_inside(x) &&
-            bodies[b].shape->contains(x))
-          return b;
-      return numbers::invalid_unsigned_int;
-    };
-    const unsigned int n        = body.particles_per_direction;
-    unsigned int       per_cell = 1;
-    for (unsigned int d = 0; d < dim; ++d)
-      per_cell *= n;
-    AssertThrow(per_cell <= id_stride, ExcInternalError());
-    const double n_cells = grid.triangulation.n_global_active_cells();
-    if ((body_index + 1.) * n_cells * id_stride >
-        double(std::numeric_limits<types::particle_index>::max()))
-      throw InputError("too many particles for 32-bit particle ids: use fewer "
-                       "cells, particles per cell or bodies");
-
-    const CoreFields      &f = particles.fields;
-    std::vector<double>    properties(particles.layout.size(), 0.);
-    const BoundingBox<dim> shape_box = body.shape->bounding_box();
-    for (const GridCell<dim> &c : grid.cells)
-      {
-        const BoundingBox<dim> cell_box(
-          std::vector<Point<dim>>(c.vertices.begin(), c.vertices.end()));
-        if (cell_box.get_neighbor_type(shape_box) ==
-            NeighborType::not_neighbors)
-          continue;
-        for (unsigned int k = 0; k < per_cell; ++k)
-          {
-            Point<dim>   xi;
-            unsigned int rest = k;
-            for (unsigned int d = 0; d < dim; ++d, rest /= n)
-              xi[d] = (rest % n + 0.5) / n;
-            const Point<dim> x = c.real_point(xi);
-            if (!body.shape->contains(x) ||
-                inside(x, body_index + 1, bodies.size(), true) !=
-                  numbers::invalid_unsigned_int)
-              continue;
-            if (!body.allow_overlap &&
-                result.overlapped_body == numbers::invalid_unsigned_int)
-              result.overlapped_body = inside(x, 0, body_index, false);
-            // |det J| at the centre of the particle's sub-cell: exact for
-            // bilinear cells, so the particle volumes of a cell sum to it.
-            const double volume =
-              (c.affine ?
-                 c.measure :
-                 1. / std::abs(determinant(c.inverse_jacobian_at(xi)))) /
-              per_cell;
-            std::fill(properties.begin(), properties.end(), 0.);
-            properties[f.mass]           = density * volume;
-            properties[f.initial_volume] = volume;
-            write_vector<dim>(&properties[f.velocity], body.velocity);
-            write_tensor<dim>(&properties[f.deformation_gradient],
-                              unit_symmetric_tensor<dim>());
-            if (f.domain_half_length != numbers::invalid_unsigned_int)
-              for (unsigned int d = 0; d < dim; ++d)
-                properties[f.domain_half_length + d] =
-                  (c.vertices[GridCell<dim>::n_vertices - 1][d] -
-                   c.vertices[0][d]) /
-                  (2. * n);
-            properties[f.body]     = body_index;
-            properties[f.material] = body.material;
-            std::copy(initial_internal_variables.begin(),
-                      initial_internal_variables.end(),
-                      properties.begin() +
-                        particles.internal_offset[body.material]);
-            const types::particle_index id =
-              (body_index * grid.triangulation.n_global_active_cells() +
-               c.cell->global_active_cell_index()) *
-                id_stride +
-              k;
-            particles.handler.insert_particle(
-              x, xi, id, c.cell, make_array_view(properties));
-            ++result.n_created;
-          }
-      }
-    return result;
-  }
-
   template struct Body<2>;
   template struct Body<3>;
-  template GeneratedParticles
-  generate_particles(const std::vector<Body<2>> &,
-                     unsigned int,
-                     double,
-                     const BackgroundGrid<2> &,
-                     ParticleSet<2> &,
-                     const std::vector<double> &,
-                     unsigned int);
-  template GeneratedParticles
-  generate_particles(const std::vector<Body<3>> &,
-                     unsigned int,
-                     double,
-                     const BackgroundGrid<3> &,
-                     ParticleSet<3> &,
-                     const std::vector<double> &,
-                     unsigned int);
 } // namespace dealmpm

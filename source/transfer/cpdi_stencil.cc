@@ -1,4 +1,5 @@
 #include <dealmpm/transfer/stencil.h>
+#include <dealmpm/transfer/stencil_order.h>
 
 #include <algorithm>
 
@@ -93,6 +94,88 @@ namespace dealmpm
       return best;
     }
 
+    /**
+     * The cells the corners of one particle domain lie in, each once, with
+     * the sums over its corners c of N_v(x_c) / 2^dim (N) and of N_v(x_c)
+     * R^{-T} s_c / 2^dim (G) per vertex v of the cell: a domain's corners
+     * often share cells, and each cell's nodes are then gathered once.
+     */
+    template <int dim>
+    struct CornerSums
+    {
+      static constexpr unsigned int n_corners = GridCell<dim>::n_vertices;
+
+      void
+      clear()
+      {
+        n_cells = 0;
+      }
+
+      /** The corner at unit-cell point @p xi of cell @p c, with @p g its
+       * R^{-T} s_c / 2^dim. */
+      DEAL_II_ALWAYS_INLINE void
+      add(const GridCell<dim> *c, const Point<dim> &xi, const Tensor<1, dim> &g)
+      {
+        unsigned int j = 0;
+        while (j < n_cells && cells[j] != c)
+          ++j;
+        if (j == n_cells)
+          {
+            cells[n_cells++] = c;
+            for (unsigned int v = 0; v < n_corners; ++v)
+              {
+                N[j][v] = 0;
+                G[j][v] = Tensor<1, dim>();
+              }
+          }
+        double N_corner[n_corners];
+        q1_values<dim>(xi, N_corner, nullptr);
+        for (unsigned int v = 0; v < n_corners; ++v)
+          {
+            N[j][v] += N_corner[v] / n_corners;
+            G[j][v] += N_corner[v] * g;
+          }
+      }
+
+      const GridCell<dim> *cells[n_corners];
+      double               N[n_corners][n_corners];
+      Tensor<1, dim>       G[n_corners][n_corners];
+      unsigned int         n_cells = 0;
+    };
+
+    /** R, whose columns are the domain's half-edge vectors r_d = F e_d l_d:
+     * the initial half-lengths l_d carried along by the deformation. */
+    template <int dim>
+    DEAL_II_ALWAYS_INLINE inline Tensor<2, dim>
+    domain_half_edges(const ArrayView<const double> &props, const CoreFields &f)
+    {
+      const Tensor<2, dim> F = read_tensor<dim>(&props[f.deformation_gradient]);
+      Tensor<2, dim>       R;
+      for (unsigned int a = 0; a < dim; ++a)
+        for (unsigned int d = 0; d < dim; ++d)
+          R[a][d] = F[a][d] * props[f.domain_half_length + d];
+      return R;
+    }
+
+    /** Only the first failing particle is recorded: the run stops with its
+     * message. */
+    template <int dim>
+    void
+    record_failure(Stencil<dim>               &stencil,
+                   const types::particle_index id,
+                   const Point<dim>           &x)
+    {
+      if (stencil.failed)
+        return;
+      stencil.failed          = true;
+      stencil.failed_particle = id;
+      stencil.failed_location = x;
+      stencil.failure = "its CPDI domain reaches past the cells next to its "
+                        "own (stretched to more than a cell, or far past the "
+                        "grid's boundary); use more particles per cell or "
+                        "cpGIMP";
+    }
+
     template <int dim, bool boxes>
     void
     compute(const BackgroundGrid<dim> &grid,
@@ -106,32 +189,22 @@ namespace dealmpm
       const CoreFields &f                 = particles.fields;
       const std::size_t n_local = particles.handler.n_locally_owned_particles();
       stencil.begin.resize(n_local + 1);
-      std::size_t k = 0, e = 0;
+      std::size_t e = 0;
 
       NodeAccumulator<dim> gathered;
-      // The corners' cells, each once, with the sum over its corners of
-      // N_v(x_c) / 2^dim and N_v(x_c) R^{-T} s_c / 2^dim per vertex v.
-      const GridCell<dim> *cells[n_corners];
-      double               N[n_corners][n_corners];
-      Tensor<1, dim>       G[n_corners][n_corners];
-      double               N_corner[n_corners];
-      for (unsigned int i = 0; i < grid.cells.size(); ++i)
-        for (const auto &p :
-             particles.handler.particles_in_cell(grid.cells[i].cell))
-          {
-            const auto       props = p.get_properties();
-            const Point<dim> x     = p.get_location();
-            // R's columns are the domain's half-edge vectors r_d = F e_d l_d.
-            const Tensor<2, dim> F =
-              read_tensor<dim>(&props[f.deformation_gradient]);
-            Tensor<2, dim> R;
-            for (unsigned int a = 0; a < dim; ++a)
-              for (unsigned int d = 0; d < dim; ++d)
-                R[a][d] = F[a][d] * props[f.domain_half_length + d];
+      CornerSums<dim>      sums;
+      const std::size_t    n_visited = for_each_particle_in_stencil_order(
+        grid,
+        particles.handler,
+        [&](const std::size_t k, const auto &p, const GridCell<dim> &own)
+          DEAL_II_ALWAYS_INLINE {
+            const unsigned int   i = index_in_grid(grid, own);
+            const Point<dim>     x = p.get_location();
+            const Tensor<2, dim> R =
+              domain_half_edges<dim>(p.get_properties(), f);
             const Tensor<2, dim> R_inverse_transpose =
               determinant(R) > 0 ? transpose(invert(R)) : Tensor<2, dim>();
-
-            unsigned int n_cells = 0;
+            sums.clear();
             for (unsigned int corner = 0; corner < n_corners; ++corner)
               {
                 Tensor<1, dim> sign;
@@ -141,46 +214,17 @@ namespace dealmpm
                 double               outside;
                 const GridCell<dim> *c =
                   locate<dim, boxes>(grid, i, x + R * sign, xi, outside);
-                if (!(outside <= max_extrapolation) && !stencil.failed)
-                  {
-                    stencil.failed          = true;
-                    stencil.failed_particle = p.get_id();
-                    stencil.failed_location = x;
-                    stencil.failure =
-                      "its CPDI domain reaches past the cells next to its "
-                      "own (stretched to more than a cell, or far past the "
-                      "grid's boundary); use more particles per cell or "
-                      "cpGIMP";
-                  }
-                unsigned int j = 0;
-                while (j < n_cells && cells[j] != c)
-                  ++j;
-                if (j == n_cells)
-                  {
-                    cells[n_cells++] = c;
-                    for (unsigned int v = 0; v < n_corners; ++v)
-                      {
-                        N[j][v] = 0;
-                        G[j][v] = Tensor<1, dim>();
-                      }
-                  }
-                q1_values<dim>(xi, N_corner, nullptr);
-                const Tensor<1, dim> g =
-                  R_inverse_transpose * sign / double(n_corners);
-                for (unsigned int v = 0; v < n_corners; ++v)
-                  {
-                    N[j][v] += N_corner[v] / n_corners;
-                    G[j][v] += N_corner[v] * g;
-                  }
+                if (!(outside <= max_extrapolation))
+                  record_failure(stencil, p.get_id(), x);
+                sums.add(c, xi, R_inverse_transpose * sign / double(n_corners));
               }
             gathered.clear();
-            for (unsigned int j = 0; j < n_cells; ++j)
-              gathered.add_cell(grid, *cells[j], N[j], G[j]);
+            for (unsigned int j = 0; j < sums.n_cells; ++j)
+              gathered.add_cell(grid, *sums.cells[j], sums.N[j], sums.G[j]);
             gathered.append_to(stencil, k, e);
-            ++k;
-          }
-      stencil.begin[k] = e;
-      AssertThrow(k == n_local, ExcInternalError());
+          });
+      stencil.begin[n_visited] = e;
+      AssertThrow(n_visited == n_local, ExcInternalError());
     }
   } // namespace
 

@@ -1,4 +1,5 @@
 #include <dealmpm/transfer/particle_to_grid.h>
+#include <dealmpm/transfer/stencil_order.h>
 
 namespace dealmpm
 {
@@ -22,65 +23,64 @@ namespace dealmpm
         }
       const CoreFields &f = particles.fields;
 
-      std::size_t k = 0;
-      for (const GridCell<dim> &c : grid.cells)
-        for (const auto &p : particles.handler.particles_in_cell(c.cell))
-          {
-            const ArrayView<const double> props = p.get_properties();
-            const double                  m     = props[f.mass];
-            const Tensor<1, dim> v = read_vector<dim>(&props[f.velocity]);
-            // APIC: the particle carries the affine field v + C (x - x_p)
-            // with C = B D^-1, B stored by G2P and D = sum N (x_i - x_p) (x)
-            // (x_i - x_p), x_p the position of the stencil (MUSL re-maps
-            // after the particles moved): with this D the round trip
-            // conserves angular momentum exactly (Jiang et al. 2015).
-            Tensor<2, dim> C;
-            Point<dim>     x_p;
-            if (affine)
-              {
-                x_p = stencil.position[k];
-                Tensor<2, dim> D;
-                for (unsigned int e = stencil.begin[k];
-                     e < stencil.begin[k + 1];
-                     ++e)
-                  {
-                    const Tensor<1, dim> r =
-                      grid.node_positions[stencil.node[e]] - x_p;
-                    D += stencil.N[e] * outer_product(r, r);
-                  }
-                // D is singular only for a particle on a node line.
-                if (std::abs(determinant(D)) >
-                    1e-12 * Utilities::fixed_power<dim>(trace(D)))
-                  C = read_tensor<dim>(&props[f.affine_velocity]) * invert(D);
-              }
-            // -V sigma, scaled once per particle.
-            SymmetricTensor<2, dim> Vsigma;
-            if (internal_force)
-              Vsigma =
-                -determinant(read_tensor<dim>(&props[f.deformation_gradient])) *
-                props[f.initial_volume] * read_symmetric<dim>(&props[f.stress]);
-            for (unsigned int e = stencil.begin[k]; e < stencil.begin[k + 1];
-                 ++e)
-              {
-                const unsigned int n = stencil.node[e];
-                if (mass_and_momentum)
-                  {
-                    const double mN = m * stencil.N[e];
-                    mass[n] += mN;
-                    const Tensor<1, dim> v_n =
-                      affine ? v + C * (grid.node_positions[n] - x_p) : v;
-                    for (unsigned int d = 0; d < dim; ++d)
-                      momentum[d][n] += mN * v_n[d];
-                  }
-                if (internal_force)
-                  {
-                    const Tensor<1, dim> fi = Vsigma * stencil.grad_N[e];
-                    for (unsigned int d = 0; d < dim; ++d)
-                      force[d][n] += fi[d];
-                  }
-              }
-            ++k;
-          }
+      for_each_particle_in_stencil_order(
+        grid,
+        particles.handler,
+        [&](const std::size_t k,
+            const auto       &p,
+            const GridCell<dim> &) DEAL_II_ALWAYS_INLINE {
+          const ArrayView<const double> props = p.get_properties();
+          const double                  m     = props[f.mass];
+          const Tensor<1, dim> v = read_vector<dim>(&props[f.velocity]);
+          // APIC: the particle carries the affine field v + C (x - x_p)
+          // with C = B D^-1, B stored by G2P and D = sum N (x_i - x_p) (x)
+          // (x_i - x_p), x_p the position of the stencil (MUSL re-maps
+          // after the particles moved): with this D the round trip
+          // conserves angular momentum exactly (Jiang et al. 2015).
+          Tensor<2, dim> C;
+          Point<dim>     x_p;
+          if (affine)
+            {
+              x_p = stencil.position[k];
+              Tensor<2, dim> D;
+              for (unsigned int e = stencil.begin[k]; e < stencil.begin[k + 1];
+                   ++e)
+                {
+                  const Tensor<1, dim> r =
+                    grid.node_positions[stencil.node[e]] - x_p;
+                  D += stencil.N[e] * outer_product(r, r);
+                }
+              // D is singular only for a particle on a node line.
+              if (std::abs(determinant(D)) >
+                  1e-12 * Utilities::fixed_power<dim>(trace(D)))
+                C = read_tensor<dim>(&props[f.affine_velocity]) * invert(D);
+            }
+          // -V sigma, scaled once per particle.
+          SymmetricTensor<2, dim> Vsigma;
+          if (internal_force)
+            Vsigma =
+              -determinant(read_tensor<dim>(&props[f.deformation_gradient])) *
+              props[f.initial_volume] * read_symmetric<dim>(&props[f.stress]);
+          for (unsigned int e = stencil.begin[k]; e < stencil.begin[k + 1]; ++e)
+            {
+              const unsigned int n = stencil.node[e];
+              if (mass_and_momentum)
+                {
+                  const double mN = m * stencil.N[e];
+                  mass[n] += mN;
+                  const Tensor<1, dim> v_n =
+                    affine ? v + C * (grid.node_positions[n] - x_p) : v;
+                  for (unsigned int d = 0; d < dim; ++d)
+                    momentum[d][n] += mN * v_n[d];
+                }
+              if (internal_force)
+                {
+                  const Tensor<1, dim> fi = Vsigma * stencil.grad_N[e];
+                  for (unsigned int d = 0; d < dim; ++d)
+                    force[d][n] += fi[d];
+                }
+            }
+        });
     }
   } // namespace
 

@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <dealmpm/transfer/quadratic_bspline.h>
+#include <dealmpm/transfer/stencil_order.h>
 
 #include <cmath>
 
@@ -156,58 +157,57 @@ namespace dealmpm
         stencil.N.resize(n_local * max_entries);
         stencil.grad_N.resize(n_local * max_entries);
       }
-    std::size_t  k = 0, e = 0;
-    unsigned int position[dim][3], count[dim];
-    double       value[dim][3], derivative[dim][3];
-    for (unsigned int i = 0; i < grid.cells.size(); ++i)
-      {
-        const unsigned int *block =
-          &spline.block_nodes[i * QuadraticBSplineGrid<dim>::block_size];
-        for (const auto &p :
-             particles.handler.particles_in_cell(grid.cells[i].cell))
-          {
-            const Point<dim> x = p.get_location();
-            for (unsigned int d = 0; d < dim; ++d)
-              count[d] = weights_1d((x[d] - spline.origin[d]) / spline.h[d],
-                                    spline.lower_index[i][d],
-                                    spline.n_cells[d],
-                                    position[d],
-                                    value[d],
-                                    derivative[d]);
-            stencil.begin[k] = e;
-            // The tensor product over the directions.
-            unsigned int       m[3] = {0, 0, 0};
-            const unsigned int n_entries =
-              count[0] * count[1] * (dim == 3 ? count[dim - 1] : 1);
-            for (unsigned int q = 0; q < n_entries; ++q, ++e)
-              {
-                unsigned int rest = q, node_position = 0, stride = 1;
-                for (unsigned int d = 0; d < dim; ++d, stride *= 4)
-                  {
-                    m[d] = rest % count[d];
-                    rest /= count[d];
-                    node_position += position[d][m[d]] * stride;
-                  }
-                double         N = 1;
-                Tensor<1, dim> grad;
-                for (unsigned int d = 0; d < dim; ++d)
-                  {
-                    N *= value[d][m[d]];
-                    double g = derivative[d][m[d]] / spline.h[d];
-                    for (unsigned int b = 0; b < dim; ++b)
-                      if (b != d)
-                        g *= value[b][m[b]];
-                    grad[d] = g;
-                  }
-                stencil.node[e]   = block[node_position];
-                stencil.N[e]      = N;
-                stencil.grad_N[e] = grad;
-              }
-            ++k;
-          }
-      }
-    stencil.begin[k] = e;
-    AssertThrow(k == n_local, ExcInternalError());
+    std::size_t       e = 0;
+    unsigned int      position[dim][3], count[dim];
+    double            value[dim][3], derivative[dim][3];
+    const std::size_t n_visited = for_each_particle_in_stencil_order(
+      grid,
+      particles.handler,
+      [&](const std::size_t k, const auto &p, const GridCell<dim> &c)
+        DEAL_II_ALWAYS_INLINE {
+          const unsigned int  i = index_in_grid(grid, c);
+          const unsigned int *block =
+            &spline.block_nodes[i * QuadraticBSplineGrid<dim>::block_size];
+          const Point<dim> x = p.get_location();
+          for (unsigned int d = 0; d < dim; ++d)
+            count[d] = weights_1d((x[d] - spline.origin[d]) / spline.h[d],
+                                  spline.lower_index[i][d],
+                                  spline.n_cells[d],
+                                  position[d],
+                                  value[d],
+                                  derivative[d]);
+          stencil.begin[k] = e;
+          // The tensor product over the directions.
+          unsigned int       m[3] = {0, 0, 0};
+          const unsigned int n_entries =
+            count[0] * count[1] * (dim == 3 ? count[dim - 1] : 1);
+          for (unsigned int q = 0; q < n_entries; ++q, ++e)
+            {
+              unsigned int rest = q, node_position = 0, stride = 1;
+              for (unsigned int d = 0; d < dim; ++d, stride *= 4)
+                {
+                  m[d] = rest % count[d];
+                  rest /= count[d];
+                  node_position += position[d][m[d]] * stride;
+                }
+              double         N = 1;
+              Tensor<1, dim> grad;
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  N *= value[d][m[d]];
+                  double g = derivative[d][m[d]] / spline.h[d];
+                  for (unsigned int b = 0; b < dim; ++b)
+                    if (b != d)
+                      g *= value[b][m[b]];
+                  grad[d] = g;
+                }
+              stencil.node[e]   = block[node_position];
+              stencil.N[e]      = N;
+              stencil.grad_N[e] = grad;
+            }
+        });
+    stencil.begin[n_visited] = e;
+    AssertThrow(n_visited == n_local, ExcInternalError());
   }
 
   template struct QuadraticBSplineGrid<2>;

@@ -4,6 +4,10 @@
 // energies together, any other column alone. So a momentum component that
 // is zero up to round-off (the sideways momentum of a settling column) is
 // measured against the momentum there is, not against its own noise.
+// A value that is not a finite number (NaN, inf) in either file fails: a
+// NaN compares unequal to everything yet passes every "difference >
+// tolerance" test, and an inf in a column would make every difference in
+// it relative to infinity.
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -48,6 +52,14 @@ main(int argc, char **argv)
                 << " rows\n";
       return 1;
     }
+  for (std::size_t r = 1; r < a.size(); ++r)
+    if (a[r].size() != a[0].size() || b[r].size() != a[0].size())
+      {
+        std::cerr << "different shapes: row " << r << " has " << a[r].size()
+                  << " vs " << b[r].size() << " values, the header "
+                  << a[0].size() << "\n";
+        return 1;
+      }
   const auto group = [](const std::string &name) {
     if (name.rfind("momentum", 0) == 0)
       return std::string("momentum");
@@ -75,6 +87,13 @@ main(int argc, char **argv)
       for (std::size_t r = 1; r < a.size(); ++r)
         {
           const double x = std::stod(a[r][c]), y = std::stod(b[r][c]);
+          if (!std::isfinite(x) || !std::isfinite(y))
+            {
+              if (failures++ < 10)
+                std::cerr << a[0][c] << " row " << r << ": " << x << " vs " << y
+                          << " (not a finite number)\n";
+              continue;
+            }
           const double difference = scale > 0 ? std::abs(x - y) / scale : 0.;
           worst                   = std::max(worst, difference);
           if (difference > tolerance)

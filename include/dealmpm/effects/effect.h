@@ -7,6 +7,7 @@
 #include <dealmpm/grid/nodal_field_set.h>
 #include <dealmpm/particles/particle_set.h>
 #include <dealmpm/transfer/stencil.h>
+#include <dealmpm/transfer/stencil_order.h>
 
 #include <string>
 #include <vector>
@@ -155,11 +156,12 @@ namespace dealmpm
         fields.force[d].zero_out_ghost_values();
         force[d] = fields.force[d].begin();
       }
-    std::size_t k     = 0;
-    double      power = 0;
-    for (const GridCell<dim> &c : state.grid.cells)
-      for (const auto &p : state.particles.handler.particles_in_cell(c.cell))
-        {
+    double power = 0;
+    for_each_particle_in_stencil_order(
+      state.grid,
+      state.particles.handler,
+      [&](const std::size_t k, const auto &p, const GridCell<dim> &)
+        DEAL_II_ALWAYS_INLINE {
           const auto       props = p.get_properties();
           const Point<dim> X =
             p.get_location() - read_vector<dim>(&props[f.displacement]);
@@ -170,8 +172,7 @@ namespace dealmpm
                ++e)
             for (unsigned int d = 0; d < dim; ++d)
               force[d][state.stencil.node[e]] += state.stencil.N[e] * mb[d];
-          ++k;
-        }
+        });
     for (unsigned int d = 0; d < dim; ++d)
       fields.force[d].compress(VectorOperation::add);
     return power;

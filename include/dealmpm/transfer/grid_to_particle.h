@@ -4,6 +4,7 @@
 #include <dealmpm/grid/nodal_fields.h>
 #include <dealmpm/particles/particle_set.h>
 #include <dealmpm/transfer/stencil.h>
+#include <dealmpm/transfer/stencil_order.h>
 
 namespace dealmpm
 {
@@ -23,6 +24,78 @@ namespace dealmpm
     operator()(const Args &...) const
     {}
   };
+
+  namespace g2p_sweep
+  {
+    /** The particle's new velocity: with APIC, v = sum N v and the
+     * B = sum N v (x) (x_i - x_p) P2G turns into C; else the FLIP/PIC blend
+     * alpha (v_p + sum N dv) + (1 - alpha) sum N v. */
+    template <int dim>
+    DEAL_II_ALWAYS_INLINE inline void
+    update_velocity(const ArrayView<double> &props,
+                    const CoreFields        &f,
+                    const Tensor<1, dim>    &v_grid,
+                    const Tensor<1, dim>    &dv,
+                    const Tensor<2, dim>    &B,
+                    const double             flip_fraction,
+                    const bool               affine)
+    {
+      if (affine)
+        {
+          write_vector<dim>(&props[f.velocity], v_grid);
+          write_tensor<dim>(&props[f.affine_velocity], B);
+        }
+      else
+        {
+          const Tensor<1, dim> v_old = read_vector<dim>(&props[f.velocity]);
+          write_vector<dim>(&props[f.velocity],
+                            flip_fraction * (v_old + dv) +
+                              (1. - flip_fraction) * v_grid);
+        }
+    }
+
+    /** Moves the particle from @p x_p by @p dx: displacement, position and
+     * reference location in its old cell @p c; sets @p left_cell if that
+     * location is outside the cell. */
+    template <int dim, typename Particle>
+    DEAL_II_ALWAYS_INLINE inline void
+    move(Particle                &p,
+         const ArrayView<double> &props,
+         const CoreFields        &f,
+         const GridCell<dim>     &c,
+         const Point<dim>        &x_p,
+         const Tensor<1, dim>    &dx,
+         bool                    &left_cell)
+    {
+      write_vector<dim>(&props[f.displacement],
+                        read_vector<dim>(&props[f.displacement]) + dx);
+      const Point<dim> x = x_p + dx;
+      p.set_location(x);
+      const Point<dim> xi = c.reference_point(x);
+      p.set_reference_location(xi);
+      // Slack so that a particle sitting on a face does not trigger a sort.
+      const double tolerance = 1e-12;
+      for (unsigned int d = 0; d < dim; ++d)
+        left_cell = left_cell || xi[d] < -tolerance || xi[d] > 1. + tolerance;
+    }
+
+    /** F <- (I + dt L) F; returns the new F. */
+    template <int dim>
+    DEAL_II_ALWAYS_INLINE inline Tensor<2, dim>
+    deform(const ArrayView<double> &props,
+           const CoreFields        &f,
+           const Tensor<2, dim>    &L,
+           const double             dt)
+    {
+      Tensor<2, dim> dF = dt * L;
+      for (unsigned int d = 0; d < dim; ++d)
+        dF[d][d] += 1.;
+      const Tensor<2, dim> F =
+        dF * read_tensor<dim>(&props[f.deformation_gradient]);
+      write_tensor<dim>(&props[f.deformation_gradient], F);
+      return F;
+    }
+  } // namespace g2p_sweep
 
   /**
    * G2P from the nodal velocity field (fields.velocity) and its increment
@@ -60,18 +133,16 @@ namespace dealmpm
         velocity[d]  = fields.velocity[d].begin();
         increment[d] = fields.velocity_increment[d].begin();
       }
-    const CoreFields &f = particles.fields;
-    const bool affine   = f.affine_velocity != numbers::invalid_unsigned_int;
-    // Slack so that a particle sitting on a face does not trigger a sort.
-    const double tolerance = 1e-12;
-    bool         left_cell = false;
-
-    std::size_t k = 0;
-    for (const GridCell<dim> &c : grid.cells)
-      for (auto &p : particles.handler.particles_in_cell(c.cell))
-        {
+    const CoreFields &f  = particles.fields;
+    const bool affine    = f.affine_velocity != numbers::invalid_unsigned_int;
+    bool       left_cell = false;
+    for_each_particle_in_stencil_order(
+      grid,
+      particles.handler,
+      [&](const std::size_t k, auto &p, const GridCell<dim> &c)
+        DEAL_II_ALWAYS_INLINE {
           Tensor<1, dim>   v_grid, dv;
-          Tensor<2, dim>   L, B, D;
+          Tensor<2, dim>   L, B;
           const Point<dim> x_p = p.get_location();
           for (unsigned int e = stencil.begin[k]; e < stencil.begin[k + 1]; ++e)
             {
@@ -99,42 +170,16 @@ namespace dealmpm
           const ArrayView<double> props = p.get_properties();
           if (motion)
             {
-              if (affine)
-                {
-                  write_vector<dim>(&props[f.velocity], v_grid);
-                  write_tensor<dim>(&props[f.affine_velocity], B);
-                }
-              else
-                {
-                  const Tensor<1, dim> v_old =
-                    read_vector<dim>(&props[f.velocity]);
-                  write_vector<dim>(&props[f.velocity],
-                                    flip_fraction * (v_old + dv) +
-                                      (1. - flip_fraction) * v_grid);
-                }
-              const Tensor<1, dim> dx = dt * v_grid;
-              write_vector<dim>(&props[f.displacement],
-                                read_vector<dim>(&props[f.displacement]) + dx);
-              const Point<dim> x = x_p + dx;
-              p.set_location(x);
-              const Point<dim> xi = c.reference_point(x);
-              p.set_reference_location(xi);
-              for (unsigned int d = 0; d < dim; ++d)
-                left_cell =
-                  left_cell || xi[d] < -tolerance || xi[d] > 1. + tolerance;
+              g2p_sweep::update_velocity(
+                props, f, v_grid, dv, B, flip_fraction, affine);
+              g2p_sweep::move(p, props, f, c, x_p, dt * v_grid, left_cell);
             }
           if (deformation)
             {
-              Tensor<2, dim> dF = dt * L;
-              for (unsigned int d = 0; d < dim; ++d)
-                dF[d][d] += 1.;
-              const Tensor<2, dim> F =
-                dF * read_tensor<dim>(&props[f.deformation_gradient]);
-              write_tensor<dim>(&props[f.deformation_gradient], F);
+              const Tensor<2, dim> F = g2p_sweep::deform(props, f, L, dt);
               after_deformation(p, props, L, F, c);
             }
-          ++k;
-        }
+        });
     return left_cell;
   }
 } // namespace dealmpm
