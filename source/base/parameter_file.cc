@@ -2,9 +2,12 @@
 
 #include <dealmpm/base/errors.h>
 #include <dealmpm/base/parameter_file.h>
+#include <dealmpm/base/scene_reader.h>
 
 #include <fstream>
+#include <limits>
 #include <regex>
+#include <vector>
 
 namespace dealmpm
 {
@@ -27,6 +30,142 @@ namespace dealmpm
     text =
       std::regex_replace(text, std::regex("<([^<>]{200})[^<>]+>"), "<$1...>");
     return Utilities::trim(text);
+  }
+
+  namespace
+  {
+    /** deal.II's pattern descriptions write "MAX_DOUBLE" or the int and
+     * unsigned int limits for no bound. */
+    bool
+    is_bound(const std::string &text)
+    {
+      return text.find("MAX_") == std::string::npos &&
+             text != std::to_string(std::numeric_limits<int>::max()) &&
+             text != std::to_string(std::numeric_limits<int>::min()) &&
+             text != std::to_string(std::numeric_limits<unsigned int>::max());
+    }
+
+    /** "a number >= 0", or in the plural "numbers >= 0"; "positive
+     * integers" for integers from 1. */
+    std::string
+    number_words(const bool         integer,
+                 const std::string &lower,
+                 const std::string &upper,
+                 const bool         plural)
+    {
+      std::string kind = integer ? (plural ? "integers" : "an integer") :
+                                   (plural ? "numbers" : "a number");
+      if (integer && lower == "1" && !is_bound(upper))
+        return plural ? "positive integers" : "a positive integer";
+      if (is_bound(lower) && is_bound(upper))
+        return kind + " from " + lower + " to " + upper;
+      if (is_bound(lower))
+        return kind + " >= " + lower;
+      if (is_bound(upper))
+        return kind + " <= " + upper;
+      return kind;
+    }
+
+    const std::string bounds = "(\\S+)\\.\\.\\.(\\S+) \\(inclusive\\)";
+
+    /** A number pattern's words, or "" for another pattern. */
+    std::string
+    number_pattern(const std::string &description, const bool plural)
+    {
+      std::smatch match;
+      if (std::regex_match(description,
+                           match,
+                           std::regex("\\[Double " + bounds + "\\]")))
+        return number_words(false, match[1], match[2], plural);
+      if (std::regex_match(description,
+                           match,
+                           std::regex("\\[Integer range " + bounds + "\\]")))
+        return number_words(true, match[1], match[2], plural);
+      if (description == "[Integer]")
+        return plural ? "integers" : "an integer";
+      return "";
+    }
+
+    /** The subsections open at @p line of a parameter file, as "A/B/". */
+    std::string
+    section_at_line(const std::string &file, const unsigned int line)
+    {
+      std::ifstream            in(file);
+      std::vector<std::string> open;
+      std::string              text;
+      const std::regex         subsection("\\s*subsection\\s+(.*\\S)\\s*");
+      const std::regex         end("\\s*end\\s*");
+      for (unsigned int number = 1; number < line && std::getline(in, text);
+           ++number)
+        {
+          text = text.substr(0, text.find('#'));
+          std::smatch match;
+          if (std::regex_match(text, match, subsection))
+            open.push_back(match[1]);
+          else if (std::regex_match(text, end) && !open.empty())
+            open.pop_back();
+        }
+      std::string path;
+      for (const auto &s : open)
+        path += s + "/";
+      return path;
+    }
+  } // namespace
+
+  std::string
+  plain_pattern(const std::string &description, const std::string &value)
+  {
+    const std::string number = number_pattern(description, false);
+    if (!number.empty())
+      return number;
+    std::smatch match;
+    if (std::regex_match(description,
+                         match,
+                         std::regex("\\[MultipleSelection (.*) \\]")))
+      return "a comma-separated list of: " +
+             std::regex_replace(std::string(match[1]), std::regex("\\|"), ", ");
+    if (!std::regex_match(description,
+                          match,
+                          std::regex("\\[List of <(.*)> of length " + bounds +
+                                     "( separated by <,>)?\\]")))
+      return "";
+    const std::string elements = number_pattern(match[1], true);
+    if (elements.empty())
+      return "";
+    // Say the count only when the count is what is wrong.
+    const auto n = Utilities::split_string_list(value, ',').size();
+    if (match[2] == match[3] && n != std::stoul(match[2]))
+      return std::string(match[2]) + " " + elements + ", comma-separated";
+    const bool open_ended = !is_bound(match[3]);
+    if (n < std::stoul(match[2]) || (!open_ended && n > std::stoul(match[3])))
+      return (open_ended ?
+                "at least " + std::string(match[2]) :
+                std::string(match[2]) + " to " + std::string(match[3])) +
+             " " + elements + ", comma-separated";
+    return elements;
+  }
+
+  std::string
+  entry_mismatch(const std::exception &e, const std::string &file)
+  {
+    // deal.II wraps its text at spaces: read it with whitespace collapsed.
+    const std::string text =
+      std::regex_replace(std::string(e.what()), std::regex("\\s+"), " ");
+    std::smatch match;
+    if (!std::regex_search(
+          text,
+          match,
+          std::regex("Line <([0-9]+)> of file <[^>]*>: The entry value (.*?) "
+                     "for the entry named (.*?) does not match the given "
+                     "pattern: (\\[.*?\\])(?= |$)")))
+      return "";
+    const std::string expected = plain_pattern(match[4], match[2]);
+    if (expected.empty())
+      return "";
+    const std::string path =
+      section_at_line(file, std::stoul(match[1])) + std::string(match[3]);
+    return file + ": entry '" + path + "' = '" + quote_value(match[2]) +
+           "': expected " + expected;
   }
 
   void
@@ -84,7 +223,8 @@ namespace dealmpm
       }
     catch (const std::exception &e)
       {
-        throw InputError(file + ": " + one_line(e));
+        const std::string plain = entry_mismatch(e, file);
+        throw InputError(plain.empty() ? file + ": " + one_line(e) : plain);
       }
   }
 

@@ -232,6 +232,30 @@ namespace dealmpm
     }
   } // namespace
 
+  namespace
+  {
+    /** Why prm.set refused a value: what the entry's typed pattern expects,
+     * or deal.II's text (a Selection's lists its choices). */
+    std::string
+    override_mismatch(const std::exception &e, const std::string &value)
+    {
+      // deal.II wraps its text at spaces: read it with whitespace collapsed.
+      const std::string text =
+        std::regex_replace(std::string(e.what()), std::regex("\\s+"), " ");
+      std::smatch match;
+      if (std::regex_search(
+            text,
+            match,
+            std::regex("does not match the given pattern <(\\[.*?\\])>\\.")))
+        {
+          const std::string expected = plain_pattern(match[1], value);
+          if (!expected.empty())
+            return "expected " + expected;
+        }
+      return one_line(e);
+    }
+  } // namespace
+
   void
   apply_overrides(ParameterHandler               &prm,
                   const std::vector<std::string> &overrides)
@@ -262,7 +286,7 @@ namespace dealmpm
             for (unsigned int i = 0; i + 1 < path.size(); ++i)
               prm.leave_subsection();
             throw InputError("command line: -s '" + quote_value(item) +
-                             "': " + one_line(e));
+                             "': " + override_mismatch(e, value));
           }
         for (unsigned int i = 0; i + 1 < path.size(); ++i)
           prm.leave_subsection();

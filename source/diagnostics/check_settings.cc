@@ -9,7 +9,7 @@ namespace dealmpm
     prm.declare_entry(
       "Energy growth limit",
       "0.1",
-      Patterns::Anything(),
+      Patterns::Double(),
       "Stop the run (exit code 3) when the total energy, less the work of "
       "external forces, has grown by more than this fraction of the energy "
       "put in (kinetic and strain energy at the start, work of external "
@@ -18,7 +18,7 @@ namespace dealmpm
     prm.declare_entry(
       "Memory limit",
       "0",
-      Patterns::Anything(),
+      Patterns::Double(),
       "GB the run may use (all ranks together); 0: the memory available on "
       "the machines it runs on. A scene whose estimated memory (cells and "
       "particles, printed in the start line) exceeds it is refused before "
@@ -26,7 +26,7 @@ namespace dealmpm
     prm.declare_entry(
       "CFL warning",
       "0.5",
-      Patterns::Anything(),
+      Patterns::Double(),
       "With a fixed time step: warn once when a particle's CFL number "
       "dt (c_p + |v_p|) / h passes this, in (0, 1]; past 1 the run stops "
       "(exit code 3) and says the largest stable step.");

@@ -89,15 +89,15 @@ namespace dealmpm
       declare_elastic_constants(prm, youngs_modulus, 0.3);
       prm.declare_entry("Density",
                         density,
-                        Patterns::Anything(),
+                        Patterns::Double(),
                         "The material's reference density.");
       prm.declare_entry("Amplitude",
                         amplitude,
-                        Patterns::Anything(),
+                        Patterns::Double(),
                         amplitude_doc);
       prm.declare_entry("Wave speed",
                         wave_speed,
-                        Patterns::Anything(),
+                        Patterns::Double(),
                         wave_speed_doc);
     }
   } // namespace
@@ -124,7 +124,7 @@ namespace dealmpm
         [](ParameterHandler &prm) {
           prm.declare_entry("Acceleration",
                             dim == 2 ? "0, -9.81" : "0, 0, -9.81",
-                            Patterns::Anything(),
+                            Patterns::List(Patterns::Double(), dim, dim),
                             "Gravitational acceleration vector (m/s^2).");
         },
         [](SceneReader &reader) -> std::unique_ptr<Effect<dim>> {
@@ -138,7 +138,7 @@ namespace dealmpm
         [](ParameterHandler &prm) {
           prm.declare_entry("Coefficient",
                             "0.05",
-                            Patterns::Anything(),
+                            Patterns::Double(),
                             "Damping coefficient alpha, 0 <= alpha < 1.");
         },
         [](SceneReader &reader) -> std::unique_ptr<Effect<dim>> {

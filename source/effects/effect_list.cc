@@ -67,7 +67,7 @@ namespace dealmpm
     prm.declare_entry(
       "Effects",
       "",
-      Patterns::Anything(),
+      Patterns::MultipleSelection(effect_registry<dim>().pattern()),
       "Comma-separated optional physics; what is not listed costs "
       "nothing. Available: " +
         effect_registry<dim>().describe());

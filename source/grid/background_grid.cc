@@ -43,20 +43,20 @@ namespace dealmpm
                       "boundary tags become boundary ids.");
     prm.declare_entry("Lower corner",
                       repeat_value<dim>("0"),
-                      Patterns::Anything(),
+                      Patterns::List(Patterns::Double(), dim, dim),
                       "Rectangle: lower corner, one number per dimension.");
     prm.declare_entry("Upper corner",
                       repeat_value<dim>("1"),
-                      Patterns::Anything(),
+                      Patterns::List(Patterns::Double(), dim, dim),
                       "Rectangle: upper corner, one number per dimension.");
     prm.declare_entry("Cells",
                       repeat_value<dim>("10"),
-                      Patterns::Anything(),
+                      Patterns::List(Patterns::Integer(1), dim, dim),
                       "Rectangle: cells per direction, one positive integer "
                       "per dimension.");
     prm.declare_entry("Mesh file",
                       "",
-                      Patterns::Anything(),
+                      Patterns::FileName(),
                       "Mesh file: path of the Gmsh .msh file, relative to the "
                       "scene file's folder or absolute.");
     prm.declare_entry("Global refinements",
@@ -71,11 +71,11 @@ namespace dealmpm
                       "the box below (hanging nodes are handled).");
     prm.declare_entry("Lower corner",
                       repeat_value<dim>("0"),
-                      Patterns::Anything(),
+                      Patterns::List(Patterns::Double(), dim, dim),
                       "Box lower corner.");
     prm.declare_entry("Upper corner",
                       repeat_value<dim>("0"),
-                      Patterns::Anything(),
+                      Patterns::List(Patterns::Double(), dim, dim),
                       "Box upper corner.");
     prm.leave_subsection();
     prm.leave_subsection();

@@ -9,14 +9,14 @@ namespace dealmpm
     prm.declare_entry(
       "Directory",
       "output",
-      Patterns::Anything(),
+      Patterns::DirectoryName(),
       "Folder for all output (created; relative to the working directory). "
       "The files of an earlier run in it (particles_*, grid_*, "
       "statistics.csv, *.pvd) are removed first; other files stay.");
     prm.declare_entry(
       "Interval",
       "0.1",
-      Patterns::Anything(),
+      Patterns::Double(),
       "Simulated time between outputs (s); 0: only the first and last step.");
     prm.declare_entry("Write particles",
                       "true",
@@ -34,7 +34,7 @@ namespace dealmpm
       "Also particles_NNNNN.csv (id, position, velocity, displacement, J, body).");
     prm.declare_entry("Progress interval",
                       "5",
-                      Patterns::Anything(),
+                      Patterns::Double(),
                       "Seconds of wall time between progress lines (0: none).");
     prm.leave_subsection();
   }

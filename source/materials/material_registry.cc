@@ -11,11 +11,11 @@ namespace dealmpm
   {
     prm.declare_entry("Young's modulus",
                       std::to_string(youngs_modulus),
-                      Patterns::Anything(),
+                      Patterns::Double(),
                       "Young's modulus E (Pa), > 0.");
     prm.declare_entry("Poisson's ratio",
                       std::to_string(poissons_ratio),
-                      Patterns::Anything(),
+                      Patterns::Double(),
                       "Poisson's ratio nu, -1 < nu < 0.5.");
   }
 

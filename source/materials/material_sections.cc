@@ -18,7 +18,7 @@ namespace dealmpm
             "Its parameters go in a subsection named after it.");
         prm.declare_entry("Density",
                           "1000",
-                          Patterns::Anything(),
+                          Patterns::Double(),
                           "Reference density (kg/m^3), > 0.");
         for (const auto &name : models.names())
           {

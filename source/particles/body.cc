@@ -170,24 +170,24 @@ namespace dealmpm
                       "Axis, Height), 'mesh' (the cells of Mesh file).");
     prm.declare_entry("Lower corner",
                       repeat_value<dim>("0"),
-                      Patterns::Anything(),
+                      Patterns::List(Patterns::Double(), dim, dim),
                       "Box: lower corner.");
     prm.declare_entry("Upper corner",
                       repeat_value<dim>("1"),
-                      Patterns::Anything(),
+                      Patterns::List(Patterns::Double(), dim, dim),
                       "Box: upper corner.");
     prm.declare_entry("Center",
                       repeat_value<dim>("0"),
-                      Patterns::Anything(),
+                      Patterns::List(Patterns::Double(), dim, dim),
                       "Ball, cylinder: centre.");
     prm.declare_entry("Inner radius",
                       "0",
-                      Patterns::Anything(),
+                      Patterns::Double(),
                       "Ball: the radius of a hole at the centre (an annulus "
                       "or hollow sphere); 0: none.");
     prm.declare_entry("Radius",
                       "0.5",
-                      Patterns::Anything(),
+                      Patterns::Double(),
                       "Ball, cylinder: radius.");
     prm.declare_entry("Axis",
                       "z",
@@ -195,12 +195,12 @@ namespace dealmpm
                       "Cylinder: axis direction.");
     prm.declare_entry("Height",
                       "1",
-                      Patterns::Anything(),
+                      Patterns::Double(),
                       "Cylinder: length along the axis.");
     prm.declare_entry(
       "Mesh file",
       "",
-      Patterns::Anything(),
+      Patterns::FileName(),
       "Mesh: Gmsh .msh file whose cells the body fills (relative to the scene file's folder or absolute).");
     prm.declare_entry(
       "Particles per cell",
@@ -213,7 +213,7 @@ namespace dealmpm
                       "Number N of the 'Material N' section.");
     prm.declare_entry("Velocity",
                       repeat_value<dim>("0"),
-                      Patterns::Anything(),
+                      Patterns::List(Patterns::Double(), dim, dim),
                       "Initial velocity (m/s).");
     prm.declare_entry(
       "Allow overlap",

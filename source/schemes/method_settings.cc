@@ -34,12 +34,12 @@ namespace dealmpm
       "with USL or USF).");
     prm.declare_entry("Blend factor",
                       "0.99",
-                      Patterns::Anything(),
+                      Patterns::Double(),
                       "FLIP fraction for 'blend', in [0, 1].");
     prm.declare_entry(
       "Nodal mass threshold",
       "1e-9",
-      Patterns::Anything(),
+      Patterns::Double(),
       "Nodes with mass below this fraction of the mean particle "
       "mass are inactive (no velocity), in [0, 1e-3]: a guard "
       "against division by round-off, not a physical cut-off.");

@@ -8,7 +8,7 @@ namespace dealmpm
     prm.enter_subsection("Time");
     prm.declare_entry("End time",
                       "1",
-                      Patterns::Anything(),
+                      Patterns::Double(),
                       "Simulated time (s), > 0.");
     prm.declare_entry(
       "Time step method",
@@ -18,11 +18,11 @@ namespace dealmpm
       "recomputed every step; 'fixed': Time step.");
     prm.declare_entry("Time step",
                       "1e-3",
-                      Patterns::Anything(),
+                      Patterns::Double(),
                       "Fixed time step (s), > 0.");
     prm.declare_entry("CFL number",
                       "0.5",
-                      Patterns::Anything(),
+                      Patterns::Double(),
                       "CFL number C, 0 < C <= 1; 0.5 with the default MUSL "
                       "and linear shape functions held every case of the "
                       "defaults study (benchmarks/README.md).");

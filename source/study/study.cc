@@ -215,14 +215,14 @@ namespace dealmpm
     prm.enter_subsection("Study");
     prm.declare_entry("Base scene",
                       "",
-                      Patterns::Anything(),
+                      Patterns::FileName(),
                       "The scene every run starts from (relative to the "
                       "study file): best one with an exact solution (the "
                       "manufactured solutions, the generalized vortex), so "
                       "that the runs have error norms.");
     prm.declare_entry("Output directory",
                       "study",
-                      Patterns::Anything(),
+                      Patterns::DirectoryName(),
                       "Where study.csv, study.md, the plots and runs/NNN "
                       "(each run's statistics.csv, stdout and stderr) go.");
     prm.declare_entry("Refinements",

@@ -25,6 +25,26 @@ namespace dealmpm
                    const unsigned int n_bodies,
                    const unsigned int n_materials);
 
+  /**
+   * What a typed pattern's description (Patterns::Double, Integer,
+   * MultipleSelection, List of numbers) expects, in the words of the
+   * program's other input messages ("a number >= 0", "a comma-separated list
+   * of: a, b"); empty for the others (a Selection's own message already lists
+   * its choices). For a list, @p value decides whether the count is named
+   * (only when the count is wrong).
+   */
+  std::string
+  plain_pattern(const std::string &description, const std::string &value);
+
+  /**
+   * deal.II's "value does not match the pattern" for an entry of @p file, in
+   * the words of SceneReader::fail: "file: entry 'Section/Entry' = 'value':
+   * expected ..." (the section from the line deal.II names). Empty when @p e
+   * is another error or its pattern has no plain form.
+   */
+  std::string
+  entry_mismatch(const std::exception &e, const std::string &file);
+
   /** Parse a parameter file into @p prm; throws InputError naming the file
    * (and deal.II's line and entry) on failure. */
   void
