@@ -212,12 +212,10 @@ namespace dealmpm
     return text;
   }
 
-  template Point<2>
-  SceneReader::get_point<2>(const std::string &) const;
-  template Point<3>
-  SceneReader::get_point<3>(const std::string &) const;
-  template std::string
-  repeat_value<2>(const std::string &);
-  template std::string
-  repeat_value<3>(const std::string &);
+#define DEALMPM_INSTANTIATE(dim)                                               \
+  template Point<dim>  SceneReader::get_point<dim>(const std::string &) const; \
+  template std::string repeat_value<dim>(const std::string &);
+  DEALMPM_INSTANTIATE(2)
+  DEALMPM_INSTANTIATE(3)
+#undef DEALMPM_INSTANTIATE
 } // namespace dealmpm

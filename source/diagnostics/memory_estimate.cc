@@ -92,8 +92,10 @@ namespace dealmpm
     return estimate;
   }
 
-  template MemoryEstimate
-  estimate_memory(const GridSize<2> &, const std::vector<Body<2>> &);
-  template MemoryEstimate
-  estimate_memory(const GridSize<3> &, const std::vector<Body<3>> &);
+#define DEALMPM_INSTANTIATE(dim)                                 \
+  template MemoryEstimate estimate_memory(const GridSize<dim> &, \
+                                          const std::vector<Body<dim>> &);
+  DEALMPM_INSTANTIATE(2)
+  DEALMPM_INSTANTIATE(3)
+#undef DEALMPM_INSTANTIATE
 } // namespace dealmpm

@@ -69,24 +69,16 @@ namespace dealmpm
     throw RunError(message.str());
   }
 
-  template std::string
-  format_point(const Point<2> &);
-  template std::string
-  format_point(const Point<3> &);
-  template void
-  stop_on_particle(bool,
-                   types::particle_index,
-                   const Point<2> &,
-                   const std::string &,
-                   unsigned int,
-                   double,
-                   MPI_Comm);
-  template void
-  stop_on_particle(bool,
-                   types::particle_index,
-                   const Point<3> &,
-                   const std::string &,
-                   unsigned int,
-                   double,
-                   MPI_Comm);
+#define DEALMPM_INSTANTIATE(dim)                               \
+  template std::string format_point(const Point<dim> &);       \
+  template void        stop_on_particle(bool,                  \
+                                        types::particle_index, \
+                                        const Point<dim> &,    \
+                                        const std::string &,   \
+                                        unsigned int,          \
+                                        double,                \
+                                        MPI_Comm);
+  DEALMPM_INSTANTIATE(2)
+  DEALMPM_INSTANTIATE(3)
+#undef DEALMPM_INSTANTIATE
 } // namespace dealmpm

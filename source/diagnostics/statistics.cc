@@ -112,27 +112,20 @@ namespace dealmpm
     return largest;
   }
 
-  template EnergyGain<2>
-  largest_energy_gain(const ParticleSet<2> &,
-                      const std::vector<std::unique_ptr<Material<2>>> &,
-                      const std::vector<std::unique_ptr<Effect<2>>> &,
-                      const std::vector<Tensor<1, 2>> &);
-  template EnergyGain<3>
-  largest_energy_gain(const ParticleSet<3> &,
-                      const std::vector<std::unique_ptr<Material<3>>> &,
-                      const std::vector<std::unique_ptr<Effect<3>>> &,
-                      const std::vector<Tensor<1, 3>> &);
+#define DEALMPM_INSTANTIATE(dim)                         \
+  template EnergyGain<dim> largest_energy_gain(          \
+    const ParticleSet<dim> &,                            \
+    const std::vector<std::unique_ptr<Material<dim>>> &, \
+    const std::vector<std::unique_ptr<Effect<dim>>> &,   \
+    const std::vector<Tensor<1, dim>> &);                \
+  template Statistics compute_statistics(                \
+    const ParticleSet<dim> &,                            \
+    const std::vector<std::unique_ptr<Material<dim>>> &, \
+    const std::vector<std::unique_ptr<Effect<dim>>> &,   \
+    double,                                              \
+    MPI_Comm);
+  DEALMPM_INSTANTIATE(2)
+  DEALMPM_INSTANTIATE(3)
+#undef DEALMPM_INSTANTIATE
 
-  template Statistics
-  compute_statistics(const ParticleSet<2> &,
-                     const std::vector<std::unique_ptr<Material<2>>> &,
-                     const std::vector<std::unique_ptr<Effect<2>>> &,
-                     double,
-                     MPI_Comm);
-  template Statistics
-  compute_statistics(const ParticleSet<3> &,
-                     const std::vector<std::unique_ptr<Material<3>>> &,
-                     const std::vector<std::unique_ptr<Effect<3>>> &,
-                     double,
-                     MPI_Comm);
 } // namespace dealmpm

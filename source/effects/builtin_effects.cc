@@ -220,8 +220,9 @@ namespace dealmpm
     return registry;
   }
 
-  template Registry<Effect<2>> &
-  effect_registry<2>();
-  template Registry<Effect<3>> &
-  effect_registry<3>();
+#define DEALMPM_INSTANTIATE(dim) \
+  template Registry<Effect<dim>> &effect_registry<dim>();
+  DEALMPM_INSTANTIATE(2)
+  DEALMPM_INSTANTIATE(3)
+#undef DEALMPM_INSTANTIATE
 } // namespace dealmpm

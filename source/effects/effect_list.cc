@@ -105,12 +105,11 @@ namespace dealmpm
     return list;
   }
 
-  template void
-  declare_effect_parameters<2>(ParameterHandler &);
-  template void
-  declare_effect_parameters<3>(ParameterHandler &);
-  template EffectList<2>
-  read_effects(SceneReader &, const MaterialSections<2> &);
-  template EffectList<3>
-  read_effects(SceneReader &, const MaterialSections<3> &);
+#define DEALMPM_INSTANTIATE(dim)                                               \
+  template void            declare_effect_parameters<dim>(ParameterHandler &); \
+  template EffectList<dim> read_effects(SceneReader &,                         \
+                                        const MaterialSections<dim> &);
+  DEALMPM_INSTANTIATE(2)
+  DEALMPM_INSTANTIATE(3)
+#undef DEALMPM_INSTANTIATE
 } // namespace dealmpm

@@ -56,22 +56,15 @@ namespace dealmpm
       fields.velocity[d].update_ghost_values();
   }
 
-  template void
-  velocity_from_momentum(NodalFields<2> &,
-                         double,
-                         const BoundaryConditions<2> &);
-  template void
-  velocity_from_momentum(NodalFields<3> &,
-                         double,
-                         const BoundaryConditions<3> &);
-  template void
-  update_nodal_velocity(NodalFields<2> &,
-                        double,
-                        double,
-                        const BoundaryConditions<2> &);
-  template void
-  update_nodal_velocity(NodalFields<3> &,
-                        double,
-                        double,
-                        const BoundaryConditions<3> &);
+#define DEALMPM_INSTANTIATE(dim)                                         \
+  template void velocity_from_momentum(NodalFields<dim> &,               \
+                                       double,                           \
+                                       const BoundaryConditions<dim> &); \
+  template void update_nodal_velocity(NodalFields<dim> &,                \
+                                      double,                            \
+                                      double,                            \
+                                      const BoundaryConditions<dim> &);
+  DEALMPM_INSTANTIATE(2)
+  DEALMPM_INSTANTIATE(3)
+#undef DEALMPM_INSTANTIATE
 } // namespace dealmpm

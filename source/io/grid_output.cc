@@ -156,14 +156,12 @@ namespace dealmpm
                         grid.comm);
   }
 
-  template std::string
-  write_grid_output(const BackgroundGrid<2> &,
-                    const NodalFields<2> &,
-                    const std::string &,
-                    unsigned int);
-  template std::string
-  write_grid_output(const BackgroundGrid<3> &,
-                    const NodalFields<3> &,
-                    const std::string &,
-                    unsigned int);
+#define DEALMPM_INSTANTIATE(dim)                                      \
+  template std::string write_grid_output(const BackgroundGrid<dim> &, \
+                                         const NodalFields<dim> &,    \
+                                         const std::string &,         \
+                                         unsigned int);
+  DEALMPM_INSTANTIATE(2)
+  DEALMPM_INSTANTIATE(3)
+#undef DEALMPM_INSTANTIATE
 } // namespace dealmpm

@@ -53,8 +53,11 @@ namespace dealmpm
     out.commit();
   }
 
-  template void
-  write_particle_csv(const ParticleSet<2> &, const std::string &, MPI_Comm);
-  template void
-  write_particle_csv(const ParticleSet<3> &, const std::string &, MPI_Comm);
+#define DEALMPM_INSTANTIATE(dim)                             \
+  template void write_particle_csv(const ParticleSet<dim> &, \
+                                   const std::string &,      \
+                                   MPI_Comm);
+  DEALMPM_INSTANTIATE(2)
+  DEALMPM_INSTANTIATE(3)
+#undef DEALMPM_INSTANTIATE
 } // namespace dealmpm

@@ -57,8 +57,9 @@ namespace dealmpm
     return registry;
   }
 
-  template Registry<Material<2>> &
-  material_registry<2>();
-  template Registry<Material<3>> &
-  material_registry<3>();
+#define DEALMPM_INSTANTIATE(dim) \
+  template Registry<Material<dim>> &material_registry<dim>();
+  DEALMPM_INSTANTIATE(2)
+  DEALMPM_INSTANTIATE(3)
+#undef DEALMPM_INSTANTIATE
 } // namespace dealmpm

@@ -49,12 +49,12 @@ namespace dealmpm
     return read;
   }
 
-  template void
-  declare_material_sections<2>(ParameterHandler &, unsigned int);
-  template void
-  declare_material_sections<3>(ParameterHandler &, unsigned int);
-  template MaterialSections<2>
-  read_material_sections<2>(SceneReader &, unsigned int);
-  template MaterialSections<3>
-  read_material_sections<3>(SceneReader &, unsigned int);
+#define DEALMPM_INSTANTIATE(dim)                                            \
+  template void declare_material_sections<dim>(ParameterHandler &,          \
+                                               unsigned int);               \
+  template MaterialSections<dim> read_material_sections<dim>(SceneReader &, \
+                                                             unsigned int);
+  DEALMPM_INSTANTIATE(2)
+  DEALMPM_INSTANTIATE(3)
+#undef DEALMPM_INSTANTIATE
 } // namespace dealmpm

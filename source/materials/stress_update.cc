@@ -28,12 +28,12 @@ namespace dealmpm
     return check;
   }
 
-  template ParticleCheck<2>
-  check_particles(const BackgroundGrid<2> &,
-                  const std::vector<std::unique_ptr<Material<2>>> &,
-                  const ParticleSet<2> &);
-  template ParticleCheck<3>
-  check_particles(const BackgroundGrid<3> &,
-                  const std::vector<std::unique_ptr<Material<3>>> &,
-                  const ParticleSet<3> &);
+#define DEALMPM_INSTANTIATE(dim)                         \
+  template ParticleCheck<dim> check_particles(           \
+    const BackgroundGrid<dim> &,                         \
+    const std::vector<std::unique_ptr<Material<dim>>> &, \
+    const ParticleSet<dim> &);
+  DEALMPM_INSTANTIATE(2)
+  DEALMPM_INSTANTIATE(3)
+#undef DEALMPM_INSTANTIATE
 } // namespace dealmpm

@@ -68,18 +68,14 @@ namespace dealmpm
     particles.handler.update_cached_numbers();
   }
 
-  template void
-  fill_bodies(SceneReader &,
-              const std::vector<Body<2>> &,
-              const std::vector<double> &,
-              const std::vector<std::vector<double>> &,
-              const BackgroundGrid<2> &,
-              ParticleSet<2> &);
-  template void
-  fill_bodies(SceneReader &,
-              const std::vector<Body<3>> &,
-              const std::vector<double> &,
-              const std::vector<std::vector<double>> &,
-              const BackgroundGrid<3> &,
-              ParticleSet<3> &);
+#define DEALMPM_INSTANTIATE(dim)                                      \
+  template void fill_bodies(SceneReader &,                            \
+                            const std::vector<Body<dim>> &,           \
+                            const std::vector<double> &,              \
+                            const std::vector<std::vector<double>> &, \
+                            const BackgroundGrid<dim> &,              \
+                            ParticleSet<dim> &);
+  DEALMPM_INSTANTIATE(2)
+  DEALMPM_INSTANTIATE(3)
+#undef DEALMPM_INSTANTIATE
 } // namespace dealmpm

@@ -199,20 +199,16 @@ namespace dealmpm
     return filler.result;
   }
 
-  template GeneratedParticles
-  generate_particles(const std::vector<Body<2>> &,
-                     unsigned int,
-                     double,
-                     const BackgroundGrid<2> &,
-                     ParticleSet<2> &,
-                     const std::vector<double> &,
-                     unsigned int);
-  template GeneratedParticles
-  generate_particles(const std::vector<Body<3>> &,
-                     unsigned int,
-                     double,
-                     const BackgroundGrid<3> &,
-                     ParticleSet<3> &,
-                     const std::vector<double> &,
-                     unsigned int);
+#define DEALMPM_INSTANTIATE(dim)                  \
+  template GeneratedParticles generate_particles( \
+    const std::vector<Body<dim>> &,               \
+    unsigned int,                                 \
+    double,                                       \
+    const BackgroundGrid<dim> &,                  \
+    ParticleSet<dim> &,                           \
+    const std::vector<double> &,                  \
+    unsigned int);
+  DEALMPM_INSTANTIATE(2)
+  DEALMPM_INSTANTIATE(3)
+#undef DEALMPM_INSTANTIATE
 } // namespace dealmpm

@@ -206,6 +206,9 @@ namespace dealmpm
     }
   } // namespace stages
 
-  template std::vector<Stage<2>> stages_of(UpdateScheme);
-  template std::vector<Stage<3>> stages_of(UpdateScheme);
+#define DEALMPM_INSTANTIATE(dim) \
+  template std::vector<Stage<dim>> stages_of(UpdateScheme);
+  DEALMPM_INSTANTIATE(2)
+  DEALMPM_INSTANTIATE(3)
+#undef DEALMPM_INSTANTIATE
 } // namespace dealmpm

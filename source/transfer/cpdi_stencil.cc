@@ -241,12 +241,11 @@ namespace dealmpm
       compute<dim, false>(grid, particles, stencil);
   }
 
-  template void
-  compute_cpdi_stencil(const BackgroundGrid<2> &,
-                       const ParticleSet<2> &,
-                       Stencil<2> &);
-  template void
-  compute_cpdi_stencil(const BackgroundGrid<3> &,
-                       const ParticleSet<3> &,
-                       Stencil<3> &);
+#define DEALMPM_INSTANTIATE(dim)                                  \
+  template void compute_cpdi_stencil(const BackgroundGrid<dim> &, \
+                                     const ParticleSet<dim> &,    \
+                                     Stencil<dim> &);
+  DEALMPM_INSTANTIATE(2)
+  DEALMPM_INSTANTIATE(3)
+#undef DEALMPM_INSTANTIATE
 } // namespace dealmpm

@@ -123,14 +123,12 @@ namespace dealmpm
     AssertThrow(n_visited == n_local, ExcInternalError());
   }
 
-  template void
-  compute_gimp_stencil(const BackgroundGrid<2> &,
-                       const ParticleSet<2> &,
-                       bool,
-                       Stencil<2> &);
-  template void
-  compute_gimp_stencil(const BackgroundGrid<3> &,
-                       const ParticleSet<3> &,
-                       bool,
-                       Stencil<3> &);
+#define DEALMPM_INSTANTIATE(dim)                                  \
+  template void compute_gimp_stencil(const BackgroundGrid<dim> &, \
+                                     const ParticleSet<dim> &,    \
+                                     bool,                        \
+                                     Stencil<dim> &);
+  DEALMPM_INSTANTIATE(2)
+  DEALMPM_INSTANTIATE(3)
+#undef DEALMPM_INSTANTIATE
 } // namespace dealmpm

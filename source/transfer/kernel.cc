@@ -192,8 +192,9 @@ namespace dealmpm
 
   template class Kernel<2>;
   template class Kernel<3>;
-  template ShapeFunctionRegistry<2> &
-  shape_function_registry();
-  template ShapeFunctionRegistry<3> &
-  shape_function_registry();
+#define DEALMPM_INSTANTIATE(dim) \
+  template ShapeFunctionRegistry<dim> &shape_function_registry();
+  DEALMPM_INSTANTIATE(2)
+  DEALMPM_INSTANTIATE(3)
+#undef DEALMPM_INSTANTIATE
 } // namespace dealmpm

@@ -85,20 +85,14 @@ namespace dealmpm
     for_each_particle_in_stencil_order(grid, particles.handler, record);
   }
 
-  template void
-  record_positions(const BackgroundGrid<2> &,
-                   const ParticleSet<2> &,
-                   Stencil<2> &);
-  template void
-  record_positions(const BackgroundGrid<3> &,
-                   const ParticleSet<3> &,
-                   Stencil<3> &);
-  template void
-  compute_linear_stencil(const BackgroundGrid<2> &,
-                         const ParticleSet<2> &,
-                         Stencil<2> &);
-  template void
-  compute_linear_stencil(const BackgroundGrid<3> &,
-                         const ParticleSet<3> &,
-                         Stencil<3> &);
+#define DEALMPM_INSTANTIATE(dim)                                    \
+  template void record_positions(const BackgroundGrid<dim> &,       \
+                                 const ParticleSet<dim> &,          \
+                                 Stencil<dim> &);                   \
+  template void compute_linear_stencil(const BackgroundGrid<dim> &, \
+                                       const ParticleSet<dim> &,    \
+                                       Stencil<dim> &);
+  DEALMPM_INSTANTIATE(2)
+  DEALMPM_INSTANTIATE(3)
+#undef DEALMPM_INSTANTIATE
 } // namespace dealmpm

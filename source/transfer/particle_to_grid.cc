@@ -127,18 +127,14 @@ namespace dealmpm
         fields.force[d].compress(VectorOperation::add);
   }
 
-  template void
-  particle_to_grid(const BackgroundGrid<2> &,
-                   const ParticleSet<2> &,
-                   const Stencil<2> &,
-                   NodalFields<2> &,
-                   bool,
-                   bool);
-  template void
-  particle_to_grid(const BackgroundGrid<3> &,
-                   const ParticleSet<3> &,
-                   const Stencil<3> &,
-                   NodalFields<3> &,
-                   bool,
-                   bool);
+#define DEALMPM_INSTANTIATE(dim)                              \
+  template void particle_to_grid(const BackgroundGrid<dim> &, \
+                                 const ParticleSet<dim> &,    \
+                                 const Stencil<dim> &,        \
+                                 NodalFields<dim> &,          \
+                                 bool,                        \
+                                 bool);
+  DEALMPM_INSTANTIATE(2)
+  DEALMPM_INSTANTIATE(3)
+#undef DEALMPM_INSTANTIATE
 } // namespace dealmpm

@@ -212,14 +212,12 @@ namespace dealmpm
 
   template struct QuadraticBSplineGrid<2>;
   template struct QuadraticBSplineGrid<3>;
-  template void
-  compute_bspline_stencil(const BackgroundGrid<2> &,
-                          const QuadraticBSplineGrid<2> &,
-                          const ParticleSet<2> &,
-                          Stencil<2> &);
-  template void
-  compute_bspline_stencil(const BackgroundGrid<3> &,
-                          const QuadraticBSplineGrid<3> &,
-                          const ParticleSet<3> &,
-                          Stencil<3> &);
+#define DEALMPM_INSTANTIATE(dim)                                           \
+  template void compute_bspline_stencil(const BackgroundGrid<dim> &,       \
+                                        const QuadraticBSplineGrid<dim> &, \
+                                        const ParticleSet<dim> &,          \
+                                        Stencil<dim> &);
+  DEALMPM_INSTANTIATE(2)
+  DEALMPM_INSTANTIATE(3)
+#undef DEALMPM_INSTANTIATE
 } // namespace dealmpm
