@@ -169,9 +169,8 @@ namespace dealmpm
     const RunSettings       &s = run_settings;
     const StopSignalHandlers signal_handlers;
     const Statistics         initial = statistics();
-    const unsigned int       n_removed =
-      output_writer.open(scene_file, initial.has_error);
-    Progress progress(std::cout,
+    const unsigned int n_removed     = output_writer.open(scene_file, initial);
+    Progress           progress(std::cout,
                       s.output.progress_interval,
                       Utilities::MPI::this_mpi_process(comm) == 0 &&
                         s.output.verbose);

@@ -21,8 +21,11 @@ namespace dealmpm
         exact = effect.get();
     double            squared_error = 0, volume = 0, max_error = 0;
     const CoreFields &f = particles.fields;
-    // n, mass, momentum (3), kinetic, strain, gravitational
-    std::array<double, 8> sums{};
+    // n, mass, momentum (3), kinetic, strain, gravitational, plastic work
+    std::array<double, 9> sums{};
+    bool                  dissipates = false;
+    for (const auto &material : materials)
+      dissipates = dissipates || material->dissipates();
     for (const auto &p : particles.handler)
       {
         const auto           props = p.get_properties();
@@ -41,6 +44,12 @@ namespace dealmpm
             read_symmetric<dim>(&props[f.stress]),
             ArrayView<const double>(&props[0] + particles.internal_offset[mat],
                                     particles.n_internal[mat]));
+        if (dissipates)
+          sums[8] += props[f.initial_volume] *
+                     materials[mat]->dissipated_energy_density(
+                       ArrayView<const double>(&props[0] +
+                                                 particles.internal_offset[mat],
+                                               particles.n_internal[mat]));
         for (const auto &effect : effects)
           sums[7] += effect->potential_energy(m, p.get_location());
         if (exact != nullptr)
@@ -64,6 +73,8 @@ namespace dealmpm
     s.kinetic_energy       = sums[5];
     s.strain_energy        = sums[6];
     s.gravitational_energy = sums[7];
+    s.has_plastic_work     = dissipates;
+    s.plastic_work         = sums[8];
     if (exact != nullptr)
       {
         s.has_error = true;
@@ -94,15 +105,18 @@ namespace dealmpm
           initial_velocity[static_cast<unsigned int>(props[f.body])];
         const Point<dim> x = p.get_location();
         const Point<dim> X = x - read_vector<dim>(&props[f.displacement]);
-        double           gain =
-          0.5 * m * (v.norm_square() - v0.norm_square()) +
-          props[f.initial_volume] *
-            materials[mat]->strain_energy_density(
-              read_tensor<dim>(&props[f.deformation_gradient]),
-              read_symmetric<dim>(&props[f.stress]),
-              ArrayView<const double>(&props[0] +
-                                        particles.internal_offset[mat],
-                                      particles.n_internal[mat]));
+        const ArrayView<const double> internal(&props[0] +
+                                                 particles.internal_offset[mat],
+                                               particles.n_internal[mat]);
+        // The plastic work counts as the particle's: the balance closes
+        // with it.
+        double gain = 0.5 * m * (v.norm_square() - v0.norm_square()) +
+                      props[f.initial_volume] *
+                        (materials[mat]->strain_energy_density(
+                           read_tensor<dim>(&props[f.deformation_gradient]),
+                           read_symmetric<dim>(&props[f.stress]),
+                           internal) +
+                         materials[mat]->dissipated_energy_density(internal));
         for (const auto &effect : effects)
           gain +=
             effect->potential_energy(m, x) - effect->potential_energy(m, X);

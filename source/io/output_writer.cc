@@ -22,7 +22,8 @@ namespace dealmpm
 
   template <int dim>
   unsigned int
-  OutputWriter<dim>::open(const std::string &scene_file, const bool errors)
+  OutputWriter<dim>::open(const std::string &scene_file,
+                          const Statistics  &first)
   {
     // Every rank learns whether rank 0 could make the folder: a rank that
     // throws alone would leave the others waiting. The broadcast also keeps
@@ -44,7 +45,7 @@ namespace dealmpm
               statistics_file =
                 std::make_unique<StatisticsFile>(dir + "/statistics.csv",
                                                  dim,
-                                                 errors);
+                                                 first);
             }
           catch (const OutputError &e)
             {

@@ -12,10 +12,11 @@ namespace dealmpm
 {
   StatisticsFile::StatisticsFile(const std::string &path,
                                  const unsigned int dim,
-                                 const bool         errors)
+                                 const Statistics  &first)
     : path(path)
     , dim(dim)
-    , errors(errors)
+    , errors(first.has_error)
+    , plastic_work(first.has_plastic_work)
   {
     fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
     if (fd < 0)
@@ -23,8 +24,11 @@ namespace dealmpm
     std::string header = "step,time,dt,n_particles,mass,momentum_x,momentum_y";
     if (dim == 3)
       header += ",momentum_z";
+    header += ",kinetic_energy,strain_energy,gravitational_energy";
+    if (plastic_work)
+      header += ",plastic_work";
     header +=
-      ",kinetic_energy,strain_energy,gravitational_energy,total_energy,"
+      ",total_energy,"
       "external_work,energy_drift,momentum_drift,mass_loss,min_J,max_cfl,"
       "lost_particles,wall_time";
     if (errors)
@@ -77,10 +81,13 @@ namespace dealmpm
     for (unsigned int d = 0; d < dim; ++d)
       out << ',' << s.momentum[d];
     out << ',' << s.kinetic_energy << ',' << s.strain_energy << ','
-        << s.gravitational_energy << ',' << s.total_energy() << ','
-        << external_work << ',' << a.energy_drift << ',' << a.momentum_drift
-        << ',' << a.mass_loss << ',' << a.min_J << ',' << a.max_cfl << ','
-        << n_lost_particles << ',' << wall_time;
+        << s.gravitational_energy;
+    if (plastic_work)
+      out << ',' << s.plastic_work;
+    out << ',' << s.total_energy() << ',' << external_work << ','
+        << a.energy_drift << ',' << a.momentum_drift << ',' << a.mass_loss
+        << ',' << a.min_J << ',' << a.max_cfl << ',' << n_lost_particles << ','
+        << wall_time;
     if (errors)
       out << ',' << s.error_L2 << ',' << s.error_max;
     out << '\n';

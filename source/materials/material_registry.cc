@@ -1,4 +1,6 @@
 #include <dealmpm/base/errors.h>
+#include <dealmpm/materials/j2_plasticity.h>
+#include <dealmpm/materials/johnson_cook.h>
 #include <dealmpm/materials/linear_elastic.h>
 #include <dealmpm/materials/neo_hookean.h>
 
@@ -27,6 +29,112 @@ namespace dealmpm
     return {E * nu / ((1. + nu) * (1. - 2. * nu)), E / (2. * (1. + nu))};
   }
 
+  namespace
+  {
+    void
+    declare_j2_parameters(ParameterHandler &prm)
+    {
+      declare_elastic_constants(prm, 200e9, 0.3);
+      prm.declare_entry("Yield stress",
+                        "250e6",
+                        Patterns::Double(),
+                        "Initial yield stress sigma_y0 (Pa), > 0.");
+      prm.declare_entry("Hardening modulus",
+                        "0",
+                        Patterns::Double(),
+                        "Linear hardening modulus H (Pa), >= 0.");
+      prm.declare_entry("Hardening coefficient",
+                        "0",
+                        Patterns::Double(),
+                        "Power-law hardening coefficient B (Pa), >= 0.");
+      prm.declare_entry("Hardening exponent",
+                        "1",
+                        Patterns::Double(),
+                        "Power-law hardening exponent n, in (0, 1].");
+    }
+
+    IsotropicHardening
+    read_j2_hardening(SceneReader &reader)
+    {
+      IsotropicHardening h;
+      h.yield_stress = reader.get_positive("Yield stress");
+      h.modulus      = reader.get_nonnegative("Hardening modulus");
+      h.coefficient  = reader.get_nonnegative("Hardening coefficient");
+      h.exponent     = reader.get_positive("Hardening exponent");
+      if (h.exponent > 1)
+        reader.fail("Hardening exponent", "a number in (0, 1]");
+      return h;
+    }
+
+    /** The Johnson-Cook entries: name, default, documentation. */
+    struct JohnsonCookEntry
+    {
+      const char *name;
+      double JohnsonCookParameters::*member;
+      const char                    *documentation;
+    };
+    const JohnsonCookEntry johnson_cook_entries[] = {
+      {"A", &JohnsonCookParameters::A, "Yield stress A (Pa), > 0."},
+      {"B", &JohnsonCookParameters::B, "Hardening coefficient B (Pa), >= 0."},
+      {"n", &JohnsonCookParameters::n, "Hardening exponent n, in (0, 1]."},
+      {"C", &JohnsonCookParameters::C, "Strain-rate coefficient C, >= 0."},
+      {"Reference strain rate",
+       &JohnsonCookParameters::reference_rate,
+       "Reference equivalent plastic strain rate (1/s), > 0."},
+      {"m", &JohnsonCookParameters::m, "Thermal softening exponent m, > 0."},
+      {"Room temperature",
+       &JohnsonCookParameters::room_temperature,
+       "Room (and initial) temperature (K), > 0."},
+      {"Melting temperature",
+       &JohnsonCookParameters::melting_temperature,
+       "Melting temperature (K), > Room temperature."},
+      {"Specific heat",
+       &JohnsonCookParameters::specific_heat,
+       "Specific heat c_p (J/(kg K)), > 0."},
+      {"Taylor-Quinney coefficient",
+       &JohnsonCookParameters::taylor_quinney,
+       "Fraction of the plastic work that heats the material, in [0, 1]; "
+       "0: no heating."}};
+
+    void
+    declare_johnson_cook_parameters(ParameterHandler &prm)
+    {
+      // OFHC copper (Johnson and Cook 1983).
+      declare_elastic_constants(prm, 124e9, 0.34);
+      const JohnsonCookParameters copper;
+      for (const auto &e : johnson_cook_entries)
+        prm.declare_entry(e.name,
+                          Utilities::to_string(copper.*(e.member)),
+                          Patterns::Double(),
+                          e.documentation);
+    }
+
+    JohnsonCookParameters
+    read_johnson_cook(SceneReader &reader)
+    {
+      JohnsonCookParameters jc;
+      for (const auto &e : johnson_cook_entries)
+        jc.*(e.member) = reader.get_double(e.name);
+      for (const char *positive : {"A",
+                                   "Reference strain rate",
+                                   "m",
+                                   "Room temperature",
+                                   "Specific heat"})
+        reader.get_positive(positive);
+      for (const char *nonnegative : {"B", "C"})
+        reader.get_nonnegative(nonnegative);
+      if (!(jc.n > 0 && jc.n <= 1))
+        reader.fail("n", "a number in (0, 1]");
+      if (!(jc.melting_temperature > jc.room_temperature))
+        reader.fail("Melting temperature",
+                    "a number above Room temperature (" +
+                      Utilities::to_string(jc.room_temperature) + ")");
+      if (!(jc.taylor_quinney >= 0 && jc.taylor_quinney <= 1))
+        reader.fail("Taylor-Quinney coefficient", "a number in [0, 1]");
+      return jc;
+    }
+  } // namespace
+
   template <int dim>
   Registry<Material<dim>> &
   material_registry()
@@ -51,6 +159,30 @@ namespace dealmpm
             [](SceneReader &reader) -> std::unique_ptr<Material<dim>> {
               return std::make_unique<NeoHookean<dim>>(
                 read_elastic_constants(reader));
+            });
+      r.add("J2 plasticity",
+            "finite-strain von Mises plasticity (Simo 1992): Hencky "
+            "elasticity in the logarithmic elastic strain, radial return, "
+            "isotropic hardening sigma_y = Yield stress + Hardening modulus "
+            "alpha + Hardening coefficient alpha^Hardening exponent (Young's "
+            "modulus, Poisson's ratio, Yield stress, Hardening modulus, "
+            "Hardening coefficient, Hardening exponent).",
+            declare_j2_parameters,
+            [](SceneReader &reader) -> std::unique_ptr<Material<dim>> {
+              const LameParameters lame = read_elastic_constants(reader);
+              return std::make_unique<J2Plasticity<dim>>(
+                lame, read_j2_hardening(reader));
+            });
+      r.add("Johnson-Cook",
+            "J2 plasticity with Johnson and Cook's flow stress (A + B "
+            "alpha^n)(1 + C ln(rate / reference))(1 - T*^m) and adiabatic "
+            "heating (temperature an internal variable); defaults: OFHC "
+            "copper.",
+            declare_johnson_cook_parameters,
+            [](SceneReader &reader) -> std::unique_ptr<Material<dim>> {
+              const LameParameters lame = read_elastic_constants(reader);
+              return std::make_unique<JohnsonCook<dim>>(
+                lame, read_johnson_cook(reader));
             });
       return r;
     }();

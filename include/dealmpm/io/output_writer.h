@@ -29,12 +29,12 @@ namespace dealmpm
     OutputWriter(const OutputSettings &settings, const MPI_Comm comm);
 
     /** Make the folder, remove an earlier run's files and start
-     * statistics.csv (@p errors: with the error columns). Collective;
+     * statistics.csv (its columns from the @p first statistics). Collective;
      * throws InputError naming @p scene_file when the folder cannot be
      * made, OutputError on every rank when a file cannot be written.
      * Returns the number of files removed (rank 0). */
     unsigned int
-    open(const std::string &scene_file, const bool errors);
+    open(const std::string &scene_file, const Statistics &first);
 
     /** The parts of a run an output shows. */
     struct Scene

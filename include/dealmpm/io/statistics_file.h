@@ -17,11 +17,12 @@ namespace dealmpm
   class StatisticsFile
   {
   public:
-    /** Create the file with its header. @p errors: add error_L2,error_max
-     * (scenes with an exact solution). */
+    /** Create the file with its header. The columns that not every scene
+     * has come with the first statistics: plastic_work (a material
+     * dissipates), error_L2,error_max (an exact solution). */
     StatisticsFile(const std::string &path,
                    const unsigned int dim,
-                   const bool         errors);
+                   const Statistics  &first);
 
     ~StatisticsFile();
 
@@ -48,5 +49,6 @@ namespace dealmpm
     std::size_t  size = 0; ///< bytes of complete rows so far
     unsigned int dim;
     bool         errors;
+    bool         plastic_work;
   };
 } // namespace dealmpm

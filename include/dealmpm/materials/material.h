@@ -74,6 +74,24 @@ namespace dealmpm
                           const SymmetricTensor<2, dim> &stress,
                           ArrayView<const double>        internal) const = 0;
 
+    /**
+     * Work dissipated so far (plastic work) per unit reference volume, for
+     * the energy balance; only models for which dissipates() is true.
+     */
+    virtual double
+    dissipated_energy_density(ArrayView<const double> /*internal*/) const
+    {
+      return 0;
+    }
+
+    /** Whether the model dissipates work (the statistics then have a
+     * plastic_work column). */
+    virtual bool
+    dissipates() const
+    {
+      return false;
+    }
+
     /** Reference mass density, set from the scene's material section. */
     double density = 0;
   };

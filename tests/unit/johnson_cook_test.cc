@@ -1,0 +1,105 @@
+// Johnson-Cook without a grid: the quasi-static curve, the rate factor, the
+// adiabatic temperature rise and thermal softening, each against the flow
+// stress formula (A + B alpha^n)(1 + C ln(rate / rate_0))(1 - T*^m).
+#include <dealmpm/materials/johnson_cook.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "material_point.h"
+
+using namespace dealmpm;
+
+namespace
+{
+  const LameParameters copper_lame = {124e9 * 0.34 / (1.34 * (1 - 0.68)),
+                                      124e9 / 2.68};
+
+  using CopperPoint = test::MaterialPoint<3, JohnsonCook<3>>;
+
+  double
+  alpha(const CopperPoint &p)
+  {
+    return p.internal[J2Plasticity<3>::n_inverse_plastic];
+  }
+
+  double
+  temperature(const CopperPoint &p)
+  {
+    return p.model.temperature(p.state());
+  }
+
+  /** Copper's constants with or without heating. */
+  JohnsonCookParameters
+  copper(const double taylor_quinney)
+  {
+    JohnsonCookParameters jc;
+    jc.taylor_quinney = taylor_quinney;
+    return jc;
+  }
+} // namespace
+
+// Loaded slowly (plastic rate below the reference rate) and without heating,
+// the flow stress is A + B alpha^n after every return, up to 20 % strain.
+TEST(JohnsonCook, QuasiStaticCurve)
+{
+  CopperPoint p(copper_lame, copper(0));
+  p.model.density = 8960;
+  for (unsigned int s = 1; s <= 200; ++s)
+    {
+      const double eps = 0.2 * s / 200;
+      p.deform(test::stretch_x<3>(eps), /*dt=*/10.);
+      if (alpha(p) == 0)
+        continue;
+      const double q = test::von_mises(p.kirchhoff(test::stretch_x<3>(eps)));
+      ASSERT_NEAR(q, 90e6 + 292e6 * std::pow(alpha(p), 0.31), 1e-9 * q)
+        << "step " << s;
+    }
+  EXPECT_GT(alpha(p), 0.12); // eps minus the elastic part, times 2/3
+  EXPECT_EQ(temperature(p), 298);
+}
+
+// One fast step from the virgin state: the return lands on the rate-
+// dependent surface at the rate d_gamma / dt it produced, and that stress is
+// above the quasi-static one by the factor 1 + C ln(rate).
+TEST(JohnsonCook, RateFactor)
+{
+  const double dt = 1e-6;
+  CopperPoint  p(copper_lame, copper(0));
+  p.model.density = 8960;
+  p.deform(test::stretch_x<3>(0.05), dt);
+  const double rate = alpha(p) / dt;
+  ASSERT_GT(rate, 1e4);
+  const double static_stress = 90e6 + 292e6 * std::pow(alpha(p), 0.31);
+  const double q = test::von_mises(p.kirchhoff(test::stretch_x<3>(0.05)));
+  EXPECT_NEAR(q, static_stress * (1 + 0.025 * std::log(rate)), 1e-9 * q);
+  EXPECT_GT(q, 1.2 * static_stress);
+}
+
+// With heating, the temperature rises by chi times the plastic work over
+// rho c_p, and the flow stress is softened by 1 - T*^m at the temperature
+// each step started from.
+TEST(JohnsonCook, AdiabaticHeatingSoftens)
+{
+  CopperPoint hot(copper_lame, copper(0.9)), cold(copper_lame, copper(0));
+  hot.model.density = cold.model.density = 8960;
+  double start_temperature               = 298;
+  for (unsigned int s = 1; s <= 100; ++s)
+    {
+      const double eps  = 1.0 * s / 100;
+      start_temperature = temperature(hot);
+      hot.deform(test::stretch_x<3>(eps), 10.);
+      cold.deform(test::stretch_x<3>(eps), 10.);
+    }
+  const double work = hot.model.dissipated_energy_density(hot.state());
+  EXPECT_NEAR(temperature(hot), 298 + 0.9 * work / (8960 * 383), 1e-9);
+  EXPECT_GT(temperature(hot), 320);
+  const double homologous = (start_temperature - 298) / (1356 - 298);
+  const double q = test::von_mises(hot.kirchhoff(test::stretch_x<3>(1.0)));
+  EXPECT_NEAR(q,
+              (90e6 + 292e6 * std::pow(alpha(hot), 0.31)) *
+                (1 - std::pow(homologous, 1.09)),
+              1e-9 * q);
+  EXPECT_LT(q, test::von_mises(cold.kirchhoff(test::stretch_x<3>(1.0))));
+}
