@@ -1,4 +1,3 @@
-#include <dealmpm/materials/hencky.h>
 #include <dealmpm/materials/j2_plasticity.h>
 
 #include <cmath>
@@ -25,10 +24,6 @@ namespace dealmpm
 
   namespace
   {
-    /** Where each stored component of C_p^-1 sits in the 3 x 3 tensor. */
-    constexpr unsigned int stored_row[6] = {0, 1, 2, 0, 0, 1};
-    constexpr unsigned int stored_col[6] = {0, 1, 2, 1, 2, 2};
-
     /**
      * The plastic multiplier d_gamma of the radial return:
      * q_trial - 3 G d_gamma = flow(d_gamma)[0]. Newton's method kept inside
@@ -61,98 +56,37 @@ namespace dealmpm
   template <int dim>
   J2Plasticity<dim>::J2Plasticity(const LameParameters     &lame,
                                   const IsotropicHardening &hardening)
-    : hardening(hardening)
-    , bulk_modulus(lame.lambda + 2. / 3. * lame.mu)
-    , shear_modulus(lame.mu)
+    : HenckyPlasticity<dim>(lame)
+    , hardening(hardening)
   {}
 
   template <int dim>
-  std::vector<FieldDescription>
-  J2Plasticity<dim>::internal_variables() const
+  double
+  J2Plasticity<dim>::return_to_surface(std::array<double, 3> &strain,
+                                       const double           dt,
+                                       ArrayView<double>      internal) const
   {
-    std::vector<FieldDescription> fields = {{"inverse_plastic_cauchy_green",
-                                             n_inverse_plastic},
-                                            {"plastic_strain", 1},
-                                            {"plastic_work", 1}};
-    if (dim == 2)
-      fields.push_back({"stress_zz", 1});
-    return fields;
-  }
-
-  template <int dim>
-  void
-  J2Plasticity<dim>::initialize_internal_variables(
-    ArrayView<double> internal) const
-  {
-    for (unsigned int c = 0; c < internal.size(); ++c)
-      internal[c] = c < 3 ? 1. : 0.;
-  }
-
-  template <int dim>
-  void
-  J2Plasticity<dim>::update_stress(const Tensor<2, dim> &,
-                                   const Tensor<2, dim>    &F,
-                                   const double             dt,
-                                   SymmetricTensor<2, dim> &stress,
-                                   ArrayView<double>        internal) const
-  {
-    const Tensor<2, 3>    F3 = embed_deformation<dim>(F);
-    SymmetricTensor<2, 3> inverse_plastic;
-    for (unsigned int c = 0; c < n_inverse_plastic; ++c)
-      inverse_plastic[stored_row[c]][stored_col[c]] = internal[c];
-    const PrincipalStrain trial = principal_log_strain(
-      symmetrize(F3 * Tensor<2, 3>(inverse_plastic) * transpose(F3)));
-
-    // Radial return of the Kirchhoff deviator 2 G dev(eps).
-    const double volumetric =
-      trial.strain[0] + trial.strain[1] + trial.strain[2];
-    std::array<double, 3> deviator;
-    double                norm = 0;
+    const double volumetric = strain[0] + strain[1] + strain[2];
+    double       norm       = 0;
     for (unsigned int a = 0; a < 3; ++a)
-      {
-        deviator[a] = trial.strain[a] - volumetric / 3.;
-        norm += deviator[a] * deviator[a];
-      }
-    const double                  G       = shear_modulus;
+      norm += std::pow(strain[a] - volumetric / 3., 2);
+    const double                  G       = this->shear_modulus;
     const double                  q_trial = 2. * G * std::sqrt(1.5 * norm);
-    double                       &alpha   = internal[n_inverse_plastic];
-    double                        scale   = 1;
+    const double                  alpha   = this->plastic_strain(internal);
     const ArrayView<const double> state(internal.data(), internal.size());
-    if (q_trial > flow_stress(alpha, 0, dt, state)[0])
-      {
-        const double d_gamma =
-          plastic_multiplier(q_trial, G, [&](const double g) {
-            return flow_stress(alpha, g, dt, state);
-          });
-        const double flow = flow_stress(alpha, d_gamma, dt, state)[0];
-        scale             = 1. - 3. * G * d_gamma / q_trial;
-        alpha += d_gamma;
-        internal[n_inverse_plastic + 1] += flow * d_gamma;
-        after_plastic_step(d_gamma, flow, internal);
-      }
-
-    // Kirchhoff stress and the new elastic b_e on the trial directions.
-    std::array<double, 3> tau, b_elastic;
+    if (!(q_trial > flow_stress(alpha, 0, dt, state)[0]))
+      return 0;
+    const double d_gamma = plastic_multiplier(q_trial, G, [&](const double g) {
+      return flow_stress(alpha, g, dt, state);
+    });
+    // Radial return: the deviator shrinks, the volume stays elastic.
+    const double scale = 1. - 3. * G * d_gamma / q_trial;
     for (unsigned int a = 0; a < 3; ++a)
-      {
-        const double strain = scale * deviator[a] + volumetric / 3.;
-        tau[a]       = bulk_modulus * volumetric + 2. * G * scale * deviator[a];
-        b_elastic[a] = std::exp(2. * strain);
-      }
-    const Tensor<2, 3> F_inverse = invert(F3);
-    inverse_plastic              = symmetrize(
-      F_inverse * Tensor<2, 3>(from_principal(b_elastic, trial.direction)) *
-      transpose(F_inverse));
-    for (unsigned int c = 0; c < n_inverse_plastic; ++c)
-      internal[c] = inverse_plastic[stored_row[c]][stored_col[c]];
-
-    const SymmetricTensor<2, 3> sigma =
-      from_principal(tau, trial.direction) / determinant(F3);
-    for (unsigned int i = 0; i < dim; ++i)
-      for (unsigned int j = i; j < dim; ++j)
-        stress[i][j] = sigma[i][j];
-    if constexpr (dim == 2)
-      internal[n_inverse_plastic + 2] = sigma[2][2];
+      strain[a] = scale * (strain[a] - volumetric / 3.) + volumetric / 3.;
+    after_plastic_step(d_gamma,
+                       flow_stress(alpha, d_gamma, dt, state)[0],
+                       internal);
+    return d_gamma;
   }
 
   template <int dim>
@@ -164,51 +98,6 @@ namespace dealmpm
   {
     return {{hardening.flow_stress(alpha + d_gamma),
              hardening.slope(alpha + d_gamma)}};
-  }
-
-  template <int dim>
-  double
-  J2Plasticity<dim>::wave_speed(const Tensor<2, dim> &) const
-  {
-    return std::sqrt((bulk_modulus + 4. / 3. * shear_modulus) / this->density);
-  }
-
-  template <int dim>
-  double
-  J2Plasticity<dim>::out_of_plane_stress(const Tensor<2, dim> &,
-                                         const SymmetricTensor<2, dim> &,
-                                         ArrayView<const double> internal) const
-  {
-    return dim == 2 ? internal[n_inverse_plastic + 2] : 0.;
-  }
-
-  template <int dim>
-  double
-  J2Plasticity<dim>::strain_energy_density(
-    const Tensor<2, dim> &F,
-    const SymmetricTensor<2, dim> &,
-    ArrayView<const double> internal) const
-  {
-    const Tensor<2, 3>    F3 = embed_deformation<dim>(F);
-    SymmetricTensor<2, 3> inverse_plastic;
-    for (unsigned int c = 0; c < n_inverse_plastic; ++c)
-      inverse_plastic[stored_row[c]][stored_col[c]] = internal[c];
-    const PrincipalStrain e = principal_log_strain(
-      symmetrize(F3 * Tensor<2, 3>(inverse_plastic) * transpose(F3)));
-    const double volumetric = e.strain[0] + e.strain[1] + e.strain[2];
-    double       deviatoric = 0;
-    for (unsigned int a = 0; a < 3; ++a)
-      deviatoric += std::pow(e.strain[a] - volumetric / 3., 2);
-    return 0.5 * bulk_modulus * volumetric * volumetric +
-           shear_modulus * deviatoric;
-  }
-
-  template <int dim>
-  double
-  J2Plasticity<dim>::dissipated_energy_density(
-    ArrayView<const double> internal) const
-  {
-    return internal[n_inverse_plastic + 1];
   }
 
   template class J2Plasticity<2>;

@@ -14,21 +14,12 @@ namespace dealmpm
   {}
 
   template <int dim>
-  std::vector<FieldDescription>
-  JohnsonCook<dim>::internal_variables() const
-  {
-    auto fields = J2Plasticity<dim>::internal_variables();
-    fields.push_back({"temperature", 1});
-    return fields;
-  }
-
-  template <int dim>
   void
   JohnsonCook<dim>::initialize_internal_variables(
     ArrayView<double> internal) const
   {
     J2Plasticity<dim>::initialize_internal_variables(internal);
-    internal[this->n_j2_internal] = jc.room_temperature;
+    internal[this->model_index] = jc.room_temperature;
   }
 
   template <int dim>
@@ -69,7 +60,7 @@ namespace dealmpm
                                        const double      flow,
                                        ArrayView<double> internal) const
   {
-    internal[this->n_j2_internal] +=
+    internal[this->model_index] +=
       jc.taylor_quinney * flow * d_gamma / (this->density * jc.specific_heat);
   }
 

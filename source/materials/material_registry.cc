@@ -1,8 +1,11 @@
 #include <dealmpm/base/errors.h>
+#include <dealmpm/materials/drucker_prager.h>
 #include <dealmpm/materials/j2_plasticity.h>
 #include <dealmpm/materials/johnson_cook.h>
 #include <dealmpm/materials/linear_elastic.h>
 #include <dealmpm/materials/neo_hookean.h>
+
+#include <cmath>
 
 namespace dealmpm
 {
@@ -133,6 +136,51 @@ namespace dealmpm
         reader.fail("Taylor-Quinney coefficient", "a number in [0, 1]");
       return jc;
     }
+
+    void
+    declare_drucker_prager_parameters(ParameterHandler &prm)
+    {
+      // Aluminium bars of Bui et al. (2008)'s granular column.
+      declare_elastic_constants(prm, 0.84e6, 0.3);
+      prm.declare_entry("Friction angle",
+                        "19.8",
+                        Patterns::Double(),
+                        "Mohr-Coulomb friction angle phi (degrees), in "
+                        "[0, 90).");
+      prm.declare_entry("Dilation angle",
+                        "0",
+                        Patterns::Double(),
+                        "Dilation angle psi (degrees), in [0, phi]; psi = "
+                        "phi: associative flow.");
+      prm.declare_entry("Cohesion",
+                        "0",
+                        Patterns::Double(),
+                        "Cohesion c (Pa), >= 0; 0: no tension.");
+      prm.declare_entry(
+        "Matching",
+        "plane strain",
+        Patterns::Selection("plane strain|outer cone|inner cone"),
+        "How the cone matches Mohr-Coulomb: 'plane strain' (the same "
+        "collapse loads in plane strain), 'outer cone' (triaxial "
+        "compression), 'inner cone' (triaxial extension).");
+    }
+
+    DruckerPragerCone
+    read_drucker_prager(SceneReader &reader)
+    {
+      const double degree   = M_PI / 180.;
+      const double friction = reader.get_double("Friction angle");
+      if (!(friction >= 0 && friction < 90))
+        reader.fail("Friction angle", "an angle in [0, 90) degrees");
+      const double dilation = reader.get_double("Dilation angle");
+      if (!(dilation >= 0 && dilation <= friction))
+        reader.fail("Dilation angle",
+                    "an angle in [0, Friction angle] degrees");
+      return DruckerPragerCone::matched(reader.get("Matching"),
+                                        friction * degree,
+                                        dilation * degree,
+                                        reader.get_nonnegative("Cohesion"));
+    }
   } // namespace
 
   template <int dim>
@@ -183,6 +231,17 @@ namespace dealmpm
               const LameParameters lame = read_elastic_constants(reader);
               return std::make_unique<JohnsonCook<dim>>(
                 lame, read_johnson_cook(reader));
+            });
+      r.add("Drucker-Prager",
+            "non-associative Drucker-Prager plasticity on Hencky elasticity, "
+            "perfectly plastic, return to the cone or its apex (Young's "
+            "modulus, Poisson's ratio, Friction angle, Dilation angle, "
+            "Cohesion, Matching); for soils and granular flows.",
+            declare_drucker_prager_parameters,
+            [](SceneReader &reader) -> std::unique_ptr<Material<dim>> {
+              const LameParameters lame = read_elastic_constants(reader);
+              return std::make_unique<DruckerPrager<dim>>(
+                lame, read_drucker_prager(reader));
             });
       return r;
     }();

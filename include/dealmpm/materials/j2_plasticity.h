@@ -1,6 +1,6 @@
 #pragma once
 
-#include <dealmpm/materials/material.h>
+#include <dealmpm/materials/hencky_plasticity.h>
 
 #include <array>
 
@@ -8,15 +8,15 @@ namespace dealmpm
 {
   /**
    * Isotropic hardening of the yield stress with the equivalent plastic
-   * strain alpha: sigma_y = sigma_y0 + H alpha (linear) or
-   * sigma_y = sigma_y0 + B alpha^n (power law).
+   * strain alpha: sigma_y = sigma_y0 + H alpha + B alpha^n (H: linear, B and
+   * n: power law).
    */
   struct IsotropicHardening
   {
     double yield_stress = 1;
     double modulus      = 0; ///< H (linear)
     double coefficient  = 0; ///< B (power law)
-    double exponent     = 1; ///< n (power law); 1 with B = H is linear
+    double exponent     = 1; ///< n (power law)
 
     double
     flow_stress(const double alpha) const;
@@ -27,64 +27,25 @@ namespace dealmpm
   };
 
   /**
-   * Finite-strain J2 (von Mises) plasticity (Simo 1992): multiplicative
-   * split F = F_e F_p, Hencky stored energy
-   * W = K/2 (tr eps_e)^2 + G |dev eps_e|^2 in the logarithmic elastic strain
-   * eps_e = ln(b_e)/2, radial return on the Kirchhoff deviator in principal
-   * space, isotropic hardening. The state is C_p^-1 (the trial
-   * b_e = F C_p^-1 F^T needs only the current F: exactly objective, no
-   * incremental drift), the equivalent plastic strain and the plastic work
-   * (for the energy balance); in 2D also sigma_zz.
+   * Finite-strain J2 (von Mises) plasticity (Simo 1992) on the Hencky frame
+   * (HenckyPlasticity): radial return of the Kirchhoff deviator in principal
+   * space, q = sqrt(3/2) |dev tau| <= sigma_y(alpha), with isotropic
+   * hardening. The plastic multiplier is a scalar Newton solve kept inside
+   * its bracket by bisection.
    */
   template <int dim>
-  class J2Plasticity : public Material<dim>
+  class J2Plasticity : public HenckyPlasticity<dim>
   {
   public:
     J2Plasticity(const LameParameters     &lame,
                  const IsotropicHardening &hardening);
 
-    std::vector<FieldDescription>
-    internal_variables() const override;
-
-    void
-    initialize_internal_variables(ArrayView<double> internal) const override;
-
-    void
-    update_stress(const Tensor<2, dim>    &L,
-                  const Tensor<2, dim>    &F,
-                  const double             dt,
-                  SymmetricTensor<2, dim> &stress,
-                  ArrayView<double>        internal) const override;
-
-    /** The elastic P-wave speed sqrt((K + 4G/3) / rho0). */
-    double
-    wave_speed(const Tensor<2, dim> &F) const override;
-
-    double
-    out_of_plane_stress(const Tensor<2, dim>          &F,
-                        const SymmetricTensor<2, dim> &stress,
-                        ArrayView<const double>        internal) const override;
-
-    /** The elastic stored energy W(eps_e). */
-    double
-    strain_energy_density(const Tensor<2, dim>          &F,
-                          const SymmetricTensor<2, dim> &stress,
-                          ArrayView<const double> internal) const override;
-
-    /** The plastic work sum of sigma_y(alpha_n+1) d_gamma. */
-    double
-    dissipated_energy_density(ArrayView<const double> internal) const override;
-
-    bool
-    dissipates() const override
-    {
-      return true;
-    }
-
-    /** Stored components of C_p^-1: xx, yy, zz, xy (and xz, yz in 3D). */
-    static constexpr unsigned int n_inverse_plastic = dim == 2 ? 4 : 6;
-
   protected:
+    double
+    return_to_surface(std::array<double, 3> &strain,
+                      const double           dt,
+                      ArrayView<double>      internal) const override;
+
     /**
      * The flow stress after a plastic increment @p d_gamma over a step of
      * @p dt from the state @p internal, and its derivative in d_gamma. J2:
@@ -105,15 +66,6 @@ namespace dealmpm
                        ArrayView<double> /*internal*/) const
     {}
 
-    /** How many internal variables J2 itself keeps (C_p^-1, plastic strain,
-     * plastic work, and sigma_zz in 2D); a derived model's come after. */
-    static constexpr unsigned int n_j2_internal =
-      n_inverse_plastic + (dim == 2 ? 3 : 2);
-
     const IsotropicHardening hardening;
-
-  private:
-    double bulk_modulus;
-    double shear_modulus;
   };
 } // namespace dealmpm

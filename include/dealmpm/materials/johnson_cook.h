@@ -35,9 +35,6 @@ namespace dealmpm
   public:
     JohnsonCook(const LameParameters &lame, const JohnsonCookParameters &jc);
 
-    std::vector<FieldDescription>
-    internal_variables() const override;
-
     void
     initialize_internal_variables(ArrayView<double> internal) const override;
 
@@ -45,10 +42,16 @@ namespace dealmpm
     double
     temperature(ArrayView<const double> internal) const
     {
-      return internal[this->n_j2_internal];
+      return internal[this->model_index];
     }
 
   protected:
+    std::vector<FieldDescription>
+    model_variables() const override
+    {
+      return {{"temperature", 1}};
+    }
+
     std::array<double, 2>
     flow_stress(const double            alpha,
                 const double            d_gamma,
