@@ -92,6 +92,14 @@ namespace dealmpm
       return false;
     }
 
+    /** Whether F is reset to J^(1/dim) I after each stress update (fluids:
+     * only the volume matters, and a stirred F loses its accuracy). */
+    virtual bool
+    resets_deformation() const
+    {
+      return false;
+    }
+
     /** Reference mass density, set from the scene's material section. */
     double density = 0;
   };

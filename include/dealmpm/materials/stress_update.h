@@ -100,7 +100,13 @@ namespace dealmpm
       : materials(materials)
       , particles(particles)
       , dt(dt)
-    {}
+    {
+      for (const auto &m : materials)
+        {
+          resets.push_back(m->resets_deformation());
+          any_resets = any_resets || resets.back();
+        }
+    }
 
     template <typename Accessor>
     void
@@ -124,11 +130,28 @@ namespace dealmpm
       write_symmetric<dim>(&props[f.stress], stress);
       check.inspect(
         p, read_vector<dim>(&props[f.velocity]), F, stress, material, cell.h);
+      if (any_resets && resets[m])
+        reset_deformation(props, F);
     }
 
     ParticleCheck<dim> check;
 
   private:
+    /** F <- J^(1/dim) I. */
+    void
+    reset_deformation(const ArrayView<double> &props,
+                      const Tensor<2, dim>    &F) const
+    {
+      const double   J = determinant(F);
+      Tensor<2, dim> isotropic;
+      for (unsigned int d = 0; d < dim; ++d)
+        isotropic[d][d] = std::pow(J, 1. / dim);
+      write_tensor<dim>(&props[particles.fields.deformation_gradient],
+                        isotropic);
+    }
+
+    std::vector<bool>                                  resets;
+    bool                                               any_resets = false;
     const std::vector<std::unique_ptr<Material<dim>>> &materials;
     const ParticleSet<dim>                            &particles;
     double                                             dt;
