@@ -128,3 +128,31 @@ TEST(DruckerPrager, Dilatancy)
         << "psi " << psi;
     }
 }
+
+// After a plastic pre-strain, a rigid rotation Q F gives Q sigma Q^T and
+// leaves the plastic strain alone (the shared Hencky frame, here with a
+// pressure-dependent return).
+TEST(DruckerPrager, ObjectiveUnderRigidRotation)
+{
+  Tensor<2, 3> F0           = diagonal(-0.03, 0.01, 0.0);
+  F0[0][1]                  = 0.02;
+  const DruckerPragerCone c = cone(30, 10, 0.01);
+  SoilPoint               reference(soil_lame, c), rotated(soil_lame, c);
+  reference.deform(F0);
+  rotated.deform(F0);
+  ASSERT_GT(reference.model.plastic_strain(reference.state()), 0);
+  const double angle = 1.1;
+  Tensor<2, 3> Q;
+  Q[0][0] = Q[2][2] = std::cos(angle);
+  Q[0][2]           = -std::sin(angle);
+  Q[2][0]           = std::sin(angle);
+  Q[1][1]           = 1;
+  rotated.deform(Q * F0);
+  const Tensor<2, 3> expected =
+    Q * Tensor<2, 3>(reference.stress) * transpose(Q);
+  EXPECT_LT((Tensor<2, 3>(rotated.stress) - expected).norm(),
+            1e-12 * expected.norm());
+  EXPECT_NEAR(rotated.model.plastic_strain(rotated.state()),
+              reference.model.plastic_strain(reference.state()),
+              1e-15);
+}
