@@ -3,6 +3,7 @@
 #include <dealmpm/materials/j2_plasticity.h>
 #include <dealmpm/materials/johnson_cook.h>
 #include <dealmpm/materials/linear_elastic.h>
+#include <dealmpm/materials/mohr_coulomb.h>
 #include <dealmpm/materials/neo_hookean.h>
 #include <dealmpm/materials/tait_fluid.h>
 
@@ -184,6 +185,60 @@ namespace dealmpm
     }
 
     void
+    declare_mohr_coulomb_parameters(ParameterHandler &prm)
+    {
+      // A dense sand.
+      declare_elastic_constants(prm, 50e6, 0.3);
+      prm.declare_entry("Friction angle",
+                        "30",
+                        Patterns::Double(),
+                        "Friction angle phi (degrees), in [0, 90); 0: Tresca.");
+      prm.declare_entry("Dilation angle",
+                        "0",
+                        Patterns::Double(),
+                        "Dilation angle psi (degrees), in [0, phi]; psi = "
+                        "phi: associative flow.");
+      prm.declare_entry("Cohesion",
+                        "0",
+                        Patterns::Double(),
+                        "Cohesion c (Pa), >= 0; 0: no tension (the apex at "
+                        "zero stress). Tresca (phi = 0) needs c > 0.");
+      prm.declare_entry("Tension cut-off",
+                        "false",
+                        Patterns::Bool(),
+                        "Cap every principal stress at the Tensile strength "
+                        "(Rankine), below Mohr-Coulomb's own apex c cot(phi).");
+      prm.declare_entry("Tensile strength",
+                        "0",
+                        Patterns::Double(),
+                        "T (Pa), >= 0: the largest principal stress with the "
+                        "Tension cut-off.");
+    }
+
+    MohrCoulombParameters
+    read_mohr_coulomb(SceneReader &reader)
+    {
+      const double          degree = M_PI / 180.;
+      MohrCoulombParameters mc;
+      const double          friction = reader.get_double("Friction angle");
+      if (!(friction >= 0 && friction < 90))
+        reader.fail("Friction angle", "an angle in [0, 90) degrees");
+      const double dilation = reader.get_double("Dilation angle");
+      if (!(dilation >= 0 && dilation <= friction))
+        reader.fail("Dilation angle",
+                    "an angle in [0, Friction angle] degrees");
+      mc.friction_angle = friction * degree;
+      mc.dilation_angle = dilation * degree;
+      mc.cohesion       = reader.get_nonnegative("Cohesion");
+      if (friction == 0 && !(mc.cohesion > 0))
+        reader.fail("Cohesion", "a positive number when Friction angle is 0");
+      const double strength = reader.get_nonnegative("Tensile strength");
+      if (reader.get_bool("Tension cut-off"))
+        mc.tension_cut_off = strength;
+      return mc;
+    }
+
+    void
     declare_tait_parameters(ParameterHandler &prm)
     {
       prm.declare_entry("Sound speed",
@@ -280,6 +335,18 @@ namespace dealmpm
               const LameParameters lame = read_elastic_constants(reader);
               return std::make_unique<DruckerPrager<dim>>(
                 lame, read_drucker_prager(reader));
+            });
+      r.add("Mohr-Coulomb",
+            "non-associative Mohr-Coulomb plasticity on Hencky elasticity, "
+            "perfectly plastic, principal-stress return to a plane, an edge "
+            "or the apex, optional tension cut-off (Young's modulus, "
+            "Poisson's ratio, Friction angle, Dilation angle, Cohesion, "
+            "Tension cut-off, Tensile strength); for soils and rock.",
+            declare_mohr_coulomb_parameters,
+            [](SceneReader &reader) -> std::unique_ptr<Material<dim>> {
+              const LameParameters lame = read_elastic_constants(reader);
+              return std::make_unique<MohrCoulomb<dim>>(
+                lame, read_mohr_coulomb(reader));
             });
       r.add("Tait fluid",
             "weakly compressible Newtonian fluid: Tait's equation of state "

@@ -1,0 +1,59 @@
+#pragma once
+
+#include <dealmpm/materials/hencky_plasticity.h>
+
+#include <limits>
+
+namespace dealmpm
+{
+  /** Parameters of Mohr-Coulomb plasticity (angles in radians). */
+  struct MohrCoulombParameters
+  {
+    double friction_angle = 0;
+    double dilation_angle = 0;
+    double cohesion       = 0;
+    /** The largest principal stress allowed (Pa); +infinity: no cut-off. */
+    double tension_cut_off = std::numeric_limits<double>::infinity();
+  };
+
+  /**
+   * Non-associative Mohr-Coulomb plasticity, perfectly plastic, on the
+   * Hencky frame (HenckyPlasticity). The return works on the sorted
+   * principal Kirchhoff stresses tau_1 >= tau_2 >= tau_3 (tension
+   * positive) with f = (tau_1 - tau_3) + (tau_1 + tau_3) sin(phi)
+   * - 2 c cos(phi) and the potential with psi for phi: to the main plane,
+   * to one of its two edges (tau_1 = tau_2, triaxial compression, or
+   * tau_2 = tau_3, triaxial extension) or to the apex (de Souza Neto et
+   * al. 2008, Boxes 8.4 and 8.5; Clausen et al. 2006). The optional tension
+   * cut-off (Rankine, tau_a <= T) returns after the Mohr-Coulomb return,
+   * which it keeps admissible: it only lowers f.
+   */
+  template <int dim>
+  class MohrCoulomb : public HenckyPlasticity<dim>
+  {
+  public:
+    MohrCoulomb(const LameParameters &lame, const MohrCoulombParameters &mc);
+
+    /** f of sorted or unsorted principal stresses (the largest pair). */
+    double
+    yield_function(std::array<double, 3> tau) const;
+
+  protected:
+    double
+    return_to_surface(std::array<double, 3> &strain,
+                      const double           dt,
+                      ArrayView<double>      internal) const override;
+
+  private:
+    /** Return sorted principal stresses to the Mohr-Coulomb surface. */
+    void
+    return_mohr_coulomb(std::array<double, 3> &tau) const;
+
+    /** Return sorted principal stresses to tau_a <= T. */
+    void
+    return_tension_cut_off(std::array<double, 3> &tau) const;
+
+    MohrCoulombParameters parameters;
+    double                sin_phi, sin_psi, two_c_cos_phi;
+  };
+} // namespace dealmpm

@@ -1,0 +1,202 @@
+#include <dealmpm/materials/mohr_coulomb.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+
+namespace dealmpm
+{
+  namespace
+  {
+    using Principal = std::array<double, 3>;
+
+    /** D n of the isotropic stiffness in principal space:
+     * lambda (sum n) + 2 G n. */
+    Principal
+    stiffness_times(const double lambda, const double G, const Principal &n)
+    {
+      const double sum = n[0] + n[1] + n[2];
+      return {{lambda * sum + 2 * G * n[0],
+               lambda * sum + 2 * G * n[1],
+               lambda * sum + 2 * G * n[2]}};
+    }
+
+    double
+    dot(const Principal &a, const Principal &b)
+    {
+      return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    }
+
+    /** A plane a . tau <= r in principal space with flow direction n. */
+    struct Plane
+    {
+      Principal a, n;
+      double    r;
+    };
+
+    /**
+     * The closest point (in the energy norm of the flow) of @p tau on one
+     * or two planes, all active: tau -= sum d_gamma_j D n_j with
+     * a_i . tau = r_i. Returns false when a multiplier is negative.
+     */
+    bool
+    return_to_planes(Principal                  &tau,
+                     const std::array<Plane, 2> &planes,
+                     const unsigned int          m,
+                     const double                lambda,
+                     const double                G)
+    {
+      Eigen::Matrix2d          A = Eigen::Matrix2d::Identity();
+      Eigen::Vector2d          f = Eigen::Vector2d::Zero();
+      std::array<Principal, 2> Dn;
+      for (unsigned int j = 0; j < m; ++j)
+        Dn[j] = stiffness_times(lambda, G, planes[j].n);
+      for (unsigned int i = 0; i < m; ++i)
+        {
+          f[i] = dot(planes[i].a, tau) - planes[i].r;
+          for (unsigned int j = 0; j < m; ++j)
+            A(i, j) = dot(planes[i].a, Dn[j]);
+        }
+      const Eigen::Vector2d d_gamma = A.partialPivLu().solve(f);
+      for (unsigned int j = 0; j < m; ++j)
+        {
+          if (d_gamma[j] < 0)
+            return false;
+          for (unsigned int a = 0; a < 3; ++a)
+            tau[a] -= d_gamma[j] * Dn[j][a];
+        }
+      return true;
+    }
+
+    bool
+    sorted(const Principal &tau, const double tolerance)
+    {
+      return tau[0] >= tau[1] - tolerance && tau[1] >= tau[2] - tolerance;
+    }
+  } // namespace
+
+  template <int dim>
+  MohrCoulomb<dim>::MohrCoulomb(const LameParameters        &lame,
+                                const MohrCoulombParameters &mc)
+    : HenckyPlasticity<dim>(lame)
+    , parameters(mc)
+    , sin_phi(std::sin(mc.friction_angle))
+    , sin_psi(std::sin(mc.dilation_angle))
+    , two_c_cos_phi(2 * mc.cohesion * std::cos(mc.friction_angle))
+  {}
+
+  template <int dim>
+  double
+  MohrCoulomb<dim>::yield_function(std::array<double, 3> tau) const
+  {
+    std::sort(tau.begin(), tau.end(), std::greater<double>());
+    return tau[0] - tau[2] + (tau[0] + tau[2]) * sin_phi - two_c_cos_phi;
+  }
+
+  template <int dim>
+  void
+  MohrCoulomb<dim>::return_mohr_coulomb(std::array<double, 3> &tau) const
+  {
+    if (!(yield_function(tau) > 0))
+      return;
+    const double G      = this->shear_modulus;
+    const double lambda = this->bulk_modulus - 2. * G / 3.;
+    const double up = 1 + sin_phi, down = 1 - sin_phi;
+    const double up_psi = 1 + sin_psi, down_psi = 1 - sin_psi;
+    const Plane main{{{up, 0, -down}}, {{up_psi, 0, -down_psi}}, two_c_cos_phi};
+    // The neighbouring planes across the edges tau_1 = tau_2 (triaxial
+    // compression) and tau_2 = tau_3 (triaxial extension).
+    const Plane  compression{{{0, up, -down}},
+                            {{0, up_psi, -down_psi}},
+                            two_c_cos_phi};
+    const Plane  extension{{{up, -down, 0}},
+                          {{up_psi, -down_psi, 0}},
+                          two_c_cos_phi};
+    const double tolerance =
+      1e-12 * (std::abs(tau[0]) + std::abs(tau[2]) + two_c_cos_phi);
+
+    Principal on_plane = tau;
+    if (return_to_planes(on_plane, {{main, main}}, 1, lambda, G) &&
+        sorted(on_plane, tolerance))
+      {
+        tau = on_plane;
+        return;
+      }
+    const Plane &second  = on_plane[1] > on_plane[0] ? compression : extension;
+    Principal    on_edge = tau;
+    if (return_to_planes(on_edge, {{main, second}}, 2, lambda, G) &&
+        sorted(on_edge, tolerance))
+      {
+        tau = on_edge;
+        return;
+      }
+    // The apex (Tresca, phi = 0, has none: its edges always hold).
+    const double apex =
+      sin_phi > 0 ? parameters.cohesion / std::tan(parameters.friction_angle) :
+                    (tau[0] + tau[1] + tau[2]) / 3.;
+    tau = {{apex, apex, apex}};
+  }
+
+  template <int dim>
+  void
+  MohrCoulomb<dim>::return_tension_cut_off(std::array<double, 3> &tau) const
+  {
+    const double T = parameters.tension_cut_off;
+    if (!(tau[0] > T))
+      return;
+    const double G      = this->shear_modulus;
+    const double lambda = this->bulk_modulus - 2. * G / 3.;
+    const Plane  first{{{1, 0, 0}}, {{1, 0, 0}}, T};
+    const Plane  second{{{0, 1, 0}}, {{0, 1, 0}}, T};
+    Principal    returned = tau;
+    return_to_planes(returned, {{first, first}}, 1, lambda, G);
+    if (returned[1] > T)
+      {
+        returned = tau;
+        return_to_planes(returned, {{first, second}}, 2, lambda, G);
+      }
+    if (returned[2] > T)
+      returned = {{T, T, T}};
+    tau = returned;
+  }
+
+  template <int dim>
+  double
+  MohrCoulomb<dim>::return_to_surface(std::array<double, 3> &strain,
+                                      const double,
+                                      ArrayView<double>) const
+  {
+    std::array<double, 3> tau = this->kirchhoff(strain);
+    const bool            plastic =
+      yield_function(tau) > 0 ||
+      *std::max_element(tau.begin(), tau.end()) > parameters.tension_cut_off;
+    if (!plastic)
+      return 0;
+
+    // Sort descending, return, and put the stresses back in their
+    // principal directions.
+    std::array<unsigned int, 3> order = {{0, 1, 2}};
+    std::sort(order.begin(), order.end(), [&](unsigned int i, unsigned int j) {
+      return tau[i] > tau[j];
+    });
+    Principal sorted_tau = {{tau[order[0]], tau[order[1]], tau[order[2]]}};
+    return_mohr_coulomb(sorted_tau);
+    return_tension_cut_off(sorted_tau);
+
+    const double K = this->bulk_modulus, G = this->shear_modulus;
+    const double mean  = (sorted_tau[0] + sorted_tau[1] + sorted_tau[2]) / 3.;
+    double       d_sum = 0, d_plastic[3];
+    for (unsigned int k = 0; k < 3; ++k)
+      {
+        const double elastic =
+          mean / (3. * K) + (sorted_tau[k] - mean) / (2. * G);
+        d_plastic[k]     = strain[order[k]] - elastic;
+        strain[order[k]] = elastic;
+        d_sum += d_plastic[k] * d_plastic[k];
+      }
+    return std::sqrt(2. / 3. * d_sum);
+  }
+
+  template class MohrCoulomb<2>;
+  template class MohrCoulomb<3>;
+} // namespace dealmpm
