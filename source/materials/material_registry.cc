@@ -139,16 +139,18 @@ namespace dealmpm
       return jc;
     }
 
+    /** Friction angle, Dilation angle and Cohesion of a frictional
+     * model (Drucker-Prager, Mohr-Coulomb). */
     void
-    declare_drucker_prager_parameters(ParameterHandler &prm)
+    declare_friction_parameters(ParameterHandler  &prm,
+                                const std::string &friction_default,
+                                const std::string &friction_documentation,
+                                const std::string &cohesion_documentation)
     {
-      // Aluminium bars of Bui et al. (2008)'s granular column.
-      declare_elastic_constants(prm, 0.84e6, 0.3);
       prm.declare_entry("Friction angle",
-                        "19.8",
+                        friction_default,
                         Patterns::Double(),
-                        "Mohr-Coulomb friction angle phi (degrees), in "
-                        "[0, 90).");
+                        friction_documentation);
       prm.declare_entry("Dilation angle",
                         "0",
                         Patterns::Double(),
@@ -157,7 +159,33 @@ namespace dealmpm
       prm.declare_entry("Cohesion",
                         "0",
                         Patterns::Double(),
-                        "Cohesion c (Pa), >= 0; 0: no tension.");
+                        cohesion_documentation);
+    }
+
+    /** The friction and dilation angles, checked, in radians. */
+    std::array<double, 2>
+    read_friction_angles(SceneReader &reader)
+    {
+      const double friction = reader.get_double("Friction angle");
+      if (!(friction >= 0 && friction < 90))
+        reader.fail("Friction angle", "an angle in [0, 90) degrees");
+      const double dilation = reader.get_double("Dilation angle");
+      if (!(dilation >= 0 && dilation <= friction))
+        reader.fail("Dilation angle",
+                    "an angle in [0, Friction angle] degrees");
+      return {{friction * M_PI / 180., dilation * M_PI / 180.}};
+    }
+
+    void
+    declare_drucker_prager_parameters(ParameterHandler &prm)
+    {
+      // Aluminium bars of Bui et al. (2008)'s granular column.
+      declare_elastic_constants(prm, 0.84e6, 0.3);
+      declare_friction_parameters(prm,
+                                  "19.8",
+                                  "Mohr-Coulomb friction angle phi "
+                                  "(degrees), in [0, 90).",
+                                  "Cohesion c (Pa), >= 0; 0: no tension.");
       prm.declare_entry(
         "Matching",
         "plane strain",
@@ -170,17 +198,10 @@ namespace dealmpm
     DruckerPragerCone
     read_drucker_prager(SceneReader &reader)
     {
-      const double degree   = M_PI / 180.;
-      const double friction = reader.get_double("Friction angle");
-      if (!(friction >= 0 && friction < 90))
-        reader.fail("Friction angle", "an angle in [0, 90) degrees");
-      const double dilation = reader.get_double("Dilation angle");
-      if (!(dilation >= 0 && dilation <= friction))
-        reader.fail("Dilation angle",
-                    "an angle in [0, Friction angle] degrees");
+      const auto angles = read_friction_angles(reader);
       return DruckerPragerCone::matched(reader.get("Matching"),
-                                        friction * degree,
-                                        dilation * degree,
+                                        angles[0],
+                                        angles[1],
                                         reader.get_nonnegative("Cohesion"));
     }
 
@@ -189,20 +210,12 @@ namespace dealmpm
     {
       // A dense sand.
       declare_elastic_constants(prm, 50e6, 0.3);
-      prm.declare_entry("Friction angle",
-                        "30",
-                        Patterns::Double(),
-                        "Friction angle phi (degrees), in [0, 90); 0: Tresca.");
-      prm.declare_entry("Dilation angle",
-                        "0",
-                        Patterns::Double(),
-                        "Dilation angle psi (degrees), in [0, phi]; psi = "
-                        "phi: associative flow.");
-      prm.declare_entry("Cohesion",
-                        "0",
-                        Patterns::Double(),
-                        "Cohesion c (Pa), >= 0; 0: no tension (the apex at "
-                        "zero stress). Tresca (phi = 0) needs c > 0.");
+      declare_friction_parameters(
+        prm,
+        "30",
+        "Friction angle phi (degrees), in [0, 90); 0: Tresca.",
+        "Cohesion c (Pa), >= 0; 0: no tension (the apex at zero stress). "
+        "Tresca (phi = 0) needs c > 0.");
       prm.declare_entry("Tension cut-off",
                         "false",
                         Patterns::Bool(),
@@ -218,19 +231,12 @@ namespace dealmpm
     MohrCoulombParameters
     read_mohr_coulomb(SceneReader &reader)
     {
-      const double          degree = M_PI / 180.;
       MohrCoulombParameters mc;
-      const double          friction = reader.get_double("Friction angle");
-      if (!(friction >= 0 && friction < 90))
-        reader.fail("Friction angle", "an angle in [0, 90) degrees");
-      const double dilation = reader.get_double("Dilation angle");
-      if (!(dilation >= 0 && dilation <= friction))
-        reader.fail("Dilation angle",
-                    "an angle in [0, Friction angle] degrees");
-      mc.friction_angle = friction * degree;
-      mc.dilation_angle = dilation * degree;
-      mc.cohesion       = reader.get_nonnegative("Cohesion");
-      if (friction == 0 && !(mc.cohesion > 0))
+      const auto            angles = read_friction_angles(reader);
+      mc.friction_angle            = angles[0];
+      mc.dilation_angle            = angles[1];
+      mc.cohesion                  = reader.get_nonnegative("Cohesion");
+      if (mc.friction_angle == 0 && !(mc.cohesion > 0))
         reader.fail("Cohesion", "a positive number when Friction angle is 0");
       const double strength = reader.get_nonnegative("Tensile strength");
       if (reader.get_bool("Tension cut-off"))
