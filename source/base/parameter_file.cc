@@ -11,6 +11,21 @@
 
 namespace dealmpm
 {
+  namespace
+  {
+    std::string
+    collapse_whitespace(const std::string &text)
+    {
+      return std::regex_replace(text, std::regex("\\s+"), " ");
+    }
+  } // namespace
+
+  std::string
+  collapsed_text(const std::exception &e)
+  {
+    return collapse_whitespace(e.what());
+  }
+
   std::string
   one_line(const std::exception &e)
   {
@@ -25,7 +40,7 @@ namespace dealmpm
         if (cut != std::string::npos)
           text = text.substr(0, cut);
       }
-    text = std::regex_replace(text, std::regex("\\s+"), " ");
+    text = collapse_whitespace(text);
     // deal.II quotes values in <...>: cut long ones (a 1 MB value).
     text =
       std::regex_replace(text, std::regex("<([^<>]{200})[^<>]+>"), "<$1...>");
@@ -148,10 +163,8 @@ namespace dealmpm
   std::string
   entry_mismatch(const std::exception &e, const std::string &file)
   {
-    // deal.II wraps its text at spaces: read it with whitespace collapsed.
-    const std::string text =
-      std::regex_replace(std::string(e.what()), std::regex("\\s+"), " ");
-    std::smatch match;
+    const std::string text = collapsed_text(e);
+    std::smatch       match;
     if (!std::regex_search(
           text,
           match,

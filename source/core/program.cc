@@ -239,10 +239,8 @@ namespace dealmpm
     std::string
     override_mismatch(const std::exception &e, const std::string &value)
     {
-      // deal.II wraps its text at spaces: read it with whitespace collapsed.
-      const std::string text =
-        std::regex_replace(std::string(e.what()), std::regex("\\s+"), " ");
-      std::smatch match;
+      const std::string text = collapsed_text(e);
+      std::smatch       match;
       if (std::regex_search(
             text,
             match,

@@ -33,7 +33,7 @@ namespace
     double
     alpha() const
     {
-      return this->internal[J2Plasticity<dim>::n_inverse_plastic];
+      return J2Plasticity<dim>::plastic_strain(this->state());
     }
 
     double

@@ -21,7 +21,7 @@ namespace
   double
   alpha(const CopperPoint &p)
   {
-    return p.internal[J2Plasticity<3>::n_inverse_plastic];
+    return JohnsonCook<3>::plastic_strain(p.state());
   }
 
   double

@@ -14,6 +14,11 @@ namespace dealmpm
   std::string
   one_line(const std::exception &e);
 
+  /** The whole text of @p e with every run of whitespace made one space
+   * (deal.II wraps its messages at spaces). */
+  std::string
+  collapsed_text(const std::exception &e);
+
   /**
    * Check a scene file's text before deal.II parses it, for mistakes whose
    * deal.II message does not say what to do: a scene that sets nothing
