@@ -1,7 +1,7 @@
 // Drucker-Prager without a grid: on the cone after every return with
 // non-negative dissipation, the apex return, and the dilatancy of the
 // non-associative flow (plastic volume change sqrt(2) eta_bar times the
-// deviatoric plastic strain; none with psi = 0).
+// deviatoric plastic strain; none with psi = 0), simple shear to gamma = 10.
 #include <dealmpm/materials/drucker_prager.h>
 
 #include <gtest/gtest.h>
@@ -155,4 +155,29 @@ TEST(DruckerPrager, ObjectiveUnderRigidRotation)
   EXPECT_NEAR(rotated.model.plastic_strain(rotated.state()),
               reference.model.plastic_strain(reference.state()),
               1e-15);
+}
+
+// Simple shear to gamma = 10 of a confined soil (isotropic log strain
+// -0.01), psi = 0: finite, on the cone at the end, and no plastic volume
+// change, so the mean stress stays K times the confining volume strain.
+TEST(DruckerPrager, SimpleShearToGammaTen)
+{
+  const DruckerPragerCone c = cone(30, 0, 0);
+  SoilPoint               p(soil_lame, c);
+  const Tensor<2, 3>      confined = diagonal(-0.01, -0.01, -0.01);
+  Tensor<2, 3>            F        = confined;
+  for (unsigned int s = 1; s <= 2000; ++s)
+    {
+      Tensor<2, 3> shear = unit_symmetric_tensor<3>();
+      shear[0][1]        = 10. * s / 2000;
+      F                  = shear * confined;
+      p.deform(F);
+    }
+  const SymmetricTensor<2, 3> tau = p.kirchhoff(F);
+  for (unsigned int i = 0; i < 3; ++i)
+    for (unsigned int j = 0; j < 3; ++j)
+      ASSERT_TRUE(std::isfinite(tau[i][j]));
+  EXPECT_NEAR(yield_function(tau, c), 0, 1e-12);
+  EXPECT_NEAR(trace(tau) / 3., 10. * -0.03, 1e-9); // 2000 returns of round-off
+  EXPECT_GT(p.model.plastic_strain(p.state()), 5.);
 }

@@ -1,6 +1,7 @@
 // Johnson-Cook without a grid: the quasi-static curve, the rate factor, the
 // adiabatic temperature rise and thermal softening, each against the flow
-// stress formula (A + B alpha^n)(1 + C ln(rate / rate_0))(1 - T*^m).
+// stress formula (A + B alpha^n)(1 + C ln(rate / rate_0))(1 - T*^m), and
+// simple shear to gamma = 10 at 1e4 /s.
 #include <dealmpm/materials/johnson_cook.h>
 
 #include <gtest/gtest.h>
@@ -102,4 +103,40 @@ TEST(JohnsonCook, AdiabaticHeatingSoftens)
                 (1 - std::pow(homologous, 1.09)),
               1e-9 * q);
   EXPECT_LT(q, test::von_mises(cold.kirchhoff(test::stretch_x<3>(1.0))));
+}
+
+// Simple shear to gamma = 10 at a rate of 1e4 /s with adiabatic heating
+// (the Taylor bar's regime): finite, isochoric (no pressure beyond
+// round-off), hot but below melting, and on the rate- and
+// temperature-dependent flow stress of the last step (softening at the
+// step's starting temperature).
+TEST(JohnsonCook, SimpleShearToGammaTen)
+{
+  CopperPoint  p(copper_lame, copper(0.9));
+  Tensor<2, 3> F        = unit_symmetric_tensor<3>();
+  const double dt       = 1e-3 / 2000; // gamma 10 in 1 ms
+  p.model.density       = 8960;
+  double previous_alpha = 0, previous_T = 0;
+  for (unsigned int s = 1; s <= 2000; ++s)
+    {
+      previous_alpha = alpha(p);
+      previous_T     = temperature(p);
+      F[0][1]        = 10. * s / 2000;
+      p.deform(F, dt);
+    }
+  const SymmetricTensor<2, 3> tau = p.kirchhoff(F);
+  for (unsigned int i = 0; i < 3; ++i)
+    for (unsigned int j = 0; j < 3; ++j)
+      ASSERT_TRUE(std::isfinite(tau[i][j]));
+  EXPECT_LT(std::abs(trace(tau)), 1e-6 * test::von_mises(tau));
+  EXPECT_GT(alpha(p), 5.); // about gamma / sqrt(3)
+  const double T = temperature(p);
+  EXPECT_GT(T, 400.);
+  EXPECT_LT(T, 1356.);
+  const double rate   = (alpha(p) - previous_alpha) / dt;
+  const double T_star = (previous_T - 298.) / (1356. - 298.);
+  const double flow   = (90e6 + 292e6 * std::pow(alpha(p), 0.31)) *
+                      (1 + 0.025 * std::log(rate / 1.)) *
+                      (1 - std::pow(T_star, 1.09));
+  EXPECT_NEAR(test::von_mises(tau), flow, 1e-6 * flow);
 }

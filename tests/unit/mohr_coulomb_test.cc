@@ -2,7 +2,8 @@
 // plane strain) with non-decreasing plastic work; the triaxial compression
 // and extension strengths tau_1 - tau_3 = 2 c cos(phi) - (tau_1 + tau_3)
 // sin(phi) (tension positive) reached on the edge returns; the apex; the
-// tension cut-off; objectivity after a plastic pre-strain.
+// tension cut-off; objectivity after a plastic pre-strain; simple shear to
+// gamma = 10.
 #include <dealmpm/materials/mohr_coulomb.h>
 
 #include <gtest/gtest.h>
@@ -222,4 +223,28 @@ TEST(MohrCoulomb, ObjectiveUnderRigidRotation)
   EXPECT_NEAR(rotated.model.plastic_strain(rotated.state()),
               reference.model.plastic_strain(reference.state()),
               1e-15);
+}
+
+// Simple shear to gamma = 10 of a confined sample (isotropic log strain
+// -0.01), psi = 0: finite, on the surface at the end, and no plastic volume
+// change, so the mean stress stays K times the confining volume strain.
+TEST(MohrCoulomb, SimpleShearToGammaTen)
+{
+  test::MaterialPoint<3, MohrCoulomb<3>> p(rock_lame, rock(30, 0, 0.01));
+  Tensor<2, 3>                           F = diagonal(-0.01, -0.01, -0.01);
+  const Tensor<2, 3>                     confined = F;
+  for (unsigned int s = 1; s <= 2000; ++s)
+    {
+      Tensor<2, 3> shear = unit_symmetric_tensor<3>();
+      shear[0][1]        = 10. * s / 2000;
+      F                  = shear * confined;
+      p.deform(F);
+    }
+  const SymmetricTensor<2, 3> tau = p.kirchhoff(F);
+  for (unsigned int i = 0; i < 3; ++i)
+    for (unsigned int j = 0; j < 3; ++j)
+      ASSERT_TRUE(std::isfinite(tau[i][j]));
+  EXPECT_NEAR(p.model.yield_function(principal(tau)), 0, 1e-12);
+  EXPECT_NEAR(trace(tau) / 3., 10. * -0.03, 1e-9); // 2000 returns of round-off
+  EXPECT_GT(p.model.plastic_strain(p.state()), 5.);
 }
