@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -31,9 +32,10 @@ namespace dealmpm
     types::particle_index fastest = 0;
     Point<dim>            fastest_location;
 
-    /** Fold one particle into the check. */
+    /** Fold one particle into the check; false when its state is
+     * unusable. */
     template <typename Accessor>
-    void
+    bool
     inspect(const Accessor                &p,
             const Tensor<1, dim>          &v,
             const Tensor<2, dim>          &F,
@@ -68,10 +70,50 @@ namespace dealmpm
               fastest          = p.get_id();
               fastest_location = p.get_location();
             }
+          return true;
         }
+      return false;
+    }
+
+    /**
+     * Add to the reason of the failed particle @p id its material and the
+     * state its stress update left: the material's section, F and each
+     * internal variable by name (a local solve that did not converge shows
+     * here as a non-finite state). Out of line and cold: the sweep that
+     * calls it pays only the branch.
+     */
+    [[gnu::cold, gnu::noinline]] void
+    describe_state(const types::particle_index id,
+                   const unsigned int          material_index,
+                   const Material<dim>        &material,
+                   const Tensor<2, dim>       &F,
+                   ArrayView<const double>     internal)
+    {
+      if (!failed || particle != id || described)
+        return;
+      described = true;
+      std::ostringstream text;
+      text.precision(6);
+      text << "; in 'Material " << material_index + 1 << "', F = [";
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          text << (j == 0 ? (i == 0 ? "[" : ", [") : ", ") << F[i][j]
+               << (j + 1 == dim ? "]" : "");
+      text << ']';
+      unsigned int k = 0;
+      for (const FieldDescription &field : material.internal_variables())
+        {
+          text << (k == 0 ? ", state after its update: " : ", ") << field.name
+               << " =";
+          for (unsigned int c = 0; c < field.n_components; ++c, ++k)
+            text << ' ' << internal[k];
+        }
+      reason += text.str();
     }
 
   private:
+    bool described = false;
+
     template <typename Accessor>
     void
     fail(const Accessor &p, const char *why)
@@ -128,8 +170,19 @@ namespace dealmpm
                                                  particles.internal_offset[m],
                                                particles.n_internal[m]));
       write_symmetric<dim>(&props[f.stress], stress);
-      check.inspect(
-        p, read_vector<dim>(&props[f.velocity]), F, stress, material, cell.h);
+      if (!check.inspect(p,
+                         read_vector<dim>(&props[f.velocity]),
+                         F,
+                         stress,
+                         material,
+                         cell.h))
+        check.describe_state(
+          p.get_id(),
+          m,
+          material,
+          F,
+          ArrayView<const double>(props.data() + particles.internal_offset[m],
+                                  particles.n_internal[m]));
       if (any_resets && resets[m])
         reset_deformation(props, F);
     }
