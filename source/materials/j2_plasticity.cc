@@ -84,7 +84,9 @@ namespace dealmpm
     for (unsigned int a = 0; a < 3; ++a)
       strain[a] = scale * (strain[a] - volumetric / 3.) + volumetric / 3.;
     after_plastic_step(d_gamma,
+                       dt,
                        flow_stress(alpha, d_gamma, dt, state)[0],
+                       this->bulk_modulus * volumetric,
                        internal);
     return d_gamma;
   }

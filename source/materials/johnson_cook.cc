@@ -6,6 +6,21 @@
 
 namespace dealmpm
 {
+  double
+  JohnsonCookParameters::failure_strain(const double triaxiality,
+                                        const double rate,
+                                        const double temperature) const
+  {
+    const double rate_ratio = std::max(rate / reference_rate, 1.);
+    const double homologous =
+      std::clamp((temperature - room_temperature) /
+                   (melting_temperature - room_temperature),
+                 0.,
+                 1.);
+    return (D1 + D2 * std::exp(D3 * triaxiality)) *
+           (1. + D4 * std::log(rate_ratio)) * (1. + D5 * homologous);
+  }
+
   template <int dim>
   JohnsonCook<dim>::JohnsonCook(const LameParameters        &lame,
                                 const JohnsonCookParameters &jc)
@@ -57,9 +72,17 @@ namespace dealmpm
   template <int dim>
   void
   JohnsonCook<dim>::after_plastic_step(const double      d_gamma,
+                                       const double      dt,
                                        const double      flow,
+                                       const double      mean_stress,
                                        ArrayView<double> internal) const
   {
+    // Damage at the step's starting temperature, like the flow stress.
+    if (jc.damage_indicator)
+      internal[this->model_index + 1] +=
+        d_gamma / jc.failure_strain(mean_stress / flow,
+                                    d_gamma / dt,
+                                    temperature(internal));
     internal[this->model_index] +=
       jc.taylor_quinney * flow * d_gamma / (this->density * jc.specific_heat);
   }

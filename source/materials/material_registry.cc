@@ -99,7 +99,14 @@ namespace dealmpm
       {"Taylor-Quinney coefficient",
        &JohnsonCookParameters::taylor_quinney,
        "Fraction of the plastic work that heats the material, in [0, 1]; "
-       "0: no heating."}};
+       "0: no heating."},
+      {"D1",
+       &JohnsonCookParameters::D1,
+       "Damage constant D1 (with Damage indicator)."},
+      {"D2", &JohnsonCookParameters::D2, "Damage constant D2."},
+      {"D3", &JohnsonCookParameters::D3, "Damage constant D3 (triaxiality)."},
+      {"D4", &JohnsonCookParameters::D4, "Damage constant D4 (strain rate)."},
+      {"D5", &JohnsonCookParameters::D5, "Damage constant D5 (temperature)."}};
 
     void
     declare_johnson_cook_parameters(ParameterHandler &prm)
@@ -112,6 +119,14 @@ namespace dealmpm
                           Utilities::to_string(copper.*(e.member)),
                           Patterns::Double(),
                           e.documentation);
+      prm.declare_entry(
+        "Damage indicator",
+        "false",
+        Patterns::Bool(),
+        "Accumulate Johnson and Cook's (1985) damage D = sum d eps_p / eps_f, "
+        "eps_f = [D1 + D2 exp(D3 sigma*)][1 + D4 ln(rate*)][1 + D5 T*], as "
+        "the particle field 'damage' (1: the model predicts fracture); the "
+        "stress is not softened.");
     }
 
     JohnsonCookParameters
@@ -136,6 +151,7 @@ namespace dealmpm
                       Utilities::to_string(jc.room_temperature) + ")");
       if (!(jc.taylor_quinney >= 0 && jc.taylor_quinney <= 1))
         reader.fail("Taylor-Quinney coefficient", "a number in [0, 1]");
+      jc.damage_indicator = reader.get_bool("Damage indicator");
       return jc;
     }
 

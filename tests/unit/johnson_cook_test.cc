@@ -140,3 +140,65 @@ TEST(JohnsonCook, SimpleShearToGammaTen)
                       (1 - std::pow(T_star, 1.09));
   EXPECT_NEAR(test::von_mises(tau), flow, 1e-6 * flow);
 }
+
+namespace
+{
+  /** Simple shear to gamma = @p gamma in @p n slow steps (below the
+   * reference rate) of a sample with isotropic log pre-strain @p e0,
+   * without heating; the damage indicator on. Returns the point and, in
+   * @p expected, the sum of d alpha / eps_f(sigma*) with sigma* = p / q(alpha)
+   * written out here (p = 3 K e0 stays: J2 flow is isochoric). */
+  CopperPoint
+  sheared_with_damage(const double e0, const double gamma, double &expected)
+  {
+    JohnsonCookParameters jc = copper(0);
+    jc.damage_indicator      = true;
+    CopperPoint p(copper_lame, jc);
+    p.model.density = 8960;
+    Tensor<2, 3> pre;
+    for (unsigned int d = 0; d < 3; ++d)
+      pre[d][d] = std::exp(e0);
+    const double K =
+      copper_lame.lambda + 2. / 3. * copper_lame.mu; // bulk modulus
+    expected = 0;
+    for (unsigned int s = 1; s <= 400; ++s)
+      {
+        Tensor<2, 3> shear  = unit_symmetric_tensor<3>();
+        shear[0][1]         = gamma * s / 400;
+        const double before = alpha(p);
+        p.deform(shear * pre, /*dt=*/10.);
+        const double a = alpha(p);
+        if (a > before)
+          {
+            const double q = 90e6 + 292e6 * std::pow(a, 0.31);
+            expected +=
+              (a - before) / (0.54 + 4.89 * std::exp(-3.03 * 3. * K * e0 / q));
+          }
+      }
+    return p;
+  }
+} // namespace
+
+// Johnson and Cook's (1985) damage: in isochoric shear (sigma* = 0) at low
+// rate and room temperature D = alpha / (D1 + D2); under a mean tension,
+// the sum of d alpha / eps_f(sigma*), and more of it (the failure strain
+// falls with sigma*). Without the indicator the model has no damage field.
+TEST(JohnsonCook, DamageIndicator)
+{
+  double     expected = 0;
+  const auto shear    = sheared_with_damage(0, 1., expected);
+  ASSERT_GT(alpha(shear), 0.4);
+  EXPECT_NEAR(shear.model.damage(shear.state()),
+              alpha(shear) / (0.54 + 4.89),
+              1e-12);
+  EXPECT_NEAR(expected, alpha(shear) / (0.54 + 4.89), 1e-12);
+
+  const auto pulled = sheared_with_damage(0.001, 1., expected);
+  EXPECT_NEAR(pulled.model.damage(pulled.state()), expected, 1e-10 * expected);
+  EXPECT_GT(pulled.model.damage(pulled.state()),
+            1.05 * shear.model.damage(shear.state()));
+
+  const JohnsonCook<3> plain(copper_lame, copper(0.9));
+  for (const auto &field : plain.internal_variables())
+    EXPECT_NE(field.name, "damage");
+}

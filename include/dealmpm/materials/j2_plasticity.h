@@ -58,11 +58,14 @@ namespace dealmpm
                 const double            dt,
                 ArrayView<const double> internal) const;
 
-    /** After a return with @p d_gamma at flow stress @p flow (Johnson-Cook:
-     * adiabatic heating). */
+    /** After a return with @p d_gamma over @p dt at flow stress @p flow
+     * and Kirchhoff mean stress @p mean_stress (Johnson-Cook: adiabatic
+     * heating, damage). */
     virtual void
     after_plastic_step(const double /*d_gamma*/,
+                       const double /*dt*/,
                        const double /*flow*/,
+                       const double /*mean_stress*/,
                        ArrayView<double> /*internal*/) const
     {}
 

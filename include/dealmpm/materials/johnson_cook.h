@@ -15,6 +15,18 @@ namespace dealmpm
     double melting_temperature = 1356;    ///< K
     double specific_heat       = 383;     ///< J/(kg K)
     double taylor_quinney      = 0.9;     ///< fraction of plastic work to heat
+    /** Accumulate Johnson and Cook's (1985) damage as an internal variable;
+     * failure strain [D1 + D2 exp(D3 sigma*)][1 + D4 ln(rate*)][1 + D5 T*]
+     * (OFHC copper's constants). */
+    bool   damage_indicator = false;
+    double D1 = 0.54, D2 = 4.89, D3 = -3.03, D4 = 0.014, D5 = 1.12;
+
+    /** The failure strain at triaxiality sigma* (mean stress over von
+     * Mises), plastic strain rate and temperature (K). */
+    double
+    failure_strain(const double triaxiality,
+                   const double rate,
+                   const double temperature) const;
   };
 
   /**
@@ -27,7 +39,11 @@ namespace dealmpm
    * the temperature, an internal variable, rises adiabatically after each
    * return by taylor_quinney sigma_y d_gamma / (rho0 c_p), so that within
    * a step it is the temperature at its start. Defaults: OFHC copper
-   * (Johnson and Cook 1983).
+   * (Johnson and Cook 1983). With the damage indicator, D = sum of
+   * d_gamma / failure_strain after each return (Johnson and Cook 1985), an
+   * internal variable: D >= 1 where the model predicts fracture. It does
+   * not soften the stress (what a failed point does is a damage effect's
+   * business).
    */
   template <int dim>
   class JohnsonCook : public J2Plasticity<dim>
@@ -45,10 +61,19 @@ namespace dealmpm
       return internal[this->model_index];
     }
 
+    /** Johnson and Cook's damage of a state (0 without the indicator). */
+    double
+    damage(ArrayView<const double> internal) const
+    {
+      return jc.damage_indicator ? internal[this->model_index + 1] : 0.;
+    }
+
   protected:
     std::vector<FieldDescription>
     model_variables() const override
     {
+      if (jc.damage_indicator)
+        return {{"temperature", 1}, {"damage", 1}};
       return {{"temperature", 1}};
     }
 
@@ -60,7 +85,9 @@ namespace dealmpm
 
     void
     after_plastic_step(const double      d_gamma,
+                       const double      dt,
                        const double      flow,
+                       const double      mean_stress,
                        ArrayView<double> internal) const override;
 
   private:
