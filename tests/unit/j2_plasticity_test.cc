@@ -145,13 +145,8 @@ TEST(J2Plasticity, ObjectiveUnderRigidRotation)
   reference.deform(F0);
   ASSERT_GT(reference.alpha(), 0);
 
-  const double angle = 0.7;
-  Tensor<2, 3> Q;
-  Q[0][0] = Q[1][1] = std::cos(angle);
-  Q[0][1]           = -std::sin(angle);
-  Q[1][0]           = std::sin(angle);
-  Q[2][2]           = 1;
-  Point3<3> rotated(10, 5, linear(1, 2));
+  const Tensor<2, 3> Q = test::rotation(0.7, 2);
+  Point3<3>          rotated(10, 5, linear(1, 2));
   rotated.deform(0.5 * (F0 + unit_symmetric_tensor<3>()));
   rotated.deform(F0);
   rotated.deform(Q * F0);
@@ -175,9 +170,7 @@ TEST(J2Plasticity, SimpleShearToGammaTen)
       p.deform(F);
     }
   const SymmetricTensor<2, 3> tau = p.kirchhoff(F);
-  for (unsigned int i = 0; i < 3; ++i)
-    for (unsigned int j = 0; j < 3; ++j)
-      ASSERT_TRUE(std::isfinite(tau[i][j]));
+  ASSERT_TRUE(test::all_finite(tau));
   EXPECT_NEAR(von_mises(tau), 1., 1e-10);
   EXPECT_LT(std::abs(trace(tau)), 1e-9);
   EXPECT_GT(p.alpha(), 5.); // about gamma / sqrt(3)

@@ -125,9 +125,7 @@ TEST(JohnsonCook, SimpleShearToGammaTen)
       p.deform(F, dt);
     }
   const SymmetricTensor<2, 3> tau = p.kirchhoff(F);
-  for (unsigned int i = 0; i < 3; ++i)
-    for (unsigned int j = 0; j < 3; ++j)
-      ASSERT_TRUE(std::isfinite(tau[i][j]));
+  ASSERT_TRUE(test::all_finite(tau));
   EXPECT_LT(std::abs(trace(tau)), 1e-6 * test::von_mises(tau));
   EXPECT_GT(alpha(p), 5.); // about gamma / sqrt(3)
   const double T = temperature(p);

@@ -2,6 +2,7 @@
 
 #include <dealmpm/materials/material.h>
 
+#include <cmath>
 #include <vector>
 
 namespace dealmpm::test
@@ -54,6 +55,69 @@ namespace dealmpm::test
   von_mises(const SymmetricTensor<2, 3> &tau)
   {
     return std::sqrt(1.5) * deviator(tau).norm();
+  }
+
+  /** The rotation by @p angle about the coordinate axis @p axis. */
+  inline Tensor<2, 3>
+  rotation(const double angle, const unsigned int axis)
+  {
+    const unsigned int i = (axis + 1) % 3, j = (axis + 2) % 3;
+    Tensor<2, 3>       Q;
+    Q[i][i] = Q[j][j] = std::cos(angle);
+    Q[i][j]           = -std::sin(angle);
+    Q[j][i]           = std::sin(angle);
+    Q[axis][axis]     = 1;
+    return Q;
+  }
+
+  /** Shear a point confined by the isotropic logarithmic strain @p e0 to
+   * F = (I + gamma e_x (x) e_y) exp(e0) I in @p n equal steps; returns F. */
+  template <class Point>
+  Tensor<2, 3>
+  confined_simple_shear(Point             &point,
+                        const double       e0,
+                        const double       gamma,
+                        const unsigned int n)
+  {
+    const Tensor<2, 3> confined =
+      std::exp(e0) * Tensor<2, 3>(unit_symmetric_tensor<3>());
+    Tensor<2, 3> F = confined;
+    for (unsigned int s = 1; s <= n; ++s)
+      {
+        Tensor<2, 3> shear = unit_symmetric_tensor<3>();
+        shear[0][1]        = gamma * s / n;
+        F                  = shear * confined;
+        point.deform(F);
+      }
+    return F;
+  }
+
+  /** Deform @p reference by @p F0 and @p rotated by F0, then Q F0: the
+   * difference of rotated's stress from Q sigma Q^T, relative to it. */
+  template <class Point>
+  double
+  rotation_error(Point              &reference,
+                 Point              &rotated,
+                 const Tensor<2, 3> &F0,
+                 const Tensor<2, 3> &Q)
+  {
+    reference.deform(F0);
+    rotated.deform(F0);
+    rotated.deform(Q * F0);
+    const Tensor<2, 3> expected =
+      Q * Tensor<2, 3>(reference.stress) * transpose(Q);
+    return (Tensor<2, 3>(rotated.stress) - expected).norm() / expected.norm();
+  }
+
+  /** Whether every component is finite. */
+  inline bool
+  all_finite(const SymmetricTensor<2, 3> &tau)
+  {
+    for (unsigned int i = 0; i < 3; ++i)
+      for (unsigned int j = 0; j < 3; ++j)
+        if (!std::isfinite(tau[i][j]))
+          return false;
+    return true;
   }
 
   /** A uniaxial stretch along x with logarithmic strain @p log_strain. */
