@@ -10,12 +10,13 @@ namespace dealmpm
     /** The arrays every particle has, by index into cloud.arrays. */
     struct CoreArrays
     {
-      unsigned int id, body, material, velocity, displacement, stress, J,
-        volume, mass;
+      unsigned int id, body, material, velocity, displacement, stress,
+        deformation_gradient, J, volume, mass;
     };
 
-    /** Vectors and the stress are 3D whatever dim is: ParaView treats
-     * 3-component arrays as vectors and 9-component ones as tensors. */
+    /** Vectors, the stress and F are 3D whatever dim is: ParaView treats
+     * 3-component arrays as vectors and 9-component ones as tensors (in
+     * 2D, F_zz = 1: plane strain). */
     CoreArrays
     add_core_arrays(VtuPointCloud &cloud)
     {
@@ -26,6 +27,8 @@ namespace dealmpm
       a.velocity     = cloud.add_array("velocity", VtuType::Float32, 3);
       a.displacement = cloud.add_array("displacement", VtuType::Float32, 3);
       a.stress       = cloud.add_array("stress", VtuType::Float32, 9);
+      a.deformation_gradient =
+        cloud.add_array("deformation gradient", VtuType::Float32, 9);
       a.J            = cloud.add_array("J", VtuType::Float32, 1);
       a.volume       = cloud.add_array("volume", VtuType::Float32, 1);
       a.mass         = cloud.add_array("mass", VtuType::Float32, 1);
@@ -90,7 +93,11 @@ namespace dealmpm
         }
       for (unsigned int r = 0; r < 3; ++r)
         for (unsigned int c = 0; c < 3; ++c)
-          cloud.arrays[a.stress].reals[9 * i + 3 * r + c] = sigma[r][c];
+          {
+            cloud.arrays[a.stress].reals[9 * i + 3 * r + c] = sigma[r][c];
+            cloud.arrays[a.deformation_gradient].reals[9 * i + 3 * r + c] =
+              (r < dim && c < dim) ? F[r][c] : (r == c ? 1. : 0.);
+          }
       cloud.arrays[a.id].integers[i] = p.get_id();
       cloud.arrays[a.body].integers[i] =
         static_cast<std::int64_t>(props[f.body]);

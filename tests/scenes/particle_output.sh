@@ -4,7 +4,8 @@
 # Float64 points with z = 0 in 2D and one vertex cell each, velocity and
 # displacement as 3-component vectors, the stress as a 9-component tensor
 # with the plane-strain sigma_zz in 2D (nu (sigma_xx + sigma_yy) for the
-# linear elastic disks), symmetric in 3D, and the materials' internal
+# linear elastic disks), symmetric in 3D, the deformation gradient as a
+# 9-component tensor (det F = J, plane strain in 2D), and the materials' internal
 # variables by name.
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/check_lib.sh"
@@ -40,7 +41,8 @@ def common(folder, counter, dim):
     n = v["n_points"]
     expected = {"id": ("Int64", 1), "body": ("Int32", 1), "material": ("Int32", 1),
                 "velocity": ("Float32", 3), "displacement": ("Float32", 3),
-                "stress": ("Float32", 9), "J": ("Float32", 1), "volume": ("Float32", 1),
+                "stress": ("Float32", 9), "deformation gradient": ("Float32", 9),
+                "J": ("Float32", 1), "volume": ("Float32", 1),
                 "mass": ("Float32", 1)}
     if folder != "ids":  # linear elastic
         expected["stress_work"] = ("Float32", 1)
@@ -62,6 +64,17 @@ def common(folder, counter, dim):
     record = parse_xml("%s/particles_%05d.pvtu" % (folder, counter))
     declared = declared_arrays(record.find("PUnstructuredGrid/PPointData"))
     check(declared == {k: a[k][:2] for k in a}, "%s: .pvtu arrays differ" % folder)
+    # det F is J, and in 2D F is plane strain (F_zz = 1, no z coupling).
+    F, J = a["deformation gradient"][2], a["J"][2]
+    for i in range(n):
+        f = F[9 * i:9 * i + 9]
+        det = (f[0] * (f[4] * f[8] - f[5] * f[7]) - f[1] * (f[3] * f[8] - f[5] * f[6])
+               + f[2] * (f[3] * f[7] - f[4] * f[6]))
+        check(abs(det - J[i]) <= 1e-5 * abs(J[i]), "%s: det F %r of point %d is not J %r" % (folder, det, i, J[i]))
+        if dim == 2:
+            check(f[8] == 1 and f[2] == f[5] == f[6] == f[7] == 0, "%s: F of point %d is not plane strain: %r" % (folder, i, f))
+        if failures:
+            break
     if dim == 2:
         for name in ("velocity", "displacement"):
             check(all(x == 0 for x in a[name][2][2::3]), "%s: %s z should be 0" % (folder, name))
