@@ -16,7 +16,7 @@ namespace dealmpm
     : path(path)
     , dim(dim)
     , errors(first.has_error)
-    , plastic_work(first.has_plastic_work)
+    , dissipated_work(first.has_dissipated_work)
   {
     fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
     if (fd < 0)
@@ -25,8 +25,8 @@ namespace dealmpm
     if (dim == 3)
       header += ",momentum_z";
     header += ",kinetic_energy,strain_energy,gravitational_energy";
-    if (plastic_work)
-      header += ",plastic_work";
+    if (dissipated_work)
+      header += ",dissipated_work";
     header +=
       ",total_energy,"
       "external_work,energy_drift,momentum_drift,mass_loss,min_J,max_cfl,"
@@ -82,8 +82,8 @@ namespace dealmpm
       out << ',' << s.momentum[d];
     out << ',' << s.kinetic_energy << ',' << s.strain_energy << ','
         << s.gravitational_energy;
-    if (plastic_work)
-      out << ',' << s.plastic_work;
+    if (dissipated_work)
+      out << ',' << s.dissipated_work;
     out << ',' << s.total_energy() << ',' << external_work << ','
         << a.energy_drift << ',' << a.momentum_drift << ',' << a.mass_loss
         << ',' << a.min_J << ',' << a.max_cfl << ',' << n_lost_particles << ','

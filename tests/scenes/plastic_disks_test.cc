@@ -53,8 +53,8 @@ TEST(PlasticDisks, EnergyBalanceClosesWithPlasticWork)
 {
   auto             simulation = test::make_simulation<2>(plastic_disks(), 2, 1);
   const Statistics initial    = simulation->statistics();
-  ASSERT_TRUE(initial.has_plastic_work);
-  ASSERT_EQ(initial.plastic_work, 0);
+  ASSERT_TRUE(initial.has_dissipated_work);
+  ASSERT_EQ(initial.dissipated_work, 0);
   double max_drift = 0, max_momentum = 0;
   while (simulation->time() < 0.7)
     {
@@ -69,11 +69,11 @@ TEST(PlasticDisks, EnergyBalanceClosesWithPlasticWork)
     }
   const Statistics end = simulation->statistics();
   std::cout << "plastic disks: plastic work / E0 = "
-            << end.plastic_work / initial.total_energy()
+            << end.dissipated_work / initial.total_energy()
             << ", max |E - E0| / E0 = " << max_drift / initial.total_energy()
             << std::endl;
   EXPECT_EQ(end.n_particles, initial.n_particles);
-  EXPECT_GT(end.plastic_work, 0.1 * initial.total_energy());
+  EXPECT_GT(end.dissipated_work, 0.1 * initial.total_energy());
   EXPECT_LT(max_drift, 0.02 * initial.total_energy());
   EXPECT_LT(max_momentum, 1e-12 * initial.mass * 0.5 * std::sqrt(2.));
 }
@@ -85,5 +85,5 @@ TEST(PlasticDisks, ElasticScenesCountNoPlasticWork)
   std::stringstream text;
   text << file.rdbuf();
   auto simulation = test::make_simulation<2>(text.str(), 2, 1);
-  EXPECT_FALSE(simulation->statistics().has_plastic_work);
+  EXPECT_FALSE(simulation->statistics().has_dissipated_work);
 }

@@ -21,10 +21,10 @@ namespace dealmpm
     double                kinetic_energy       = 0;
     double                strain_energy        = 0;
     double                gravitational_energy = 0;
-    /** Work dissipated by the materials (plastic work); only counted when
-     * a material of the scene dissipates. */
-    bool   has_plastic_work = false;
-    double plastic_work     = 0;
+    /** Work dissipated by the materials (plastic work, a fluid's viscous
+     * work); only counted when a material of the scene dissipates. */
+    bool   has_dissipated_work = false;
+    double dissipated_work     = 0;
     /** Displacement error against an effect's exact solution, if any:
      * volume-weighted RMS and max over the particles. */
     bool   has_error = false;
@@ -35,7 +35,7 @@ namespace dealmpm
     total_energy() const
     {
       return kinetic_energy + strain_energy + gravitational_energy +
-             plastic_work;
+             dissipated_work;
     }
 
     template <class Archive>
@@ -44,7 +44,7 @@ namespace dealmpm
     {
       archive &n_particles &mass &momentum[0] & momentum[1] & momentum[2];
       archive &kinetic_energy &strain_energy &gravitational_energy;
-      archive &has_plastic_work              &plastic_work;
+      archive &has_dissipated_work              &dissipated_work;
       archive &has_error &error_L2           &error_max;
     }
   };

@@ -18,7 +18,7 @@ namespace dealmpm
   {
   public:
     /** Create the file with its header. The columns that not every scene
-     * has come with the first statistics: plastic_work (a material
+     * has come with the first statistics: dissipated_work (a material
      * dissipates), error_L2,error_max (an exact solution). */
     StatisticsFile(const std::string &path,
                    const unsigned int dim,
@@ -49,6 +49,6 @@ namespace dealmpm
     std::size_t  size = 0; ///< bytes of complete rows so far
     unsigned int dim;
     bool         errors;
-    bool         plastic_work;
+    bool         dissipated_work;
   };
 } // namespace dealmpm

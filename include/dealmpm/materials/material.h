@@ -85,7 +85,7 @@ namespace dealmpm
     }
 
     /** Whether the model dissipates work (the statistics then have a
-     * plastic_work column). */
+     * dissipated_work column). */
     virtual bool
     dissipates() const
     {
