@@ -119,7 +119,9 @@ namespace
               x += stencil.N[e] * x_i;
               x_grad += outer_product(x_i, stencil.grad_N[e]);
               if (kind != "CPDI") // CPDI may extrapolate
-                EXPECT_GE(stencil.N[e], -1e-14);
+                {
+                  EXPECT_GE(stencil.N[e], -1e-14);
+                }
             }
           EXPECT_NEAR(sum, 1., 1e-13);
           EXPECT_LT(gradient_sum.norm(), 1e-12 * scale);
