@@ -10,6 +10,7 @@
 #include <dealmpm/io/progress.h>
 #include <dealmpm/materials/stress_update.h>
 #include <dealmpm/particles/fill_bodies.h>
+#include <dealmpm/particles/hold_at_walls.h>
 #include <dealmpm/transfer/grid_to_particle.h>
 #include <dealmpm/transfer/particle_to_grid.h>
 
@@ -271,10 +272,18 @@ namespace dealmpm
   void
   Simulation<dim>::relocate_particles()
   {
+    const double held = hold_particles_at_walls(*particles,
+                                                *grid.mapping,
+                                                boundary_conditions.walls());
     lost_this_step.clear();
     particles->handler.sort_particles_into_subdomains_and_cells();
-    const double n_lost =
-      Utilities::MPI::sum(double(lost_this_step.size()), comm);
+    const double local[2] = {held, double(lost_this_step.size())};
+    double       counts[2];
+    Utilities::MPI::sum(ArrayView<const double>(local, 2),
+                        comm,
+                        ArrayView<double>(counts, 2));
+    loop.held_particles += counts[0];
+    const double n_lost = counts[1];
     if (n_lost == 0)
       return;
     loop.lost_particles += n_lost;

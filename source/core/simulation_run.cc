@@ -251,8 +251,12 @@ namespace dealmpm
     Utilities::System::MemoryStats used;
     Utilities::System::get_memory_stats(used);
     pcout << ", peak memory " << used.VmHWM / 1024 << " MB on rank 0";
+    if (loop.held_particles > 0)
+      pcout << ", " << static_cast<long long>(loop.held_particles)
+            << " time(s) a particle was put back on a wall";
     if (loop.lost_particles > 0)
-      pcout << ", " << loop.lost_particles << " particle(s) left the grid";
+      pcout << ", " << static_cast<long long>(loop.lost_particles)
+            << " particle(s) left the grid";
     pcout << std::endl;
   }
 

@@ -2,6 +2,7 @@
 
 #include <dealmpm/base/errors.h>
 #include <dealmpm/grid/boundary_conditions.h>
+#include <dealmpm/grid/face_normal.h>
 
 #include <algorithm>
 #include <cmath>
@@ -142,6 +143,19 @@ namespace dealmpm
     rebuild(grid);
   }
 
+  template <int dim>
+  std::set<types::boundary_id>
+  BoundaryConditions<dim>::walls() const
+  {
+    std::set<types::boundary_id> ids;
+    const Tensor<1, dim>         any_normal = Point<dim>::unit_vector(0);
+    for (const auto &[id, condition] : conditions)
+      if (condition->fixes_nodes() ||
+          !condition->removed_directions(any_normal).empty())
+        ids.insert(id);
+    return ids;
+  }
+
   namespace
   {
     /** Add @p n to @p directions: faces that meet at less than 30 degrees
@@ -164,25 +178,6 @@ namespace dealmpm
             }
         }
       directions.push_back(n);
-    }
-
-    /** Unit normal of a boundary face (its sign unspecified). */
-    template <typename Face>
-    auto
-    face_normal(const Face &face)
-    {
-      constexpr int  dim = Face::AccessorType::space_dimension;
-      Tensor<1, dim> normal;
-      if constexpr (dim == 2)
-        {
-          const Tensor<1, dim> edge = face->vertex(1) - face->vertex(0);
-          normal[0]                 = edge[1];
-          normal[1]                 = -edge[0];
-        }
-      else
-        normal = cross_product_3d(face->vertex(1) - face->vertex(0),
-                                  face->vertex(2) - face->vertex(0));
-      return normal / normal.norm();
     }
   } // namespace
 

@@ -47,8 +47,9 @@ namespace dealmpm
       "Particles leaving the grid",
       "remove",
       Patterns::Selection("remove|stop"),
-      "'remove': drop them with a warning and count them in the "
-      "statistics; 'stop': end the run with a message.");
+      "Particles that cross a free boundary (a slip or no-slip wall puts "
+      "them back on itself): 'remove': drop them with a warning and count "
+      "them in the statistics; 'stop': end the run with a message.");
     prm.leave_subsection();
   }
 

@@ -173,6 +173,13 @@ namespace dealmpm
     {
       return loop.lost_particles;
     }
+    /** Times a particle that crossed a wall was put back on it (all
+     * ranks). */
+    double
+    n_held_particles() const
+    {
+      return loop.held_particles;
+    }
     TimerOutput &
     timer()
     {

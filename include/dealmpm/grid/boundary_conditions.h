@@ -7,6 +7,7 @@
 #include <dealmpm/grid/nodal_fields.h>
 
 #include <map>
+#include <set>
 #include <memory>
 #include <string>
 #include <vector>
@@ -75,6 +76,11 @@ namespace dealmpm
     /** Find the nodes again after the grid changed. */
     void
     rebuild(const BackgroundGrid<dim> &grid);
+
+    /** The ids whose condition constrains the nodes (slip, no-slip): walls
+     * that particles do not cross (hold_particles_at_walls()). */
+    std::set<types::boundary_id>
+    walls() const;
 
     /** Remove the constrained components of a nodal vector field on the
      * locally owned nodes. */

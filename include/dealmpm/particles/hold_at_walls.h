@@ -1,0 +1,32 @@
+#pragma once
+
+#include <deal.II/base/types.h>
+#include <deal.II/fe/mapping.h>
+
+#include <dealmpm/particles/particle_set.h>
+
+#include <set>
+
+namespace dealmpm
+{
+  /**
+   * Put back on the wall every particle that crossed one during the step: a
+   * wall is a boundary face whose id has a condition that constrains the
+   * nodes (slip, no-slip). A particle whose reference location in its old
+   * cell lies beyond such a face is moved onto the face (its displacement
+   * follows) and loses its velocity component out of the domain.
+   *
+   * Why: kernels with a particle domain (uGIMP, cpGIMP, CPDI) interpolate a
+   * velocity at the wall that is not the wall node's, so a particle next to
+   * a wall can step through it and would leave the grid; linear shape
+   * functions slow it to the wall's velocity on the way. Call before the
+   * particles are sorted into cells (the old cell is still theirs).
+   *
+   * @return the number of particles put back on this rank.
+   */
+  template <int dim>
+  unsigned int
+  hold_particles_at_walls(ParticleSet<dim>                    &particles,
+                          const Mapping<dim>                  &mapping,
+                          const std::set<types::boundary_id>  &walls);
+} // namespace dealmpm

@@ -1,0 +1,80 @@
+#include <deal.II/base/geometry_info.h>
+
+#include <dealmpm/grid/face_normal.h>
+#include <dealmpm/particles/hold_at_walls.h>
+
+namespace dealmpm
+{
+  namespace
+  {
+    /** Clamp @p xi onto the faces of @p cell that are walls and that it
+     * lies beyond; their outward normals. */
+    template <int dim, typename Cell>
+    std::vector<Tensor<1, dim>>
+    clamp_to_walls(Point<dim>                         &xi,
+                   const Cell                         &cell,
+                   const std::set<types::boundary_id> &walls)
+    {
+      std::vector<Tensor<1, dim>> normals;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          // Faces 2d (xi_d = 0) and 2d + 1 (xi_d = 1) of the unit cell.
+          const int side = xi[d] < 0 ? 0 : (xi[d] > 1 ? 1 : -1);
+          if (side < 0)
+            continue;
+          const auto face = cell->face(2 * d + side);
+          if (face->at_boundary() && walls.count(face->boundary_id()) > 0)
+            {
+              xi[d] = side;
+              const Tensor<1, dim> n = face_normal(face);
+              normals.push_back(n * (face->center() - cell->center()) > 0 ?
+                                  n :
+                                  -n);
+            }
+        }
+      return normals;
+    }
+  } // namespace
+
+  template <int dim>
+  unsigned int
+  hold_particles_at_walls(ParticleSet<dim>                   &particles,
+                          const Mapping<dim>                 &mapping,
+                          const std::set<types::boundary_id> &walls)
+  {
+    if (walls.empty())
+      return 0;
+    const CoreFields &f     = particles.fields;
+    unsigned int      moved = 0;
+    for (auto &p : particles.handler)
+      {
+        Point<dim> xi = p.get_reference_location();
+        if (GeometryInfo<dim>::is_inside_unit_cell(xi))
+          continue;
+        const auto cell    = p.get_surrounding_cell();
+        const auto normals = clamp_to_walls(xi, cell, walls);
+        if (normals.empty())
+          continue;
+        const Point<dim> x = mapping.transform_unit_to_real_cell(cell, xi);
+        const ArrayView<double> props = p.get_properties();
+        write_vector<dim>(&props[f.displacement],
+                          read_vector<dim>(&props[f.displacement]) +
+                            (x - p.get_location()));
+        Tensor<1, dim> v = read_vector<dim>(&props[f.velocity]);
+        for (const Tensor<1, dim> &n : normals)
+          v -= std::max(0., v * n) * n;
+        write_vector<dim>(&props[f.velocity], v);
+        p.set_location(x);
+        p.set_reference_location(xi);
+        ++moved;
+      }
+    return moved;
+  }
+
+#define DEALMPM_INSTANTIATE(dim)                                  \
+  template unsigned int hold_particles_at_walls(                  \
+    ParticleSet<dim> &, const Mapping<dim> &, const std::set<types::boundary_id> &);
+  DEALMPM_INSTANTIATE(2)
+  DEALMPM_INSTANTIATE(3)
+#undef DEALMPM_INSTANTIATE
+} // namespace dealmpm
