@@ -73,8 +73,8 @@ namespace dealmpm
     s.kinetic_energy       = sums[5];
     s.strain_energy        = sums[6];
     s.gravitational_energy = sums[7];
-    s.has_dissipated_work     = dissipates;
-    s.dissipated_work         = sums[8];
+    s.has_dissipated_work  = dissipates;
+    s.dissipated_work      = sums[8];
     if (exact != nullptr)
       {
         s.has_error = true;

@@ -29,9 +29,9 @@ namespace dealmpm
       a.stress       = cloud.add_array("stress", VtuType::Float32, 9);
       a.deformation_gradient =
         cloud.add_array("deformation gradient", VtuType::Float32, 9);
-      a.J            = cloud.add_array("J", VtuType::Float32, 1);
-      a.volume       = cloud.add_array("volume", VtuType::Float32, 1);
-      a.mass         = cloud.add_array("mass", VtuType::Float32, 1);
+      a.J      = cloud.add_array("J", VtuType::Float32, 1);
+      a.volume = cloud.add_array("volume", VtuType::Float32, 1);
+      a.mass   = cloud.add_array("mass", VtuType::Float32, 1);
       return a;
     }
 

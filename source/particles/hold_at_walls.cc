@@ -25,11 +25,10 @@ namespace dealmpm
           const auto face = cell->face(2 * d + side);
           if (face->at_boundary() && walls.count(face->boundary_id()) > 0)
             {
-              xi[d] = side;
+              xi[d]                  = side;
               const Tensor<1, dim> n = face_normal(face);
-              normals.push_back(n * (face->center() - cell->center()) > 0 ?
-                                  n :
-                                  -n);
+              normals.push_back(n * (face->center() - cell->center()) > 0 ? n :
+                                                                            -n);
             }
         }
       return normals;
@@ -71,9 +70,11 @@ namespace dealmpm
     return moved;
   }
 
-#define DEALMPM_INSTANTIATE(dim)                                  \
-  template unsigned int hold_particles_at_walls(                  \
-    ParticleSet<dim> &, const Mapping<dim> &, const std::set<types::boundary_id> &);
+#define DEALMPM_INSTANTIATE(dim)                 \
+  template unsigned int hold_particles_at_walls( \
+    ParticleSet<dim> &,                          \
+    const Mapping<dim> &,                        \
+    const std::set<types::boundary_id> &);
   DEALMPM_INSTANTIATE(2)
   DEALMPM_INSTANTIATE(3)
 #undef DEALMPM_INSTANTIATE

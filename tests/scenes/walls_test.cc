@@ -22,8 +22,9 @@ namespace
     std::ifstream     file(DEALMPM_SOURCE_DIR "/prm/hard-cases/dam_break.prm");
     std::stringstream text;
     text << file.rdbuf();
-    return text.str() + "subsection Grid\n set Cells = 56, 20\nend\n"
-                        "subsection MPM\n set Shape function = " +
+    return text.str() +
+           "subsection Grid\n set Cells = 56, 20\nend\n"
+           "subsection MPM\n set Shape function = " +
            kernel + "\n set Particles leaving the grid = stop\nend\n";
   }
 } // namespace

@@ -11,10 +11,10 @@ namespace dealmpm
   /**
    * Everything a run has learnt besides its particles and grid: where it is
    * (time, step), what it has written (the output record), when it writes
-   * next, its speed counters, the particles it lost or held at a wall, the accuracy monitor,
-   * and each effect's accumulators (in the order the scene lists them,
-   * filled when the state is saved). Written and read whole, so that a
-   * later `resume` can rebuild the loop from a saved run instead of from
+   * next, its speed counters, the particles it lost or held at a wall, the
+   * accuracy monitor, and each effect's accumulators (in the order the scene
+   * lists them, filled when the state is saved). Written and read whole, so
+   * that a later `resume` can rebuild the loop from a saved run instead of from
    * the scene's start.
    */
   struct RunState
@@ -35,8 +35,8 @@ namespace dealmpm
     serialize(Archive &archive, const unsigned int /*version*/)
     {
       archive &time &step &next_output &particle_steps &stepping_time;
-      archive &lost_particles &held_particles &output &accuracy;
-      archive &effect_states;
+      archive &lost_particles &held_particles &output  &accuracy;
+      archive                                          &effect_states;
     }
 
     /** As text with every double to the last bit. */

@@ -44,7 +44,7 @@ namespace dealmpm
     {
       archive &n_particles &mass &momentum[0] & momentum[1] & momentum[2];
       archive &kinetic_energy &strain_energy &gravitational_energy;
-      archive &has_dissipated_work              &dissipated_work;
+      archive &has_dissipated_work           &dissipated_work;
       archive &has_error &error_L2           &error_max;
     }
   };

@@ -7,8 +7,8 @@
 #include <dealmpm/grid/nodal_fields.h>
 
 #include <map>
-#include <set>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 

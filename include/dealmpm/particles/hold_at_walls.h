@@ -26,7 +26,7 @@ namespace dealmpm
    */
   template <int dim>
   unsigned int
-  hold_particles_at_walls(ParticleSet<dim>                    &particles,
-                          const Mapping<dim>                  &mapping,
-                          const std::set<types::boundary_id>  &walls);
+  hold_particles_at_walls(ParticleSet<dim>                   &particles,
+                          const Mapping<dim>                 &mapping,
+                          const std::set<types::boundary_id> &walls);
 } // namespace dealmpm
