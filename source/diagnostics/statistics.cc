@@ -21,7 +21,7 @@ namespace dealmpm
         exact = effect.get();
     double            squared_error = 0, volume = 0, max_error = 0;
     const CoreFields &f = particles.fields;
-    // n, mass, momentum (3), kinetic, strain, gravitational, plastic work
+    // n, mass, momentum (3), kinetic, strain, gravitational, dissipated work
     std::array<double, 9> sums{};
     bool                  dissipates = false;
     for (const auto &material : materials)

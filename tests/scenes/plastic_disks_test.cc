@@ -78,7 +78,7 @@ TEST(PlasticDisks, EnergyBalanceClosesWithPlasticWork)
   EXPECT_LT(max_momentum, 1e-12 * initial.mass * 0.5 * std::sqrt(2.));
 }
 
-// A scene whose materials do not dissipate has no plastic work column.
+// A scene whose materials do not dissipate has no dissipated_work column.
 TEST(PlasticDisks, ElasticScenesCountNoPlasticWork)
 {
   std::ifstream     file(DEALMPM_SOURCE_DIR "/prm/colliding_disks.prm");

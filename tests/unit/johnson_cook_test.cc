@@ -189,7 +189,6 @@ TEST(JohnsonCook, DamageIndicator)
   EXPECT_NEAR(shear.model.damage(shear.state()),
               alpha(shear) / (0.54 + 4.89),
               1e-12);
-  EXPECT_NEAR(expected, alpha(shear) / (0.54 + 4.89), 1e-12);
 
   const auto pulled = sheared_with_damage(0.001, 1., expected);
   EXPECT_NEAR(pulled.model.damage(pulled.state()), expected, 1e-10 * expected);

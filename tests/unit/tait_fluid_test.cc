@@ -71,7 +71,7 @@ TEST(TaitFluid, WaveSpeedIsSqrtDpDrho)
 }
 
 // Simple shear at rate 3/s at J = 1: sigma_xy = mu * 3, no normal stress;
-// the viscous work grows by dt 2 mu D : D = dt mu 9 / 2.
+// the viscous work grows by dt 2 mu D : D = 9 mu dt (D : D = 9 / 2).
 TEST(TaitFluid, ViscousShear)
 {
   Water p(water(true));

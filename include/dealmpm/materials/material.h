@@ -75,7 +75,8 @@ namespace dealmpm
                           ArrayView<const double>        internal) const = 0;
 
     /**
-     * Work dissipated so far (plastic work) per unit reference volume, for
+     * Work dissipated so far (plastic work, a fluid's viscous work) per
+     * unit reference volume, for
      * the energy balance; only models for which dissipates() is true.
      */
     virtual double
