@@ -37,7 +37,8 @@ namespace dealmpm
     /**
      * The closest point (in the energy norm of the flow) of @p tau on one
      * or two planes, all active: tau -= sum d_gamma_j D n_j with
-     * a_i . tau = r_i. Returns false when a multiplier is negative.
+     * a_i . tau = r_i. Returns false, leaving @p tau as it was, when a
+     * multiplier is negative.
      */
     bool
     return_to_planes(Principal                  &tau,
@@ -59,12 +60,11 @@ namespace dealmpm
         }
       const Eigen::Vector2d d_gamma = A.partialPivLu().solve(f);
       for (unsigned int j = 0; j < m; ++j)
-        {
-          if (d_gamma[j] < 0)
-            return false;
-          for (unsigned int a = 0; a < 3; ++a)
-            tau[a] -= d_gamma[j] * Dn[j][a];
-        }
+        if (d_gamma[j] < 0)
+          return false; // tau untouched
+      for (unsigned int j = 0; j < m; ++j)
+        for (unsigned int a = 0; a < 3; ++a)
+          tau[a] -= d_gamma[j] * Dn[j][a];
       return true;
     }
 
@@ -153,7 +153,8 @@ namespace dealmpm
     if (returned[1] > T)
       {
         returned = tau;
-        return_to_planes(returned, {{first, second}}, 2, lambda, G);
+        if (!return_to_planes(returned, {{first, second}}, 2, lambda, G))
+          returned = {{T, T, T}};
       }
     if (returned[2] > T)
       returned = {{T, T, T}};
