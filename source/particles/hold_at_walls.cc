@@ -7,6 +7,11 @@ namespace dealmpm
 {
   namespace
   {
+    /** Beyond a face by more than this (in reference coordinates): the
+     * slack move() allows before it asks for a sort, so that round-off on a
+     * face is neither moved nor counted. */
+    constexpr double beyond = 1e-12;
+
     /** Clamp @p xi onto the faces of @p cell that are walls and that it
      * lies beyond; their outward normals. */
     template <int dim, typename Cell>
@@ -19,7 +24,7 @@ namespace dealmpm
       for (unsigned int d = 0; d < dim; ++d)
         {
           // Faces 2d (xi_d = 0) and 2d + 1 (xi_d = 1) of the unit cell.
-          const int side = xi[d] < 0 ? 0 : (xi[d] > 1 ? 1 : -1);
+          const int side = xi[d] < -beyond ? 0 : (xi[d] > 1 + beyond ? 1 : -1);
           if (side < 0)
             continue;
           const auto face = cell->face(2 * d + side);
@@ -48,7 +53,7 @@ namespace dealmpm
     for (auto &p : particles.handler)
       {
         Point<dim> xi = p.get_reference_location();
-        if (GeometryInfo<dim>::is_inside_unit_cell(xi))
+        if (GeometryInfo<dim>::is_inside_unit_cell(xi, beyond))
           continue;
         const auto cell    = p.get_surrounding_cell();
         const auto normals = clamp_to_walls(xi, cell, walls);

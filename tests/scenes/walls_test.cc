@@ -35,7 +35,8 @@ TEST(Walls, HoldTheParticlesOfKernelsWithDomains)
     {
       auto simulation = test::make_simulation<2>(coarse_dam_break(kernel));
       const Statistics initial = simulation->statistics();
-      // With 'stop', a particle through a wall would end the run.
+      // 'Particles leaving the grid = remove' (the default): a particle
+      // through a wall would be dropped and counted.
       while (simulation->time() < 0.22)
         simulation->advance(simulation->time_step());
       const Statistics end = simulation->statistics();
