@@ -151,7 +151,7 @@ namespace dealmpm
     }
 
     template <typename Accessor>
-    void
+    DEAL_II_ALWAYS_INLINE void
     operator()(const Accessor          &p,
                const ArrayView<double> &props,
                const Tensor<2, dim>    &L,
