@@ -34,7 +34,11 @@ CASES = {
                        (0, 0.5, 4), "sigma_yy"),
     "stiff_on_soft": ("prm/hard-cases/stiff_on_soft.prm", "stress", 4,
                       (0, 0.5, 3), "sigma_yy"),
+    "taylor_bar": ("prm/hard-cases/taylor_bar.prm", "plastic_strain", 0,
+                   (0, 2e-5, 8e-5), "plastic strain"),
 }
+# 3D cases seen from the side (looking along +y, z up) rather than from +z.
+SIDE_VIEW = {"taylor_bar"}
 
 
 def run(dealmpm, scene, folder, times):
@@ -45,7 +49,7 @@ def run(dealmpm, scene, folder, times):
                    check=True, capture_output=True)
 
 
-def render(folder, name, field, component, times, label):
+def render(folder, name, field, component, times, label, side):
     reader = PVDReader(FileName=os.path.join(folder, "particles.pvd"))
     view = GetActiveViewOrCreate("RenderView")
     view.ViewSize = [480, 320]
@@ -75,15 +79,21 @@ def render(folder, name, field, component, times, label):
         for d in range(3):
             low[d], high[d] = min(low[d], b[2 * d]), max(high[d], b[2 * d + 1])
     center = [(a + b) / 2 for a, b in zip(low, high)]
+    up = 2 if side else 1
+    distance = 10 * max(high[0] - low[0], 1e-9)
     view.CameraFocalPoint = center
-    view.CameraPosition = [center[0], center[1], center[2] + 10 * max(high[0] - low[0], 1e-9)]
-    view.CameraViewUp = [0, 1, 0]
+    view.CameraPosition = ([center[0], center[1] - distance, center[2]] if side else
+                           [center[0], center[1], center[2] + distance])
+    view.CameraViewUp = [0, 0, 1] if side else [0, 1, 0]
     view.CameraParallelProjection = 1
-    view.CameraParallelScale = 0.6 * max((high[1] - low[1]), (high[0] - low[0]) * 320 / 480)
+    view.CameraParallelScale = 0.6 * max((high[up] - low[up]), (high[0] - low[0]) * 320 / 480)
     bar = GetScalarBar(lut, view)
     files = []
     for k, step in enumerate(steps):
         view.ViewTime = step
+        # The range must be this time's: without the update it is the
+        # range of the pipeline's last update (another time).
+        reader.UpdatePipeline(step)
         display.RescaleTransferFunctionToDataRange(False, True)
         bar.Title = label
         bar.ComponentTitle = ""
@@ -105,8 +115,8 @@ def main():
     for name, (scene, field, component, times, label) in CASES.items():
         folder = os.path.join(work, name)
         run(dealmpm, scene, folder, times)
-        files = render(folder, name, field, component, times, label)
-        cells = " ".join("![%s at t = %.2f s](doc/pictures/%s)" % (name, t, os.path.basename(p))
+        files = render(folder, name, field, component, times, label, name in SIDE_VIEW)
+        cells = " ".join("![%s at t = %.3g s](doc/pictures/%s)" % (name, t, os.path.basename(p))
                          for t, p in files)
         print("| %s | %s | %s |" % (name, label, cells))
 

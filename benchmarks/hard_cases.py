@@ -293,9 +293,17 @@ CASES = {
     "taylor_bar_steel": dict(scene=os.path.join(SCENES, "taylor_bar_steel.prm"),
                              h=0.0008, growth=0.02, csv=False, vtu=True,
                              answer=taylor_answer("steel", 0.01, 0.05),
-                             refinements=[(0.0144 / 27, ["Grid/Cells=27, 27, 62",
-                                                         "Grid/Upper corner=0.0072, 0.0072, %.7g"
-                                                         % (62 * 0.0144 / 27)]),
+                             # Cells with a whole number of particle layers
+                             # in the 32.4 mm bar (0.0648 / h), so that no
+                             # layer of centres lies on its end faces.
+                             refinements=[(0.0648 / 122, ["Grid/Cells=27, 27, 62",
+                                                          "Grid/Lower corner=%.8g, %.8g, 0"
+                                                          % (-13.5 * 0.0648 / 122,
+                                                             -13.5 * 0.0648 / 122),
+                                                          "Grid/Upper corner=%.8g, %.8g, %.8g"
+                                                          % (13.5 * 0.0648 / 122,
+                                                             13.5 * 0.0648 / 122,
+                                                             62 * 0.0648 / 122)]),
                                           (0.0004, ["Grid/Cells=36, 36, 82"])]),
     "long_vibrating_bar": dict(scene=os.path.join(ROOT, "prm", "vibrating_bar.prm"),
                                overrides=["Time/End time=1000", "Output/Interval=10"],
