@@ -77,7 +77,13 @@ namespace dealmpm
       for (const FieldDescription &field : effect->nodal_fields_per_body())
         nodal.request_per_body(field);
     nodal.reinit(grid.partitioner, bodies.size());
-    stages = stages_of<dim>(run_settings.method.scheme);
+    if (run_settings.method.split_mixed_cells)
+      {
+        mixed_cells = std::make_unique<MixedCellSplit<dim>>(materials);
+        if (!mixed_cells->needed())
+          mixed_cells.reset();
+      }
+    stages = stages_of<dim>(run_settings.method.scheme, mixed_cells != nullptr);
 
     particle_check  = check_particles(grid, materials, *particles);
     max_signal_rate = Utilities::MPI::max(particle_check.max_signal_rate, comm);
@@ -237,6 +243,7 @@ namespace dealmpm
                          loop.time,
                          dt,
                          *computing_timer);
+    state.mixed_cells = mixed_cells.get();
     for (const Stage<dim> &stage : stages)
       stage.run(state, stage.name);
 

@@ -8,9 +8,15 @@ namespace dealmpm
 {
   template <int dim>
   std::vector<Stage<dim>>
-  stages_of(const UpdateScheme scheme)
+  stages_of(const UpdateScheme scheme, const bool split_mixed_cells)
   {
     using namespace stages;
+    // Before the sweep that deforms the particles, from the velocity it
+    // reads.
+    const auto split = [&](std::vector<Stage<dim>> &list) {
+      if (split_mixed_cells)
+        list.push_back({"mixed-cell split", &mixed_cell_split<dim>});
+    };
     const Stage<dim> first[]          = {{"stencil", &stencil<dim>}};
     const Stage<dim> p2g_and_forces[] = {
       {"P2G", &p2g<dim>},
@@ -25,12 +31,14 @@ namespace dealmpm
           list.insert(list.end(),
                       std::begin(p2g_and_forces),
                       std::end(p2g_and_forces));
+          split(list);
           list.push_back(
             {"G2P and stress update", &g2p_and_stress_update<dim>});
           break;
         case UpdateScheme::USF:
           list.push_back({"P2G", &p2g_mass_momentum<dim>});
           list.push_back({"grid update", &velocity_from_momentum<dim>});
+          split(list);
           list.push_back({"stress update", &stress_update<dim>});
           list.push_back({"P2G", &p2g_force<dim>});
           list.insert(list.end(),
@@ -47,6 +55,7 @@ namespace dealmpm
           list.push_back({"G2P", &g2p<dim>});
           list.push_back({"P2G", &p2g_mass_momentum<dim>});
           list.push_back({"grid update", &velocity_from_momentum<dim>});
+          split(list);
           list.push_back({"stress update", &stress_update<dim>});
           break;
       }
@@ -159,8 +168,30 @@ namespace dealmpm
 
     template <int dim>
     void
+    mixed_cell_split(StepState<dim> &s, const std::string &timer_section)
+    {
+      TimerOutput::Scope t(s.timer, timer_section);
+      s.mixed_cells->prepare(s.grid, s.particles, s.stencil, s.fields, s.dt);
+    }
+
+    template <int dim>
+    void
     g2p_and_stress_update(StepState<dim> &s, const std::string &timer_section)
     {
+      if (s.mixed_cells)
+        {
+          TimerOutput::Scope t(s.timer, timer_section);
+          s.left_cell = grid_to_particle<G2P::motion_and_deformation>(
+            s.grid,
+            s.stencil,
+            s.fields,
+            s.dt,
+            s.method.flip_fraction,
+            s.particles,
+            s.stress_update,
+            *s.mixed_cells);
+          return;
+        }
       TimerOutput::Scope t(s.timer, timer_section);
       s.left_cell =
         grid_to_particle<G2P::motion_and_deformation>(s.grid,
@@ -185,6 +216,19 @@ namespace dealmpm
     void
     stress_update(StepState<dim> &s, const std::string &timer_section)
     {
+      if (s.mixed_cells)
+        {
+          TimerOutput::Scope t(s.timer, timer_section);
+          grid_to_particle<G2P::deformation>(s.grid,
+                                             s.stencil,
+                                             s.fields,
+                                             s.dt,
+                                             s.method.flip_fraction,
+                                             s.particles,
+                                             s.stress_update,
+                                             *s.mixed_cells);
+          return;
+        }
       TimerOutput::Scope t(s.timer, timer_section);
       grid_to_particle<G2P::deformation>(s.grid,
                                          s.stencil,
@@ -207,7 +251,7 @@ namespace dealmpm
   } // namespace stages
 
 #define DEALMPM_INSTANTIATE(dim) \
-  template std::vector<Stage<dim>> stages_of(UpdateScheme);
+  template std::vector<Stage<dim>> stages_of(UpdateScheme, bool);
   DEALMPM_INSTANTIATE(2)
   DEALMPM_INSTANTIATE(3)
 #undef DEALMPM_INSTANTIATE

@@ -27,6 +27,7 @@
 #include <dealmpm/schemes/time_stepping.h>
 #include <dealmpm/schemes/update_scheme.h>
 #include <dealmpm/transfer/kernel.h>
+#include <dealmpm/transfer/mixed_cell_split.h>
 
 #include <functional>
 #include <memory>
@@ -247,7 +248,9 @@ namespace dealmpm
     MemoryEstimate                              memory;
     Stencil<dim>                                stencil;
     std::vector<Stage<dim>>                     stages;
-    double                                      mass_threshold = 0;
+    /** Only when the scene's materials differ in stiffness. */
+    std::unique_ptr<MixedCellSplit<dim>> mixed_cells;
+    double                               mass_threshold = 0;
     /** Made last in the constructor: a TimerOutput destroyed while an
      * input error propagates prints a warning about MPI. */
     std::unique_ptr<TimerOutput> computing_timer;

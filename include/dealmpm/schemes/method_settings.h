@@ -25,6 +25,9 @@ namespace dealmpm
     std::string shape_function            = "linear";
     double      relative_mass_threshold   = 1e-9;
     bool        stop_when_particles_leave = false;
+    /** Split the strain rate by stiffness in cells shared by materials of
+     * different stiffness (MixedCellSplit). */
+    bool split_mixed_cells = true;
 
     /** Declare the section's entries. */
     static void

@@ -22,10 +22,12 @@ namespace dealmpm
 
   /** The stages of one step of @p scheme, in order. Every list starts with
    * the stencil and ends with the particles moved and their stress updated;
-   * relocation into new cells follows the list. */
+   * relocation into new cells follows the list. With @p split_mixed_cells,
+   * the mixed-cell split (MixedCellSplit) comes before the sweep that
+   * deforms the particles, and that sweep applies it. */
   template <int dim>
   std::vector<Stage<dim>>
-  stages_of(const UpdateScheme scheme);
+  stages_of(const UpdateScheme scheme, const bool split_mixed_cells = false);
 
   /** The stages, each a function of the step's state. */
   namespace stages
@@ -67,6 +69,12 @@ namespace dealmpm
     void
     effects_after_grid_update(StepState<dim>    &state,
                               const std::string &timer_section);
+
+    /** The mixed-cell split's corrections from the grid velocity that the
+     * next deforming sweep reads. */
+    template <int dim>
+    void
+    mixed_cell_split(StepState<dim> &state, const std::string &timer_section);
 
     /** v = p / m with boundary conditions (USF, MUSL). */
     template <int dim>

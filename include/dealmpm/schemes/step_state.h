@@ -11,6 +11,7 @@
 #include <dealmpm/particles/particle_set.h>
 #include <dealmpm/schemes/method_settings.h>
 #include <dealmpm/transfer/kernel.h>
+#include <dealmpm/transfer/mixed_cell_split.h>
 #include <dealmpm/transfer/stencil.h>
 
 #include <memory>
@@ -85,6 +86,9 @@ namespace dealmpm
 
     /** The stress update and what it learns of the particles. */
     StressUpdate<dim> stress_update;
+    /** The strain-rate split of cells shared by materials of different
+     * stiffness, or nullptr when the scene has none or turns it off. */
+    MixedCellSplit<dim> *mixed_cells = nullptr;
     /** Some particle left its cell in G2P (they are relocated after the
      * step). */
     bool left_cell = false;

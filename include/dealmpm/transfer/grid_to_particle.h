@@ -25,6 +25,15 @@ namespace dealmpm
     {}
   };
 
+  /** A gradient adjustment that leaves L as it is. */
+  struct NoGradientAdjustment
+  {
+    template <typename... Args>
+    void
+    operator()(const Args &...) const
+    {}
+  };
+
   namespace g2p_sweep
   {
     /** The particle's new velocity: with APIC, v = sum N v and the
@@ -108,14 +117,18 @@ namespace dealmpm
    *   position (Jiang et al. 2015): this, not C_p = sum v (x) grad N, makes
    *   the grid -> particle -> grid round trip conserve angular momentum for
    *   any shape functions, multilinear ones included;
-   * - deformation: L = sum v (x) grad N, F <- (I + dt L) F, then
+   * - deformation: L = sum v (x) grad N, then @p adjust_gradient(cell,
+   *   properties, L) (MixedCellSplit), F <- (I + dt L) F, then
    *   @p after_deformation(particle, properties, L, F, cell) (the stress
    *   update, see StressUpdate) in the same sweep: the step is bound by
    *   memory traffic, and a sweep less is worth more than arithmetic saved.
    *
    * @return true if motion moved some local particle out of its cell.
    */
-  template <G2P what, int dim, typename AfterDeformation = NoAfterDeformation>
+  template <G2P what,
+            int dim,
+            typename AfterDeformation = NoAfterDeformation,
+            typename AdjustGradient   = NoGradientAdjustment>
   bool
   grid_to_particle(const BackgroundGrid<dim> &grid,
                    const Stencil<dim>        &stencil,
@@ -123,7 +136,8 @@ namespace dealmpm
                    const double               dt,
                    const double               flip_fraction,
                    ParticleSet<dim>          &particles,
-                   AfterDeformation         &&after_deformation = {})
+                   AfterDeformation         &&after_deformation = {},
+                   const AdjustGradient      &adjust_gradient   = {})
   {
     constexpr bool motion      = what != G2P::deformation;
     constexpr bool deformation = what != G2P::motion;
@@ -176,6 +190,7 @@ namespace dealmpm
             }
           if (deformation)
             {
+              adjust_gradient(c, props, L);
               const Tensor<2, dim> F = g2p_sweep::deform(props, f, L, dt);
               after_deformation(p, props, L, F, c);
             }
