@@ -174,33 +174,35 @@ namespace dealmpm
       s.mixed_cells->prepare(s.grid, s.particles, s.stencil, s.fields, s.dt);
     }
 
+    /** Run @p sweep(adjust) with the step's velocity-gradient adjustment:
+     * the mixed-cell split if the scene has one, else none, so that scenes
+     * without it run a sweep compiled without it. */
+    template <int dim, typename Sweep>
+    void
+    with_gradient_adjustment(StepState<dim> &s, const Sweep &sweep)
+    {
+      if (s.mixed_cells)
+        sweep(*s.mixed_cells);
+      else
+        sweep(NoGradientAdjustment());
+    }
+
     template <int dim>
     void
     g2p_and_stress_update(StepState<dim> &s, const std::string &timer_section)
     {
-      if (s.mixed_cells)
-        {
-          TimerOutput::Scope t(s.timer, timer_section);
-          s.left_cell = grid_to_particle<G2P::motion_and_deformation>(
-            s.grid,
-            s.stencil,
-            s.fields,
-            s.dt,
-            s.method.flip_fraction,
-            s.particles,
-            s.stress_update,
-            *s.mixed_cells);
-          return;
-        }
       TimerOutput::Scope t(s.timer, timer_section);
-      s.left_cell =
-        grid_to_particle<G2P::motion_and_deformation>(s.grid,
-                                                      s.stencil,
-                                                      s.fields,
-                                                      s.dt,
-                                                      s.method.flip_fraction,
-                                                      s.particles,
-                                                      s.stress_update);
+      with_gradient_adjustment(s, [&](const auto &adjust) {
+        s.left_cell =
+          grid_to_particle<G2P::motion_and_deformation>(s.grid,
+                                                        s.stencil,
+                                                        s.fields,
+                                                        s.dt,
+                                                        s.method.flip_fraction,
+                                                        s.particles,
+                                                        s.stress_update,
+                                                        adjust);
+      });
     }
 
     template <int dim>
@@ -216,27 +218,17 @@ namespace dealmpm
     void
     stress_update(StepState<dim> &s, const std::string &timer_section)
     {
-      if (s.mixed_cells)
-        {
-          TimerOutput::Scope t(s.timer, timer_section);
-          grid_to_particle<G2P::deformation>(s.grid,
-                                             s.stencil,
-                                             s.fields,
-                                             s.dt,
-                                             s.method.flip_fraction,
-                                             s.particles,
-                                             s.stress_update,
-                                             *s.mixed_cells);
-          return;
-        }
       TimerOutput::Scope t(s.timer, timer_section);
-      grid_to_particle<G2P::deformation>(s.grid,
-                                         s.stencil,
-                                         s.fields,
-                                         s.dt,
-                                         s.method.flip_fraction,
-                                         s.particles,
-                                         s.stress_update);
+      with_gradient_adjustment(s, [&](const auto &adjust) {
+        grid_to_particle<G2P::deformation>(s.grid,
+                                           s.stencil,
+                                           s.fields,
+                                           s.dt,
+                                           s.method.flip_fraction,
+                                           s.particles,
+                                           s.stress_update,
+                                           adjust);
+      });
     }
 
     template <int dim>
