@@ -63,6 +63,25 @@ namespace dealmpm
       "that a stiff particle takes a soft neighbour's strain. Costs one "
       "pass over the particles per step, and nothing in scenes whose "
       "materials are equally stiff.");
+    prm.declare_entry(
+      "Deformation gradient update",
+      "first order",
+      Patterns::Selection(DeformationUpdate::pattern()),
+      "How F advances over a step, F <- dF F with dF approximating "
+      "exp(dt L): 'first order' (I + dt L: the cheapest; J > 0 only while "
+      "dt |L| is small), 'Taylor series' (the exponential's series up to "
+      "the power 'Taylor terms'), 'Cayley' ((I - dt L / 2)^-1 (I + dt L / "
+      "2): second order, and a rotation for a spin, so that rigid rotation "
+      "keeps J = 1 exactly) or 'subcycle' ((I + dt L / N)^N, N = "
+      "'Subcycles').");
+    prm.declare_entry("Taylor terms",
+                      "4",
+                      Patterns::Integer(1, 20),
+                      "Highest power of dt L kept by 'Taylor series'.");
+    prm.declare_entry("Subcycles",
+                      "4",
+                      Patterns::Integer(1, 1000),
+                      "Number of substeps N of 'subcycle'.");
     prm.leave_subsection();
   }
 
@@ -91,6 +110,10 @@ namespace dealmpm
       reader.get("Particles leaving the grid") == "stop";
     s.split_mixed_cells =
       reader.get("Mixed-material cells") == "split by stiffness";
+    s.deformation_update.variant =
+      DeformationUpdate::parse(reader.get("Deformation gradient update"));
+    s.deformation_update.taylor_terms = reader.get_integer("Taylor terms");
+    s.deformation_update.subcycles    = reader.get_integer("Subcycles");
     return s;
   }
 } // namespace dealmpm

@@ -174,17 +174,25 @@ namespace dealmpm
       s.mixed_cells->prepare(s.grid, s.particles, s.stencil, s.fields, s.dt);
     }
 
-    /** Run @p sweep(adjust) with the step's velocity-gradient adjustment:
-     * the mixed-cell split if the scene has one, else none, so that scenes
-     * without it run a sweep compiled without it. */
+    /** Run @p sweep(adjust, increment) with the step's velocity-gradient
+     * adjustment (the mixed-cell split if the scene has one, else none) and
+     * F increment (first order unless the scene chose another), so that a
+     * scene runs a sweep compiled with only what it chose. */
     template <int dim, typename Sweep>
     void
-    with_gradient_adjustment(StepState<dim> &s, const Sweep &sweep)
+    with_deformation_choices(StepState<dim> &s, const Sweep &sweep)
     {
+      const DeformationUpdate &update         = s.method.deformation_update;
+      const auto               with_increment = [&](const auto &adjust) {
+        if (update.variant == DeformationUpdate::Variant::first_order)
+          sweep(adjust, FirstOrderIncrement());
+        else
+          sweep(adjust, ChosenIncrement{update});
+      };
       if (s.mixed_cells)
-        sweep(*s.mixed_cells);
+        with_increment(*s.mixed_cells);
       else
-        sweep(NoGradientAdjustment());
+        with_increment(NoGradientAdjustment());
     }
 
     template <int dim>
@@ -192,17 +200,19 @@ namespace dealmpm
     g2p_and_stress_update(StepState<dim> &s, const std::string &timer_section)
     {
       TimerOutput::Scope t(s.timer, timer_section);
-      with_gradient_adjustment(s, [&](const auto &adjust) {
-        s.left_cell =
-          grid_to_particle<G2P::motion_and_deformation>(s.grid,
-                                                        s.stencil,
-                                                        s.fields,
-                                                        s.dt,
-                                                        s.method.flip_fraction,
-                                                        s.particles,
-                                                        s.stress_update,
-                                                        adjust);
-      });
+      with_deformation_choices(
+        s, [&](const auto &adjust, const auto &increment) {
+          s.left_cell = grid_to_particle<G2P::motion_and_deformation>(
+            s.grid,
+            s.stencil,
+            s.fields,
+            s.dt,
+            s.method.flip_fraction,
+            s.particles,
+            s.stress_update,
+            adjust,
+            increment);
+        });
     }
 
     template <int dim>
@@ -219,16 +229,18 @@ namespace dealmpm
     stress_update(StepState<dim> &s, const std::string &timer_section)
     {
       TimerOutput::Scope t(s.timer, timer_section);
-      with_gradient_adjustment(s, [&](const auto &adjust) {
-        grid_to_particle<G2P::deformation>(s.grid,
-                                           s.stencil,
-                                           s.fields,
-                                           s.dt,
-                                           s.method.flip_fraction,
-                                           s.particles,
-                                           s.stress_update,
-                                           adjust);
-      });
+      with_deformation_choices(
+        s, [&](const auto &adjust, const auto &increment) {
+          grid_to_particle<G2P::deformation>(s.grid,
+                                             s.stencil,
+                                             s.fields,
+                                             s.dt,
+                                             s.method.flip_fraction,
+                                             s.particles,
+                                             s.stress_update,
+                                             adjust,
+                                             increment);
+        });
     }
 
     template <int dim>

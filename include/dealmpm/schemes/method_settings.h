@@ -4,6 +4,7 @@
 
 #include <dealmpm/base/scene_reader.h>
 #include <dealmpm/schemes/update_scheme.h>
+#include <dealmpm/transfer/deformation_update.h>
 
 #include <string>
 
@@ -13,8 +14,9 @@ namespace dealmpm
 
   /**
    * The "MPM" section: the stress update scheme, the shape function, the
-   * velocity transfer, the nodal mass threshold and what happens to
-   * particles that leave the grid.
+   * velocity transfer, the nodal mass threshold, what happens to
+   * particles that leave the grid, cells of mixed materials and the
+   * deformation gradient update.
    */
   struct MethodSettings
   {
@@ -28,6 +30,8 @@ namespace dealmpm
     /** Split the strain rate by stiffness in cells shared by materials of
      * different stiffness (MixedCellSplit). */
     bool split_mixed_cells = true;
+    /** How F advances over a step. */
+    DeformationUpdate deformation_update;
 
     /** Declare the section's entries. */
     static void

@@ -3,6 +3,7 @@
 #include <dealmpm/grid/background_grid.h>
 #include <dealmpm/grid/nodal_fields.h>
 #include <dealmpm/particles/particle_set.h>
+#include <dealmpm/transfer/deformation_update.h>
 #include <dealmpm/transfer/stencil.h>
 #include <dealmpm/transfer/stencil_order.h>
 
@@ -88,19 +89,18 @@ namespace dealmpm
         left_cell = left_cell || xi[d] < -tolerance || xi[d] > 1. + tolerance;
     }
 
-    /** F <- (I + dt L) F; returns the new F. */
-    template <int dim>
+    /** F <- dF F with dF = @p increment(dt L) (I + dt L unless the scene
+     * chose another DeformationUpdate); returns the new F. */
+    template <int dim, typename Increment>
     DEAL_II_ALWAYS_INLINE inline Tensor<2, dim>
     deform(const ArrayView<double> &props,
            const CoreFields        &f,
            const Tensor<2, dim>    &L,
-           const double             dt)
+           const double             dt,
+           const Increment         &increment)
     {
-      Tensor<2, dim> dF = dt * L;
-      for (unsigned int d = 0; d < dim; ++d)
-        dF[d][d] += 1.;
       const Tensor<2, dim> F =
-        dF * read_tensor<dim>(&props[f.deformation_gradient]);
+        increment(dt * L) * read_tensor<dim>(&props[f.deformation_gradient]);
       write_tensor<dim>(&props[f.deformation_gradient], F);
       return F;
     }
@@ -118,7 +118,8 @@ namespace dealmpm
    *   the grid -> particle -> grid round trip conserve angular momentum for
    *   any shape functions, multilinear ones included;
    * - deformation: L = sum v (x) grad N, then @p adjust_gradient(cell,
-   *   properties, L) (MixedCellSplit), F <- (I + dt L) F, then
+   *   properties, L) (MixedCellSplit), F <- @p f_increment(dt L) F
+   *   (DeformationUpdate; I + dt L by default), then
    *   @p after_deformation(particle, properties, L, F, cell) (the stress
    *   update, see StressUpdate) in the same sweep: the step is bound by
    *   memory traffic, and a sweep less is worth more than arithmetic saved.
@@ -128,7 +129,8 @@ namespace dealmpm
   template <G2P what,
             int dim,
             typename AfterDeformation = NoAfterDeformation,
-            typename AdjustGradient   = NoGradientAdjustment>
+            typename AdjustGradient   = NoGradientAdjustment,
+            typename Increment        = FirstOrderIncrement>
   bool
   grid_to_particle(const BackgroundGrid<dim> &grid,
                    const Stencil<dim>        &stencil,
@@ -137,7 +139,8 @@ namespace dealmpm
                    const double               flip_fraction,
                    ParticleSet<dim>          &particles,
                    AfterDeformation         &&after_deformation = {},
-                   const AdjustGradient      &adjust_gradient   = {})
+                   const AdjustGradient      &adjust_gradient   = {},
+                   const Increment           &f_increment       = {})
   {
     constexpr bool motion      = what != G2P::deformation;
     constexpr bool deformation = what != G2P::motion;
@@ -191,7 +194,8 @@ namespace dealmpm
           if (deformation)
             {
               adjust_gradient(c, props, L);
-              const Tensor<2, dim> F = g2p_sweep::deform(props, f, L, dt);
+              const Tensor<2, dim> F =
+                g2p_sweep::deform(props, f, L, dt, f_increment);
               after_deformation(p, props, L, F, c);
             }
         });
