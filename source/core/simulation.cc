@@ -13,6 +13,7 @@
 #include <dealmpm/particles/hold_at_walls.h>
 #include <dealmpm/transfer/grid_to_particle.h>
 #include <dealmpm/transfer/particle_to_grid.h>
+#include <dealmpm/transfer/reference_stencil.h>
 
 #include <algorithm>
 #include <chrono>
@@ -77,15 +78,20 @@ namespace dealmpm
       for (const FieldDescription &field : effect->nodal_fields_per_body())
         nodal.request_per_body(field);
     nodal.reinit(grid.partitioner, bodies.size());
-    if (run_settings.method.split_mixed_cells)
+    if (total_lagrangian())
+      check_total_lagrangian(reader);
+    else if (run_settings.method.split_mixed_cells)
       {
         mixed_cells = std::make_unique<MixedCellSplit<dim>>(materials);
         if (!mixed_cells->needed())
           mixed_cells.reset();
       }
-    stages = stages_of<dim>(run_settings.method.scheme, mixed_cells != nullptr);
+    stages = stages_of<dim>(run_settings.method.scheme,
+                            mixed_cells != nullptr,
+                            run_settings.method.formulation);
 
-    particle_check  = check_particles(grid, materials, *particles);
+    particle_check =
+      check_particles(grid, materials, *particles, total_lagrangian());
     max_signal_rate = Utilities::MPI::max(particle_check.max_signal_rate, comm);
     computing_timer = std::make_unique<TimerOutput>(comm,
                                                     pcout,
@@ -179,7 +185,10 @@ namespace dealmpm
       {
         for (const auto &effect : effects)
           effect->initialize_particles(*particles);
-        particles->handler.sort_particles_into_subdomains_and_cells();
+        // Total Lagrangian keeps each particle in the cell of its reference
+        // position, where an effect's initial state may have moved it.
+        if (!total_lagrangian())
+          particles->handler.sort_particles_into_subdomains_and_cells();
       }
     const Statistics s = statistics();
     mass_threshold =
@@ -316,6 +325,10 @@ namespace dealmpm
     const std::function<void(Triangulation<dim> &)> &set_flags)
   {
     TimerOutput::Scope t(*computing_timer, "grid change");
+    if (total_lagrangian())
+      throw RunError(step_and_time(loop.step, loop.time) +
+                     ": the grid cannot change under 'MPM/Formulation = total "
+                     "Lagrangian': its stencil belongs to the reference grid");
     set_flags(grid.triangulation);
     grid.triangulation.prepare_coarsening_and_refinement();
     particles->handler.prepare_for_coarsening_and_refinement();
@@ -335,6 +348,54 @@ namespace dealmpm
     // Smaller cells, smaller stable step.
     particle_check  = check_particles(grid, materials, *particles);
     max_signal_rate = Utilities::MPI::max(particle_check.max_signal_rate, comm);
+  }
+
+  template <int dim>
+  void
+  Simulation<dim>::check_total_lagrangian(SceneReader &reader)
+  {
+    SectionScope mpm(reader, "MPM");
+    for (unsigned int m = 0; m < materials.size(); ++m)
+      if (materials[m]->resets_deformation())
+        reader.fail(
+          "Formulation",
+          "'updated Lagrangian' for a scene with a fluid ('Material " +
+            std::to_string(m + 1) + "' is a '" + material_models[m] +
+            "', whose particles flow past their neighbours; total "
+            "Lagrangian keeps every particle's neighbours)");
+    compute_reference_stencil(
+      grid, kernel, *particles, run_settings.method.apic, stencil);
+    if (Utilities::MPI::logical_or(stencil.failed, comm))
+      reader.fail("Shape function",
+                  "a shape function whose stencil can be made at the "
+                  "reference positions (" +
+                    first_message(stencil.failure, comm) + ")");
+    const auto apart = bodies_apart(grid, *particles, stencil, bodies.size());
+    if (apart.first != apart.second)
+      reader.fail(
+        "Formulation",
+        "'updated Lagrangian' for bodies that start apart: bodies " +
+          std::to_string(apart.first + 1) + " and " +
+          std::to_string(apart.second + 1) +
+          " share no grid node, and total Lagrangian has no contact between "
+          "them (they would pass through each other)");
+    particle_to_grid(grid, *particles, stencil, nodal.core, true, false);
+    const std::set<types::boundary_id> untouched =
+      boundary_conditions.walls_without_mass(grid,
+                                             nodal.core.mass,
+                                             mass_threshold);
+    if (!untouched.empty())
+      {
+        std::string ids;
+        for (const types::boundary_id id : untouched)
+          ids += (ids.empty() ? "" : ", ") + std::to_string(id);
+        pcout << "warning: " << reader.file_name()
+              << ": no body touches the wall(s) of boundary id(s) " << ids
+              << " at the start; under 'MPM/Formulation = total Lagrangian' a "
+                 "wall holds only the material that starts on it, and a body "
+                 "reaching it would pass through"
+              << std::endl;
+      }
   }
 
   template class Simulation<2>;

@@ -90,9 +90,13 @@ namespace dealmpm
   void
   Simulation<dim>::map_particles_for_grid_output()
   {
-    kernel.compute_stencil(grid, *particles, stencil);
-    if (run_settings.method.apic)
-      record_positions(grid, *particles, stencil);
+    // Total Lagrangian has made its stencil (the reference one) already.
+    if (!stencil.reference)
+      {
+        kernel.compute_stencil(grid, *particles, stencil);
+        if (run_settings.method.apic)
+          record_positions(grid, *particles, stencil);
+      }
     if (!Utilities::MPI::logical_or(stencil.failed, comm))
       {
         particle_to_grid(grid, *particles, stencil, nodal.core, true, false);

@@ -288,6 +288,37 @@ namespace dealmpm
       }
   }
 
+  template <int dim>
+  std::set<types::boundary_id>
+  BoundaryConditions<dim>::walls_without_mass(const BackgroundGrid<dim> &grid,
+                                              const NodalVector         &mass,
+                                              const double threshold) const
+  {
+    const std::set<types::boundary_id> ids = walls();
+    std::set<types::boundary_id>       touched;
+    for (const auto &cell : grid.dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() && cell->at_boundary())
+        for (const unsigned int f : cell->face_indices())
+          {
+            const auto face = cell->face(f);
+            if (face->at_boundary() && ids.count(face->boundary_id()) > 0)
+              for (unsigned int v = 0; v < face->n_vertices(); ++v)
+                {
+                  const types::global_dof_index dof =
+                    face->vertex_dof_index(v, 0);
+                  if (grid.partitioner->in_local_range(dof) &&
+                      mass.local_element(grid.partitioner->global_to_local(
+                        dof)) > threshold)
+                    touched.insert(face->boundary_id());
+                }
+          }
+    std::set<types::boundary_id> without;
+    for (const types::boundary_id id : ids)
+      if (Utilities::MPI::logical_or(touched.count(id) > 0, grid.comm) == false)
+        without.insert(id);
+    return without;
+  }
+
   template class BoundaryConditions<2>;
   template class BoundaryConditions<3>;
 } // namespace dealmpm

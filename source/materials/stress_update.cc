@@ -7,7 +7,8 @@ namespace dealmpm
   ParticleCheck<dim>
   check_particles(const BackgroundGrid<dim>                         &grid,
                   const std::vector<std::unique_ptr<Material<dim>>> &materials,
-                  const ParticleSet<dim>                            &particles)
+                  const ParticleSet<dim>                            &particles,
+                  const bool reference_cells)
   {
     ParticleCheck<dim> check;
     const CoreFields  &f = particles.fields;
@@ -17,13 +18,15 @@ namespace dealmpm
       [&](std::size_t,
           const auto          &p,
           const GridCell<dim> &c) DEAL_II_ALWAYS_INLINE {
-        const auto props = p.get_properties();
+        const auto           props = p.get_properties();
+        const Tensor<2, dim> F =
+          read_tensor<dim>(&props[f.deformation_gradient]);
         check.inspect(p,
                       read_vector<dim>(&props[f.velocity]),
-                      read_tensor<dim>(&props[f.deformation_gradient]),
+                      F,
                       read_symmetric<dim>(&props[f.stress]),
                       *materials[static_cast<unsigned int>(props[f.material])],
-                      c.h);
+                      reference_cells ? c.h * smallest_stretch(F) : c.h);
       });
     return check;
   }
@@ -32,7 +35,8 @@ namespace dealmpm
   template ParticleCheck<dim> check_particles(           \
     const BackgroundGrid<dim> &,                         \
     const std::vector<std::unique_ptr<Material<dim>>> &, \
-    const ParticleSet<dim> &);
+    const ParticleSet<dim> &,                            \
+    bool);
   DEALMPM_INSTANTIATE(2)
   DEALMPM_INSTANTIATE(3)
 #undef DEALMPM_INSTANTIATE

@@ -8,6 +8,23 @@ namespace dealmpm
   {
     prm.enter_subsection("MPM");
     prm.declare_entry(
+      "Formulation",
+      "updated Lagrangian",
+      Patterns::Selection(formulation_pattern()),
+      "Where the momentum balance is written. 'updated Lagrangian' (the "
+      "usual MPM): on the current configuration, shape functions at the "
+      "particles' current positions every step; bodies may separate, flow, "
+      "meet and touch walls anywhere. 'total Lagrangian' (de Vaucorbeil et "
+      "al. 2020): on the reference configuration, shape functions computed "
+      "once at the particles' initial positions, F from the reference "
+      "gradient of the grid velocity; no cell crossing (very large "
+      "distortion of one body stays accurate: twist, bending, a clamped "
+      "end) and no relocation, but particles interact only with those "
+      "that share grid nodes with them at the start: no fluids, no "
+      "contact between bodies that start apart, and walls act only where "
+      "the body touches them at the start. 'Mixed-material cells' has no "
+      "effect (no particle changes cell).");
+    prm.declare_entry(
       "Stress update",
       "MUSL",
       Patterns::Selection(update_scheme_pattern()),
@@ -91,6 +108,7 @@ namespace dealmpm
     MethodSettings    s;
     SectionScope      mpm(reader, "MPM");
     const std::string update = reader.get("Velocity update");
+    s.formulation            = parse_formulation(reader.get("Formulation"));
     s.scheme                 = parse_update_scheme(reader.get("Stress update"));
     s.apic                   = update == "APIC";
     s.shape_function         = reader.get("Shape function");

@@ -3,12 +3,17 @@
 #include <dealmpm/schemes/stages.h>
 #include <dealmpm/transfer/grid_to_particle.h>
 #include <dealmpm/transfer/particle_to_grid.h>
+#include <dealmpm/transfer/reference_stencil.h>
+
+#include <type_traits>
 
 namespace dealmpm
 {
   template <int dim>
   std::vector<Stage<dim>>
-  stages_of(const UpdateScheme scheme, const bool split_mixed_cells)
+  stages_of(const UpdateScheme scheme,
+            const bool         split_mixed_cells,
+            const Formulation  formulation)
   {
     using namespace stages;
     // Before the sweep that deforms the particles, from the velocity it
@@ -17,7 +22,10 @@ namespace dealmpm
       if (split_mixed_cells)
         list.push_back({"mixed-cell split", &mixed_cell_split<dim>});
     };
-    const Stage<dim> first[]          = {{"stencil", &stencil<dim>}};
+    const Stage<dim> first[]          = {{"stencil",
+                                 formulation == Formulation::total_lagrangian ?
+                                            &reference_stencil<dim> :
+                                            &stencil<dim>}};
     const Stage<dim> p2g_and_forces[] = {
       {"P2G", &p2g<dim>},
       {"effects after P2G", &effect_forces<dim>},
@@ -65,16 +73,11 @@ namespace dealmpm
 
   namespace stages
   {
+    /** Stop the run naming the particle whose stencil failed, if any. */
     template <int dim>
     void
-    stencil(StepState<dim> &s, const std::string &timer_section)
+    stop_on_failed_stencil(const StepState<dim> &s)
     {
-      {
-        TimerOutput::Scope t(s.timer, timer_section);
-        s.kernel.compute_stencil(s.grid, s.particles, s.stencil);
-        if (s.method.apic)
-          record_positions(s.grid, s.particles, s.stencil);
-      }
       if (Utilities::MPI::logical_or(s.stencil.failed, s.grid.comm))
         stop_on_particle(s.stencil.failed,
                          s.stencil.failed_particle,
@@ -87,10 +90,43 @@ namespace dealmpm
 
     template <int dim>
     void
+    stencil(StepState<dim> &s, const std::string &timer_section)
+    {
+      {
+        TimerOutput::Scope t(s.timer, timer_section);
+        s.kernel.compute_stencil(s.grid, s.particles, s.stencil);
+        if (s.method.apic)
+          record_positions(s.grid, s.particles, s.stencil);
+      }
+      stop_on_failed_stencil(s);
+    }
+
+    template <int dim>
+    void
+    reference_stencil(StepState<dim> &s, const std::string &timer_section)
+    {
+      if (s.stencil.reference)
+        return;
+      {
+        TimerOutput::Scope t(s.timer, timer_section);
+        compute_reference_stencil(
+          s.grid, s.kernel, s.particles, s.method.apic, s.stencil);
+      }
+      stop_on_failed_stencil(s);
+    }
+
+    template <int dim>
+    void
     p2g(StepState<dim> &s, const std::string &timer_section)
     {
       TimerOutput::Scope t(s.timer, timer_section);
-      particle_to_grid(s.grid, s.particles, s.stencil, s.fields, true, true);
+      particle_to_grid(s.grid,
+                       s.particles,
+                       s.stencil,
+                       s.fields,
+                       true,
+                       true,
+                       s.method.formulation);
     }
 
     template <int dim>
@@ -106,7 +142,13 @@ namespace dealmpm
     p2g_force(StepState<dim> &s, const std::string &timer_section)
     {
       TimerOutput::Scope t(s.timer, timer_section);
-      particle_to_grid(s.grid, s.particles, s.stencil, s.fields, false, true);
+      particle_to_grid(s.grid,
+                       s.particles,
+                       s.stencil,
+                       s.fields,
+                       false,
+                       true,
+                       s.method.formulation);
     }
 
     /** Call @p hook on every effect, each in its own timer section. */
@@ -174,7 +216,8 @@ namespace dealmpm
       s.mixed_cells->prepare(s.grid, s.particles, s.stencil, s.fields, s.dt);
     }
 
-    /** Run @p sweep(adjust, increment) with the step's velocity-gradient
+    /** Run @p sweep(formulation, adjust, increment) with the scene's
+     * formulation (a std::integral_constant), the step's velocity-gradient
      * adjustment (the mixed-cell split if the scene has one, else none) and
      * F increment (first order unless the scene chose another), so that a
      * scene runs a sweep compiled with only what it chose. */
@@ -182,17 +225,26 @@ namespace dealmpm
     void
     with_deformation_choices(StepState<dim> &s, const Sweep &sweep)
     {
+      using UpdatedLagrangian =
+        std::integral_constant<Formulation, Formulation::updated_lagrangian>;
+      using TotalLagrangian =
+        std::integral_constant<Formulation, Formulation::total_lagrangian>;
       const DeformationUpdate &update         = s.method.deformation_update;
-      const auto               with_increment = [&](const auto &adjust) {
+      const auto               with_increment = [&](const auto  formulation,
+                                      const auto &adjust) {
         if (update.variant == DeformationUpdate::Variant::first_order)
-          sweep(adjust, FirstOrderIncrement());
+          sweep(formulation, adjust, FirstOrderIncrement());
         else
-          sweep(adjust, ChosenIncrement{update});
+          sweep(formulation, adjust, ChosenIncrement{update});
       };
-      if (s.mixed_cells)
-        with_increment(*s.mixed_cells);
+      // Total Lagrangian builds no mixed-cell split: no particle changes
+      // cell.
+      if (s.method.formulation == Formulation::total_lagrangian)
+        with_increment(TotalLagrangian(), NoGradientAdjustment());
+      else if (s.mixed_cells)
+        with_increment(UpdatedLagrangian(), *s.mixed_cells);
       else
-        with_increment(NoGradientAdjustment());
+        with_increment(UpdatedLagrangian(), NoGradientAdjustment());
     }
 
     template <int dim>
@@ -201,8 +253,10 @@ namespace dealmpm
     {
       TimerOutput::Scope t(s.timer, timer_section);
       with_deformation_choices(
-        s, [&](const auto &adjust, const auto &increment) {
-          s.left_cell = grid_to_particle<G2P::motion_and_deformation>(
+        s,
+        [&](const auto formulation, const auto &adjust, const auto &increment) {
+          s.left_cell = grid_to_particle<G2P::motion_and_deformation,
+                                         decltype(formulation)::value>(
             s.grid,
             s.stencil,
             s.fields,
@@ -220,8 +274,21 @@ namespace dealmpm
     g2p(StepState<dim> &s, const std::string &timer_section)
     {
       TimerOutput::Scope t(s.timer, timer_section);
-      s.left_cell = grid_to_particle<G2P::motion>(
-        s.grid, s.stencil, s.fields, s.dt, s.method.flip_fraction, s.particles);
+      if (s.method.formulation == Formulation::total_lagrangian)
+        grid_to_particle<G2P::motion, Formulation::total_lagrangian>(
+          s.grid,
+          s.stencil,
+          s.fields,
+          s.dt,
+          s.method.flip_fraction,
+          s.particles);
+      else
+        s.left_cell = grid_to_particle<G2P::motion>(s.grid,
+                                                    s.stencil,
+                                                    s.fields,
+                                                    s.dt,
+                                                    s.method.flip_fraction,
+                                                    s.particles);
     }
 
     template <int dim>
@@ -230,16 +297,18 @@ namespace dealmpm
     {
       TimerOutput::Scope t(s.timer, timer_section);
       with_deformation_choices(
-        s, [&](const auto &adjust, const auto &increment) {
-          grid_to_particle<G2P::deformation>(s.grid,
-                                             s.stencil,
-                                             s.fields,
-                                             s.dt,
-                                             s.method.flip_fraction,
-                                             s.particles,
-                                             s.stress_update,
-                                             adjust,
-                                             increment);
+        s,
+        [&](const auto formulation, const auto &adjust, const auto &increment) {
+          grid_to_particle<G2P::deformation, decltype(formulation)::value>(
+            s.grid,
+            s.stencil,
+            s.fields,
+            s.dt,
+            s.method.flip_fraction,
+            s.particles,
+            s.stress_update,
+            adjust,
+            increment);
         });
     }
 
@@ -255,7 +324,7 @@ namespace dealmpm
   } // namespace stages
 
 #define DEALMPM_INSTANTIATE(dim) \
-  template std::vector<Stage<dim>> stages_of(UpdateScheme, bool);
+  template std::vector<Stage<dim>> stages_of(UpdateScheme, bool, Formulation);
   DEALMPM_INSTANTIATE(2)
   DEALMPM_INSTANTIATE(3)
 #undef DEALMPM_INSTANTIATE

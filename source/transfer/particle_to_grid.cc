@@ -5,9 +5,31 @@ namespace dealmpm
 {
   namespace
   {
+    /** -V_p sigma_p (updated Lagrangian), or -V_p0 P_p = -V_p sigma_p
+     * F_p^-T (total Lagrangian, whose stencil holds reference gradients):
+     * the particle's internal force on a node is this times grad N. */
+    template <bool total_lagrangian, int dim>
+    DEAL_II_ALWAYS_INLINE inline auto
+    force_per_gradient(const ArrayView<const double> &props,
+                       const CoreFields              &f)
+    {
+      const Tensor<2, dim> F = read_tensor<dim>(&props[f.deformation_gradient]);
+      const SymmetricTensor<2, dim> minus_V_sigma =
+        -determinant(F) * props[f.initial_volume] *
+        read_symmetric<dim>(&props[f.stress]);
+      if constexpr (total_lagrangian)
+        return Tensor<2, dim>(minus_V_sigma * transpose(invert(F)));
+      else
+        return minus_V_sigma;
+    }
+
     /** The kernel, compiled once per choice of quantities so that the usual
      * all-in-one P2G has no branch in its loop. */
-    template <int dim, bool mass_and_momentum, bool internal_force, bool affine>
+    template <int  dim,
+              bool mass_and_momentum,
+              bool internal_force,
+              bool affine,
+              bool total_lagrangian = false>
     void
     transfer(const BackgroundGrid<dim> &grid,
              const ParticleSet<dim>    &particles,
@@ -55,12 +77,10 @@ namespace dealmpm
                   1e-12 * Utilities::fixed_power<dim>(trace(D)))
                 C = read_tensor<dim>(&props[f.affine_velocity]) * invert(D);
             }
-          // -V sigma, scaled once per particle.
-          SymmetricTensor<2, dim> Vsigma;
+          // Once per particle.
+          decltype(force_per_gradient<total_lagrangian, dim>(props, f)) Vsigma;
           if (internal_force)
-            Vsigma =
-              -determinant(read_tensor<dim>(&props[f.deformation_gradient])) *
-              props[f.initial_volume] * read_symmetric<dim>(&props[f.stress]);
+            Vsigma = force_per_gradient<total_lagrangian, dim>(props, f);
           for (unsigned int e = stencil.begin[k]; e < stencil.begin[k + 1]; ++e)
             {
               const unsigned int n = stencil.node[e];
@@ -91,7 +111,8 @@ namespace dealmpm
                    const Stencil<dim>        &stencil,
                    NodalFields<dim>          &fields,
                    const bool                 mass_and_momentum,
-                   const bool                 internal_force)
+                   const bool                 internal_force,
+                   const Formulation          formulation)
   {
     if (mass_and_momentum)
       {
@@ -105,7 +126,26 @@ namespace dealmpm
 
     const bool affine =
       particles.fields.affine_velocity != numbers::invalid_unsigned_int;
-    if (mass_and_momentum && internal_force && affine)
+    const bool reference = formulation == Formulation::total_lagrangian;
+    if (internal_force && reference)
+      {
+        if (mass_and_momentum && affine)
+          transfer<dim, true, true, true, true>(grid,
+                                                particles,
+                                                stencil,
+                                                fields);
+        else if (mass_and_momentum)
+          transfer<dim, true, true, false, true>(grid,
+                                                 particles,
+                                                 stencil,
+                                                 fields);
+        else
+          transfer<dim, false, true, false, true>(grid,
+                                                  particles,
+                                                  stencil,
+                                                  fields);
+      }
+    else if (mass_and_momentum && internal_force && affine)
       transfer<dim, true, true, true>(grid, particles, stencil, fields);
     else if (mass_and_momentum && internal_force)
       transfer<dim, true, true, false>(grid, particles, stencil, fields);
@@ -133,7 +173,8 @@ namespace dealmpm
                                  const Stencil<dim> &,        \
                                  NodalFields<dim> &,          \
                                  bool,                        \
-                                 bool);
+                                 bool,                        \
+                                 Formulation);
   DEALMPM_INSTANTIATE(2)
   DEALMPM_INSTANTIATE(3)
 #undef DEALMPM_INSTANTIATE

@@ -116,7 +116,7 @@ end
           const ArrayView<double> &props,
           const Tensor<2, 2>      &L,
           const Tensor<2, 2> &,
-          const GridCell<2> &) {
+          double) {
         r.L.push_back(L);
         r.material.push_back(static_cast<unsigned int>(props[f.material]));
         r.volume.push_back(props[f.initial_volume]);

@@ -139,7 +139,7 @@ namespace
           const auto &,
           const Tensor<2, 2> &velocity_gradient,
           const Tensor<2, 2> &,
-          const GridCell<2> &) { L.push_back(velocity_gradient); });
+          double) { L.push_back(velocity_gradient); });
 
     std::size_t k = 0;
     for (const auto &c : grid.cells)

@@ -197,6 +197,15 @@ namespace dealmpm
     build_grid(SceneReader &reader);
     void
     create_particles(SceneReader &reader);
+    bool
+    total_lagrangian() const
+    {
+      return run_settings.method.formulation == Formulation::total_lagrangian;
+    }
+    /** Refuse what total Lagrangian cannot do (fluids, bodies that start
+     * apart) and make its reference stencil. */
+    void
+    check_total_lagrangian(SceneReader &reader);
     void
     relocate_particles();
     /** One step of the loop with its checks and, when due, an output. */

@@ -82,6 +82,13 @@ namespace dealmpm
     std::set<types::boundary_id>
     walls() const;
 
+    /** The walls none of whose nodes has a nodal @p mass above @p threshold
+     * (all ranks; collective): a body touches no such wall. */
+    std::set<types::boundary_id>
+    walls_without_mass(const BackgroundGrid<dim> &grid,
+                       const NodalVector         &mass,
+                       const double               threshold) const;
+
     /** Remove the constrained components of a nodal vector field on the
      * locally owned nodes. */
     void

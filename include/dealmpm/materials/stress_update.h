@@ -1,5 +1,6 @@
 #pragma once
 
+#include <dealmpm/base/smallest_stretch.h>
 #include <dealmpm/grid/background_grid.h>
 #include <dealmpm/materials/material.h>
 #include <dealmpm/particles/particle_set.h>
@@ -156,7 +157,7 @@ namespace dealmpm
                const ArrayView<double> &props,
                const Tensor<2, dim>    &L,
                const Tensor<2, dim>    &F,
-               const GridCell<dim>     &cell)
+               const double             h)
     {
       const CoreFields       &f = particles.fields;
       const unsigned int      m = static_cast<unsigned int>(props[f.material]);
@@ -170,12 +171,8 @@ namespace dealmpm
                                                  particles.internal_offset[m],
                                                particles.n_internal[m]));
       write_symmetric<dim>(&props[f.stress], stress);
-      if (!check.inspect(p,
-                         read_vector<dim>(&props[f.velocity]),
-                         F,
-                         stress,
-                         material,
-                         cell.h))
+      if (!check.inspect(
+            p, read_vector<dim>(&props[f.velocity]), F, stress, material, h))
         check.describe_state(
           p.get_id(),
           m,
@@ -210,10 +207,13 @@ namespace dealmpm
     double                                             dt;
   };
 
-  /** The checks without a stress update (for the first time step). */
+  /** The checks without a stress update (for the first time step). With
+   * @p reference_cells (total Lagrangian), a particle's cell is its
+   * reference one, and its size is scaled by F's smallest stretch. */
   template <int dim>
   ParticleCheck<dim>
   check_particles(const BackgroundGrid<dim>                         &grid,
                   const std::vector<std::unique_ptr<Material<dim>>> &materials,
-                  const ParticleSet<dim>                            &particles);
+                  const ParticleSet<dim>                            &particles,
+                  const bool reference_cells = false);
 } // namespace dealmpm

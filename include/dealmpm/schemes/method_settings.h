@@ -5,6 +5,7 @@
 #include <dealmpm/base/scene_reader.h>
 #include <dealmpm/schemes/update_scheme.h>
 #include <dealmpm/transfer/deformation_update.h>
+#include <dealmpm/transfer/formulation.h>
 
 #include <string>
 
@@ -13,13 +14,15 @@ namespace dealmpm
   using namespace dealii;
 
   /**
-   * The "MPM" section: the stress update scheme, the shape function, the
+   * The "MPM" section: the formulation, the stress update scheme, the
+   * shape function, the
    * velocity transfer, the nodal mass threshold, what happens to
    * particles that leave the grid, cells of mixed materials and the
    * deformation gradient update.
    */
   struct MethodSettings
   {
+    Formulation  formulation   = Formulation::updated_lagrangian;
     UpdateScheme scheme        = UpdateScheme::MUSL;
     double       flip_fraction = 1; ///< 1 FLIP, 0 PIC
     bool         apic          = false;

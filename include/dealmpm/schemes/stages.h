@@ -24,10 +24,14 @@ namespace dealmpm
    * the stencil and ends with the particles moved and their stress updated;
    * relocation into new cells follows the list. With @p split_mixed_cells,
    * the mixed-cell split (MixedCellSplit) comes before the sweep that
-   * deforms the particles, and that sweep applies it. */
+   * deforms the particles, and that sweep applies it. With @p formulation
+   * total Lagrangian, the stencil is the reference one, made in the first
+   * step and kept; the other stages are the same. */
   template <int dim>
   std::vector<Stage<dim>>
-  stages_of(const UpdateScheme scheme, const bool split_mixed_cells = false);
+  stages_of(const UpdateScheme scheme,
+            const bool         split_mixed_cells = false,
+            const Formulation  formulation = Formulation::updated_lagrangian);
 
   /** The stages, each a function of the step's state. */
   namespace stages
@@ -37,6 +41,12 @@ namespace dealmpm
     template <int dim>
     void
     stencil(StepState<dim> &state, const std::string &timer_section);
+
+    /** Total Lagrangian's stencil, at the particles' reference positions:
+     * made in the first step (compute_reference_stencil()), kept after. */
+    template <int dim>
+    void
+    reference_stencil(StepState<dim> &state, const std::string &timer_section);
 
     /** P2G of mass, momentum and internal force. */
     template <int dim>

@@ -1,9 +1,11 @@
 #pragma once
 
+#include <dealmpm/base/smallest_stretch.h>
 #include <dealmpm/grid/background_grid.h>
 #include <dealmpm/grid/nodal_fields.h>
 #include <dealmpm/particles/particle_set.h>
 #include <dealmpm/transfer/deformation_update.h>
+#include <dealmpm/transfer/formulation.h>
 #include <dealmpm/transfer/stencil.h>
 #include <dealmpm/transfer/stencil_order.h>
 
@@ -64,6 +66,23 @@ namespace dealmpm
         }
     }
 
+    /** Moves the particle from @p x_p by @p dx: displacement and position
+     * only (total Lagrangian: the particle keeps its reference cell). */
+    template <int dim, typename Particle>
+    DEAL_II_ALWAYS_INLINE inline Point<dim>
+    displace(Particle                &p,
+             const ArrayView<double> &props,
+             const CoreFields        &f,
+             const Point<dim>        &x_p,
+             const Tensor<1, dim>    &dx)
+    {
+      write_vector<dim>(&props[f.displacement],
+                        read_vector<dim>(&props[f.displacement]) + dx);
+      const Point<dim> x = x_p + dx;
+      p.set_location(x);
+      return x;
+    }
+
     /** Moves the particle from @p x_p by @p dx: displacement, position and
      * reference location in its old cell @p c; sets @p left_cell if that
      * location is outside the cell. */
@@ -77,11 +96,7 @@ namespace dealmpm
          const Tensor<1, dim>    &dx,
          bool                    &left_cell)
     {
-      write_vector<dim>(&props[f.displacement],
-                        read_vector<dim>(&props[f.displacement]) + dx);
-      const Point<dim> x = x_p + dx;
-      p.set_location(x);
-      const Point<dim> xi = c.reference_point(x);
+      const Point<dim> xi = c.reference_point(displace(p, props, f, x_p, dx));
       p.set_reference_location(xi);
       // Slack so that a particle sitting on a face does not trigger a sort.
       const double tolerance = 1e-12;
@@ -120,14 +135,25 @@ namespace dealmpm
    * - deformation: L = sum v (x) grad N, then @p adjust_gradient(cell,
    *   properties, L) (MixedCellSplit), F <- @p f_increment(dt L) F
    *   (DeformationUpdate; I + dt L by default), then
-   *   @p after_deformation(particle, properties, L, F, cell) (the stress
-   *   update, see StressUpdate) in the same sweep: the step is bound by
-   *   memory traffic, and a sweep less is worth more than arithmetic saved.
+   *   @p after_deformation(particle, properties, L, F, h) (the stress
+   *   update, see StressUpdate; h the particle's cell size for the stable
+   *   step) in the same sweep: the step is bound by memory traffic, and a
+   *   sweep less is worth more than arithmetic saved.
    *
-   * @return true if motion moved some local particle out of its cell.
+   * With @p formulation total Lagrangian the stencil holds the reference
+   * gradients Grad N (compute_reference_stencil()): sum v (x) Grad N is
+   * dF/dt, so L = dF/dt F_n^-1 (and F_n+1 = F_n + dt dF/dt to round-off
+   * with the first-order increment); the particle keeps its reference
+   * cell, and the cell size h is scaled by F's smallest stretch. APIC's
+   * x_i - x_p are reference positions then, as the stencil's positions
+   * are.
+   *
+   * @return true if motion moved some local particle out of its cell
+   * (never with total Lagrangian).
    */
-  template <G2P what,
-            int dim,
+  template <G2P         what,
+            Formulation formulation = Formulation::updated_lagrangian,
+            int         dim,
             typename AfterDeformation = NoAfterDeformation,
             typename AdjustGradient   = NoGradientAdjustment,
             typename Increment        = FirstOrderIncrement>
@@ -144,6 +170,7 @@ namespace dealmpm
   {
     constexpr bool motion      = what != G2P::deformation;
     constexpr bool deformation = what != G2P::motion;
+    constexpr bool reference   = formulation == Formulation::total_lagrangian;
     const double  *velocity[dim], *increment[dim];
     for (unsigned int d = 0; d < dim; ++d)
       {
@@ -161,6 +188,11 @@ namespace dealmpm
           Tensor<1, dim>   v_grid, dv;
           Tensor<2, dim>   L, B;
           const Point<dim> x_p = p.get_location();
+          // APIC measures x_i - x_p from the stencil's positions (the
+          // particle's own in the updated Lagrangian sweeps, which have not
+          // moved it yet; its reference one in total Lagrangian).
+          const Point<dim> x_affine =
+            motion && affine ? stencil.position[k] : Point<dim>();
           for (unsigned int e = stencil.begin[k]; e < stencil.begin[k + 1]; ++e)
             {
               const unsigned int n = stencil.node[e];
@@ -178,7 +210,7 @@ namespace dealmpm
                 }
               if (motion && affine)
                 {
-                  const Tensor<1, dim> r = grid.node_positions[n] - x_p;
+                  const Tensor<1, dim> r = grid.node_positions[n] - x_affine;
                   for (unsigned int a = 0; a < dim; ++a)
                     for (unsigned int b = 0; b < dim; ++b)
                       B[a][b] += N * velocity[a][n] * r[b];
@@ -189,14 +221,21 @@ namespace dealmpm
             {
               g2p_sweep::update_velocity(
                 props, f, v_grid, dv, B, flip_fraction, affine);
-              g2p_sweep::move(p, props, f, c, x_p, dt * v_grid, left_cell);
+              if constexpr (reference)
+                g2p_sweep::displace(p, props, f, x_p, dt * v_grid);
+              else
+                g2p_sweep::move(p, props, f, c, x_p, dt * v_grid, left_cell);
             }
           if (deformation)
             {
               adjust_gradient(c, props, L);
+              if constexpr (reference)
+                L =
+                  L * invert(read_tensor<dim>(&props[f.deformation_gradient]));
               const Tensor<2, dim> F =
                 g2p_sweep::deform(props, f, L, dt, f_increment);
-              after_deformation(p, props, L, F, c);
+              after_deformation(
+                p, props, L, F, reference ? c.h * smallest_stretch(F) : c.h);
             }
         });
     return left_cell;

@@ -28,6 +28,9 @@ namespace dealmpm
      * weights were computed. The affine transfers measure x_i - x_p from
      * it, also in MUSL's re-map after the particles have moved. */
     std::vector<Point<dim>> position;
+    /** Made once at the particles' reference positions and kept for the
+     * run (total Lagrangian: compute_reference_stencil()). */
+    bool reference = false;
 
     /** The first particle whose weights could not be computed (a CPDI
      * domain reaching past the cells next to its own); the run stops. */
