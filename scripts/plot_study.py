@@ -43,10 +43,10 @@ def main(study_csv, folder):
     fig, ax = plt.subplots(figsize=(9.5, 5.5))
     seen = set()
     for r in done:
-        kernel, scheme = r["shape_function"], r["stress_update"]
+        kernel, scheme = kernel_label(r), r["stress_update"]
         label = f"{kernel}, {scheme}"
         ax.loglog(number(r["wall_time"]), number(r["error_L2"]),
-                  marker=MARKERS.get(kernel, "x"),
+                  **marker_style(r),
                   color=COLOURS.get(scheme, "black"), linestyle="none",
                   markersize=7, alpha=0.85,
                   label=None if label in seen else label)
@@ -68,10 +68,12 @@ def main(study_csv, folder):
 
     # Convergence: error against h per setting.
     groups = defaultdict(list)
+    styles = {}
     for r in done:
-        key = (r["shape_function"], r["stress_update"], r["velocity_update"],
+        key = (kernel_label(r), r["stress_update"], r["velocity_update"],
                r["particles_per_cell"], r["cfl_number"])
         groups[key].append((number(r["h"]), number(r["error_L2"])))
+        styles[key] = marker_style(r)
     fig, ax = plt.subplots(figsize=(11, 6))
     for key, points in sorted(groups.items()):
         points.sort()
@@ -81,7 +83,7 @@ def main(study_csv, folder):
         rate = math.log(e2 / e1) / math.log(h2 / h1)
         kernel, scheme, velocity, ppc, cfl = key
         ax.loglog([p[0] for p in points], [p[1] for p in points],
-                  marker=MARKERS.get(kernel, "x"),
+                  **styles[key],
                   color=COLOURS.get(scheme, "black"),
                   label=f"{kernel}, {scheme}, {velocity}, {ppc} ppc, "
                         f"CFL {cfl}: rate {rate:.2f}")
@@ -95,6 +97,20 @@ def main(study_csv, folder):
     for ext in ("png", "svg"):
         fig.savefig(f"{folder}/convergence.{ext}", dpi=120)
     plt.close(fig)
+
+
+def kernel_label(r):
+    """The shape function, marked TL for total-Lagrangian runs (studies
+    written before the formulation axis have no such column)."""
+    total = r.get("formulation") == "total Lagrangian"
+    return ("TL " if total else "") + r["shape_function"]
+
+
+def marker_style(r):
+    """The shape function's marker, hollow for total-Lagrangian runs."""
+    total = r.get("formulation") == "total Lagrangian"
+    return dict(marker=MARKERS.get(r["shape_function"], "x"),
+                fillstyle="none" if total else "full")
 
 
 def write_rates(groups, path):

@@ -307,8 +307,8 @@ namespace dealmpm
                   const types::global_dof_index dof =
                     face->vertex_dof_index(v, 0);
                   if (grid.partitioner->in_local_range(dof) &&
-                      mass.local_element(grid.partitioner->global_to_local(
-                        dof)) > threshold)
+                      mass.local_element(
+                        grid.partitioner->global_to_local(dof)) > threshold)
                     touched.insert(face->boundary_id());
                 }
           }

@@ -101,28 +101,30 @@ namespace dealmpm
               const std::string &folder)
     {
       std::vector<StudyRun> runs;
-      for (const auto &kernel : list(reader.get("Shape functions")))
-        for (const auto &scheme : list(reader.get("Stress updates")))
-          for (const auto &velocity : list(reader.get("Velocity updates")))
-            for (const auto &ppc : list(reader.get("Particles per cell")))
-              for (const auto &cfl : list(reader.get("CFL numbers")))
-                for (const auto &level : list(reader.get("Refinements")))
-                  {
-                    StudyRun r;
-                    r.index              = runs.size() + 1;
-                    r.shape_function     = kernel;
-                    r.stress_update      = scheme;
-                    r.velocity_update    = velocity;
-                    r.particles_per_cell = std::stoi(ppc);
-                    r.cfl_number         = std::stod(cfl);
-                    r.refinement         = std::stoi(level);
-                    r.h = (h > 0 ? h : 1.) / std::pow(2., r.refinement);
-                    std::ostringstream name;
-                    name << folder << "/runs/" << std::setw(3)
-                         << std::setfill('0') << r.index;
-                    r.folder = name.str();
-                    runs.push_back(r);
-                  }
+      for (const auto &formulation : list(reader.get("Formulations")))
+        for (const auto &kernel : list(reader.get("Shape functions")))
+          for (const auto &scheme : list(reader.get("Stress updates")))
+            for (const auto &velocity : list(reader.get("Velocity updates")))
+              for (const auto &ppc : list(reader.get("Particles per cell")))
+                for (const auto &cfl : list(reader.get("CFL numbers")))
+                  for (const auto &level : list(reader.get("Refinements")))
+                    {
+                      StudyRun r;
+                      r.index              = runs.size() + 1;
+                      r.formulation        = formulation;
+                      r.shape_function     = kernel;
+                      r.stress_update      = scheme;
+                      r.velocity_update    = velocity;
+                      r.particles_per_cell = std::stoi(ppc);
+                      r.cfl_number         = std::stod(cfl);
+                      r.refinement         = std::stoi(level);
+                      r.h = (h > 0 ? h : 1.) / std::pow(2., r.refinement);
+                      std::ostringstream name;
+                      name << folder << "/runs/" << std::setw(3)
+                           << std::setfill('0') << r.index;
+                      r.folder = name.str();
+                      runs.push_back(r);
+                    }
       return runs;
     }
 
@@ -230,6 +232,11 @@ namespace dealmpm
                       Patterns::List(Patterns::Integer(0, 12)),
                       "Axis: values of the scene's 'Grid/Global refinements'; "
                       "each halves the cell size.");
+    prm.declare_entry("Formulations",
+                      "updated Lagrangian",
+                      Patterns::List(
+                        Patterns::Selection(formulation_pattern())),
+                      "Axis: 'MPM/Formulation'.");
     prm.declare_entry("Particles per cell",
                       "2",
                       Patterns::List(Patterns::Integer(1, 20)),

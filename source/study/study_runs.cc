@@ -47,6 +47,8 @@ namespace dealmpm
     describe(const StudyRun &r)
     {
       std::ostringstream s;
+      if (r.formulation != "updated Lagrangian")
+        s << r.formulation << ", ";
       s << r.shape_function << ", " << r.stress_update << ", "
         << r.velocity_update << ", " << r.particles_per_cell
         << " ppc, refinement " << r.refinement << ", CFL " << r.cfl_number;
@@ -106,6 +108,7 @@ namespace dealmpm
       settings.push_back("Output/Directory=" + r.folder);
       settings.push_back("Grid/Global refinements=" +
                          std::to_string(r.refinement));
+      settings.push_back("MPM/Formulation=" + r.formulation);
       settings.push_back("MPM/Shape function=" + r.shape_function);
       settings.push_back("MPM/Stress update=" + r.stress_update);
       settings.push_back("MPM/Velocity update=" + r.velocity_update);

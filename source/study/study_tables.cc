@@ -44,19 +44,21 @@ namespace dealmpm
     write_csv(const std::vector<StudyRun> &runs, const std::string &folder)
     {
       std::ofstream csv(folder + "/study.csv");
-      csv << "run,status,shape_function,stress_update,velocity_update,"
+      csv << "run,status,formulation,shape_function,stress_update,"
+             "velocity_update,"
              "particles_per_cell,refinement,h,cfl_number,error_L2,error_max,"
              "wall_time,steps,particles,particle_steps_per_second,"
              "peak_memory_MB,energy_drift,momentum_drift,min_J,max_cfl,"
              "pareto_optimal,reason\n";
       csv << std::setprecision(8);
       for (const StudyRun &r : runs)
-        csv << r.index << ',' << r.status << ',' << r.shape_function << ','
-            << r.stress_update << ',' << r.velocity_update << ','
-            << r.particles_per_cell << ',' << r.refinement << ',' << r.h << ','
-            << r.cfl_number << ',' << number(r.error_L2, 8) << ','
-            << number(r.error_max, 8) << ',' << number(r.wall_time, 6) << ','
-            << number(r.steps) << ',' << number(r.particles, 10) << ','
+        csv << r.index << ',' << r.status << ',' << r.formulation << ','
+            << r.shape_function << ',' << r.stress_update << ','
+            << r.velocity_update << ',' << r.particles_per_cell << ','
+            << r.refinement << ',' << r.h << ',' << r.cfl_number << ','
+            << number(r.error_L2, 8) << ',' << number(r.error_max, 8) << ','
+            << number(r.wall_time, 6) << ',' << number(r.steps) << ','
+            << number(r.particles, 10) << ','
             << number(r.particle_steps_per_second, 6) << ','
             << number(r.peak_memory, 6) << ',' << number(r.energy_drift, 6)
             << ',' << number(r.momentum_drift, 6) << ',' << number(r.min_J, 6)
@@ -96,16 +98,16 @@ namespace dealmpm
             "runs that no other run beats in both error and wall time (the "
             "cheapest way to each accuracy). Wall time is the whole process "
             "on one core.\n\n"
-         << "| run | shape function | stress | velocity | ppc | h | CFL | "
-            "error L2 | error max | wall s | M p-steps/s | MB | energy drift "
-            "| Pareto |\n"
-         << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+         << "| run | formulation | shape function | stress | velocity | ppc | "
+            "h | CFL | error L2 | error max | wall s | M p-steps/s | MB | "
+            "energy drift | Pareto |\n"
+         << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
       for (const StudyRun *r : by_error(runs))
         {
-          md << "| " << r->index << " | " << r->shape_function << " | "
-             << r->stress_update << " | " << r->velocity_update << " | "
-             << r->particles_per_cell << " | " << number(r->h, 3) << " | "
-             << r->cfl_number << " | ";
+          md << "| " << r->index << " | " << r->formulation << " | "
+             << r->shape_function << " | " << r->stress_update << " | "
+             << r->velocity_update << " | " << r->particles_per_cell << " | "
+             << number(r->h, 3) << " | " << r->cfl_number << " | ";
           if (r->status == "ok")
             md << number(r->error_L2, 3) << " | " << number(r->error_max, 3)
                << " | " << number(r->wall_time, 3) << " | "

@@ -94,9 +94,9 @@ expect 2 "more than the 0.1 GB of 'Checks/Memory limit'" "$scene" "${s[@]}" -s "
 expect 2 "Checks/Energy growth limit.*expected a number >= 0" "$scene" "${s[@]}" -s "Checks/Energy growth limit=-1"
 expect 2 "Checks/CFL warning.*expected a number in \(0, 1\]" "$scene" "${s[@]}" -s "Checks/CFL warning=2"
 # Total Lagrangian cannot follow what separates, flows or meets.
-expect 2 "'MPM/Formulation' = 'total Lagrangian': expected 'updated Lagrangian' for bodies that start apart: bodies 1 and 2 share no grid node" \
+expect 2 "MPM/Formulation.total Lagrangian.: expected 'updated Lagrangian' for bodies that start apart: bodies 1 and 2 share no grid node" \
   "$scene" "${s[@]}" -s "MPM/Formulation=total Lagrangian"
-expect 2 "'MPM/Formulation' = 'total Lagrangian': expected 'updated Lagrangian' for a scene with a fluid \('Material 1' is a 'Tait fluid'" \
+expect 2 "MPM/Formulation.total Lagrangian.: expected 'updated Lagrangian' for a scene with a fluid \('Material 1' is a 'Tait fluid'" \
   "$(dirname "$scene")/hard-cases/dam_break.prm" "${s[@]}" -s "MPM/Formulation=total Lagrangian"
 touch afile
 expect 2 "Output/Directory.*expected a folder that can be created and written" "$scene" -s "Output/Directory=afile/sub"

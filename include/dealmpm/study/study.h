@@ -17,7 +17,7 @@ namespace dealmpm
     unsigned int refinement = 0;
     double       h          = 0; ///< cell size (relative when not known)
     unsigned int particles_per_cell = 0;
-    std::string  shape_function, stress_update, velocity_update;
+    std::string  formulation, shape_function, stress_update, velocity_update;
     double       cfl_number = 0;
     std::string  folder;
 
