@@ -8,6 +8,7 @@
 #include <dealmpm/diagnostics/run_messages.h>
 #include <dealmpm/grid/grid_update.h>
 #include <dealmpm/io/progress.h>
+#include <dealmpm/materials/initial_stress.h>
 #include <dealmpm/materials/stress_update.h>
 #include <dealmpm/particles/fill_bodies.h>
 #include <dealmpm/particles/hold_at_walls.h>
@@ -18,6 +19,7 @@
 #include <algorithm>
 #include <chrono>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 namespace dealmpm
@@ -190,6 +192,7 @@ namespace dealmpm
         if (!total_lagrangian())
           particles->handler.sort_particles_into_subdomains_and_cells();
       }
+    start_geostatic_bodies(reader);
     const Statistics s = statistics();
     mass_threshold =
       run_settings.method.relative_mass_threshold * s.mass / s.n_particles;
@@ -348,6 +351,79 @@ namespace dealmpm
     // Smaller cells, smaller stable step.
     particle_check  = check_particles(grid, materials, *particles);
     max_signal_rate = Utilities::MPI::max(particle_check.max_signal_rate, comm);
+  }
+
+  template <int dim>
+  void
+  Simulation<dim>::start_geostatic_bodies(SceneReader &reader)
+  {
+    // The uniform force per unit mass of the effects with a potential.
+    Tensor<1, dim> g;
+    for (const auto &effect : effects)
+      for (unsigned int d = 0; d < dim; ++d)
+        g[d] -= effect->potential_energy(1., Point<dim>::unit_vector(d)) -
+                effect->potential_energy(1., Point<dim>());
+    const CoreFields &f = particles->fields;
+    for (unsigned int b = 0; b < bodies.size(); ++b)
+      {
+        if (!bodies[b].geostatic)
+          continue;
+        SectionScope section(reader, "Body " + std::to_string(b + 1));
+        if (!(g.norm() > 0))
+          reader.fail("Initial stress",
+                      "'none' in a scene without gravity (no listed effect "
+                      "has a uniform force field)");
+        const Tensor<1, dim> n = g / g.norm();
+        // Depths from the top of the body's bounding box.
+        const BoundingBox<dim> box = bodies[b].shape->bounding_box();
+        double                 top = -std::numeric_limits<double>::max();
+        for (unsigned int v = 0; v < GeometryInfo<dim>::vertices_per_cell; ++v)
+          top = std::max(top, -(n * box.vertex(v)));
+        const unsigned int   m        = bodies[b].material;
+        const Material<dim> &material = *materials[m];
+        const double         K0 =
+          bodies[b].K0 >= 0 ?
+                    bodies[b].K0 :
+                    confined_stress_ratio(material, particles->n_internal[m], n);
+        std::string failure;
+        for (auto &p : particles->handler)
+          {
+            const auto props = p.get_properties();
+            if (static_cast<unsigned int>(props[f.body]) != b)
+              continue;
+            const double                  depth = top + n * p.get_location();
+            const SymmetricTensor<2, dim> target =
+              geostatic_stress(-material.density * g.norm() * depth, n, K0);
+            Tensor<2, dim>          F;
+            SymmetricTensor<2, dim> stress;
+            if (!start_at_stress(material,
+                                 target,
+                                 F,
+                                 stress,
+                                 ArrayView<double>(
+                                   props.data() + particles->internal_offset[m],
+                                   particles->n_internal[m])))
+              {
+                if (failure.empty())
+                  failure =
+                    "'Material " + std::to_string(m + 1) +
+                    "' cannot rest under the geostatic stress at depth " +
+                    short_number(depth) + " (particle " +
+                    std::to_string(p.get_id()) + ")";
+                continue;
+              }
+            write_tensor<dim>(&props[f.deformation_gradient], F);
+            write_symmetric<dim>(&props[f.stress], stress);
+            // The particle fills its place at that stretch.
+            props[f.initial_volume] /= determinant(F);
+          }
+        failure = first_message(failure, comm);
+        if (!failure.empty())
+          reader.fail("K0",
+                      "a K0 whose stress the material carries at rest "
+                      "(inside its yield surface; 1 for a fluid): " +
+                        failure + ", with K0 = " + short_number(K0));
+      }
   }
 
   template <int dim>

@@ -7,6 +7,7 @@
 #include <dealmpm/particles/body.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 
@@ -223,6 +224,25 @@ namespace dealmpm
       "replace theirs (an inclusion, a different material in a region); "
       "otherwise overlapping bodies are refused (they would be filled "
       "twice, at twice the density).");
+    prm.declare_entry(
+      "Initial stress",
+      "none",
+      Patterns::Selection("none|geostatic"),
+      "The body's stress at t = 0: 'none' (stress-free: under gravity it "
+      "falls into its own weight and bounces) or 'geostatic' (at rest under "
+      "gravity: sigma = sigma_v (n (x) n + K0 (I - n (x) n)), n the "
+      "direction of gravity, sigma_v = -rho g d at depth d below the top of "
+      "the body's bounding box, the weight of the body above; each "
+      "particle's F and internal variables are those of its material at "
+      "that stress). Needs an effect with a uniform force field (gravity).");
+    prm.declare_entry(
+      "K0",
+      "elastic",
+      Patterns::Anything(),
+      "With 'Initial stress = geostatic': the lateral over the vertical "
+      "stress, a number >= 0 (e.g. Jaky's 1 - sin(phi) for a normally "
+      "consolidated soil), or 'elastic' for the material's own confined "
+      "response (nu / (1 - nu) for isotropic elasticity, 1 for a fluid).");
   }
 
   template <int dim>
@@ -286,9 +306,19 @@ namespace dealmpm
       reader.fail("Material",
                   "a material number from 1 to Number of materials (" +
                     std::to_string(n_materials) + ")");
-    body.material      = material - 1;
-    body.velocity      = reader.get_vector<dim>("Velocity");
-    body.allow_overlap = reader.get_bool("Allow overlap");
+    body.material        = material - 1;
+    body.velocity        = reader.get_vector<dim>("Velocity");
+    body.allow_overlap   = reader.get_bool("Allow overlap");
+    body.geostatic       = reader.get("Initial stress") == "geostatic";
+    const std::string K0 = reader.get("K0");
+    if (K0 != "elastic")
+      {
+        char *end = nullptr;
+        body.K0   = std::strtod(K0.c_str(), &end);
+        if (end == K0.c_str() || *end != '\0' || !std::isfinite(body.K0) ||
+            !(body.K0 >= 0))
+          reader.fail("K0", "'elastic' or a number >= 0");
+      }
     return body;
   }
 

@@ -31,16 +31,16 @@ csv=tiny/study.csv
 header="run,status,formulation,shape_function,stress_update,velocity_update,particles_per_cell,refinement,h,cfl_number,error_L2,error_max,wall_time,steps,particles,particle_steps_per_second,peak_memory_MB,energy_drift,momentum_drift,min_J,max_cfl,pareto_optimal,reason"
 [ "$(head -1 $csv)" = "$header" ] || fail "study: header $(head -1 $csv)"
 [ "$(wc -l < $csv)" = 9 ] || fail "study: $(($(wc -l < $csv) - 1)) rows, expected 8"
-ok=$(grep -c ",ok,CPDI,.*,APIC," $csv)
+ok=$(grep -c ",ok,updated Lagrangian,CPDI,.*,APIC," $csv)
 [ "$ok" = 4 ] || fail "study: $ok finished CPDI runs, expected 4"
-refused=$(grep -c ',failed,quadratic B-spline,.*B-spline needs a grid without hanging nodes' $csv)
+refused=$(grep -c ',failed,updated Lagrangian,quadratic B-spline,.*B-spline needs a grid without hanging nodes' $csv)
 [ "$refused" = 4 ] || fail "study: $refused refused B-spline rows, expected 4"
 # Finished runs have an error, a wall time and a memory figure; h halves.
-awk -F, '$2 == "ok" && ($10 == "" || $12 == "" || $16 == "") {exit 1}' $csv \
+awk -F, '$2 == "ok" && ($11 == "" || $13 == "" || $17 == "") {exit 1}' $csv \
   || fail "study: a finished run without error, time or memory"
-grep -q "^1,ok,CPDI,USL,APIC,2,0,0.25," $csv || fail "study: run 1 settings"
-grep -q "^2,ok,CPDI,USL,APIC,2,1,0.125," $csv || fail "study: run 2 settings"
-[ "$(awk -F, '$21 == 1' $csv | wc -l)" -ge 1 ] || fail "study: no Pareto-optimal run"
+grep -q "^1,ok,updated Lagrangian,CPDI,USL,APIC,2,0,0.25," $csv || fail "study: run 1 settings"
+grep -q "^2,ok,updated Lagrangian,CPDI,USL,APIC,2,1,0.125," $csv || fail "study: run 2 settings"
+[ "$(awk -F, '$22 == 1' $csv | wc -l)" -ge 1 ] || fail "study: no Pareto-optimal run"
 grep -q "Pareto" tiny/study.md || fail "study: study.md"
 if /usr/bin/python3 -c "import matplotlib" 2> /dev/null; then
   for f in study.png study.svg convergence.png convergence.svg; do

@@ -202,6 +202,10 @@ namespace dealmpm
     {
       return run_settings.method.formulation == Formulation::total_lagrangian;
     }
+    /** Bodies with 'Initial stress = geostatic' start at rest under the
+     * uniform force field of the effects (gravity). */
+    void
+    start_geostatic_bodies(SceneReader &reader);
     /** Refuse what total Lagrangian cannot do (fluids, bodies that start
      * apart) and make its reference stencil. */
     void

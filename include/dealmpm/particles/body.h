@@ -39,6 +39,10 @@ namespace dealmpm
     Tensor<1, dim>              velocity;
     /** Its particles replace those of earlier bodies where they overlap. */
     bool allow_overlap = false;
+    /** Start at rest under gravity ('Initial stress = geostatic'). */
+    bool geostatic = false;
+    /** Lateral over vertical stress; negative: the material's own. */
+    double K0 = -1;
 
     /** Declare the entries of "Body N". */
     static void
