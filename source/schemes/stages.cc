@@ -216,6 +216,12 @@ namespace dealmpm
       s.mixed_cells->prepare(s.grid, s.particles, s.stencil, s.fields, s.dt);
     }
 
+    /** The formulations as types, for the sweeps' template argument. */
+    using UpdatedLagrangian =
+      std::integral_constant<Formulation, Formulation::updated_lagrangian>;
+    using TotalLagrangian =
+      std::integral_constant<Formulation, Formulation::total_lagrangian>;
+
     /** Run @p sweep(formulation, adjust, increment) with the scene's
      * formulation (a std::integral_constant), the step's velocity-gradient
      * adjustment (the mixed-cell split if the scene has one, else none) and
@@ -225,10 +231,6 @@ namespace dealmpm
     void
     with_deformation_choices(StepState<dim> &s, const Sweep &sweep)
     {
-      using UpdatedLagrangian =
-        std::integral_constant<Formulation, Formulation::updated_lagrangian>;
-      using TotalLagrangian =
-        std::integral_constant<Formulation, Formulation::total_lagrangian>;
       const DeformationUpdate &update         = s.method.deformation_update;
       const auto               with_increment = [&](const auto  formulation,
                                       const auto &adjust) {
@@ -274,21 +276,20 @@ namespace dealmpm
     g2p(StepState<dim> &s, const std::string &timer_section)
     {
       TimerOutput::Scope t(s.timer, timer_section);
+      const auto         motion = [&](const auto formulation) {
+        s.left_cell =
+          grid_to_particle<G2P::motion, decltype(formulation)::value>(
+            s.grid,
+            s.stencil,
+            s.fields,
+            s.dt,
+            s.method.flip_fraction,
+            s.particles);
+      };
       if (s.method.formulation == Formulation::total_lagrangian)
-        grid_to_particle<G2P::motion, Formulation::total_lagrangian>(
-          s.grid,
-          s.stencil,
-          s.fields,
-          s.dt,
-          s.method.flip_fraction,
-          s.particles);
+        motion(TotalLagrangian());
       else
-        s.left_cell = grid_to_particle<G2P::motion>(s.grid,
-                                                    s.stencil,
-                                                    s.fields,
-                                                    s.dt,
-                                                    s.method.flip_fraction,
-                                                    s.particles);
+        motion(UpdatedLagrangian());
     }
 
     template <int dim>

@@ -98,6 +98,10 @@ expect 2 "MPM/Formulation.total Lagrangian.: expected 'updated Lagrangian' for b
   "$scene" "${s[@]}" -s "MPM/Formulation=total Lagrangian"
 expect 2 "MPM/Formulation.total Lagrangian.: expected 'updated Lagrangian' for a scene with a fluid \('Material 1' is a 'Tait fluid'" \
   "$(dirname "$scene")/hard-cases/dam_break.prm" "${s[@]}" -s "MPM/Formulation=total Lagrangian"
+# Geostatic stress needs gravity, and K0 a number or 'elastic'.
+expect 2 "Body 1/Initial stress.*expected 'none' in a scene without gravity" \
+  "$scene" "${s[@]}" -s "Body 1/Initial stress=geostatic"
+expect 2 "Body 1/K0.*expected 'elastic' or a number >= 0" "$scene" "${s[@]}" -s "Body 1/K0=-0.5"
 touch afile
 expect 2 "Output/Directory.*expected a folder that can be created and written" "$scene" -s "Output/Directory=afile/sub"
 # The same under MPI must not hang (only rank 0 makes folders).
