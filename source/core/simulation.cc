@@ -373,6 +373,12 @@ namespace dealmpm
           reader.fail("Initial stress",
                       "'none' in a scene without gravity (no listed effect "
                       "has a uniform force field)");
+        // Total Lagrangian's stencil is taken where F = I; a body filled
+        // at rest under stress has no such configuration on record.
+        if (total_lagrangian())
+          reader.fail("Initial stress",
+                      "'none' under 'MPM/Formulation = total Lagrangian' "
+                      "(its reference configuration is the stress-free one)");
         const Tensor<1, dim> n = g / g.norm();
         // Depths from the top of the body's bounding box.
         const BoundingBox<dim> box = bodies[b].shape->bounding_box();
@@ -414,8 +420,12 @@ namespace dealmpm
               }
             write_tensor<dim>(&props[f.deformation_gradient], F);
             write_symmetric<dim>(&props[f.stress], stress);
-            // The particle fills its place at that stretch.
+            // The particle fills its place at that stretch: its volume and
+            // (cpGIMP, CPDI) its domain are those it was filled with.
             props[f.initial_volume] /= determinant(F);
+            if (f.domain_half_length != numbers::invalid_unsigned_int)
+              for (unsigned int d = 0; d < dim; ++d)
+                props[f.domain_half_length + d] /= F[d][d];
           }
         failure = first_message(failure, comm);
         if (!failure.empty())

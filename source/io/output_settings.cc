@@ -26,7 +26,9 @@ namespace dealmpm
       "Write grid",
       "false",
       Patterns::Bool(),
-      "Grid .vtu/.pvtu files (nodal mass and velocity, level, rank) and grid.pvd.");
+      "Grid .vtu/.pvtu files (nodal mass and velocity, level, rank) and "
+      "grid.pvd (under total Lagrangian the grid is the reference one, "
+      "while the particles are shown where they are).");
     prm.declare_entry(
       "Particle CSV",
       "false",

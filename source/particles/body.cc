@@ -232,9 +232,12 @@ namespace dealmpm
       "falls into its own weight and bounces) or 'geostatic' (at rest under "
       "gravity: sigma = sigma_v (n (x) n + K0 (I - n (x) n)), n the "
       "direction of gravity, sigma_v = -rho g d at depth d below the top of "
-      "the body's bounding box, the weight of the body above; each "
-      "particle's F and internal variables are those of its material at "
-      "that stress). Needs an effect with a uniform force field (gravity).");
+      "the body's own bounding box: the weight of this body above, not of "
+      "other bodies resting on it; each particle's F and internal "
+      "variables are those of its material at that stress, and 'Density' "
+      "is the density at rest). Needs an effect with a uniform force field "
+      "(gravity); not with 'MPM/Formulation = total Lagrangian', whose "
+      "reference configuration is stress-free.");
     prm.declare_entry(
       "K0",
       "elastic",

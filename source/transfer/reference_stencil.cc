@@ -40,6 +40,25 @@ namespace dealmpm
     kernel.compute_stencil(grid, particles, stencil);
     if (apic)
       record_positions(grid, particles, stencil);
+    // X must lie in the particle's own cell: an effect that moved a particle
+    // without adding the move to its displacement would give it weights of
+    // another place.
+    for_each_particle_in_stencil_order(
+      grid,
+      particles.handler,
+      [&](const std::size_t, const auto &p, const GridCell<dim> &) {
+        const Point<dim> xi = p.get_reference_location();
+        for (unsigned int d = 0; d < dim; ++d)
+          if (!stencil.failed && (xi[d] < -1e-9 || xi[d] > 1. + 1e-9))
+            {
+              stencil.failed          = true;
+              stencil.failed_particle = p.get_id();
+              stencil.failed_location = p.get_location();
+              stencil.failure =
+                "its reference position x - u lies outside the cell it "
+                "started in";
+            }
+      });
     for_each_particle_in_stencil_order(
       grid,
       particles.handler,

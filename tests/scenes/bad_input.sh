@@ -102,6 +102,9 @@ expect 2 "MPM/Formulation.total Lagrangian.: expected 'updated Lagrangian' for a
 expect 2 "Body 1/Initial stress.*expected 'none' in a scene without gravity" \
   "$scene" "${s[@]}" -s "Body 1/Initial stress=geostatic"
 expect 2 "Body 1/K0.*expected 'elastic' or a number >= 0" "$scene" "${s[@]}" -s "Body 1/K0=-0.5"
+expect 2 "Body 1/Initial stress.*expected 'none' under 'MPM/Formulation = total Lagrangian'" \
+  "$(dirname "$scene")/elastic_column_2d.prm" "${s[@]}" -s "Body 1/Initial stress=geostatic" \
+  -s "MPM/Formulation=total Lagrangian"
 touch afile
 expect 2 "Output/Directory.*expected a folder that can be created and written" "$scene" -s "Output/Directory=afile/sub"
 # The same under MPI must not hang (only rank 0 makes folders).

@@ -4,8 +4,8 @@
 //   inside; with the Cauchy stress in place of P it would be -sigma N;
 // - G2P of a nodal velocity linear in the reference position, v = A X, gives
 //   dF/dt = A exactly: F_n+1 = F_n + dt A, L = A F_n^-1;
-// - the reference stencil is made at X = x - u with F = I, and the current
-//   state is given back;
+// - the reference stencil is made at X = x - u with F = I (cpGIMP, whose
+//   domains follow F), and the current state is given back;
 // - the smallest stretch of R diag(a, b, c) Q is min(a, b, c);
 // - bodies that touch share a node, bodies apart do not.
 #include <dealmpm/base/smallest_stretch.h>
@@ -177,11 +177,13 @@ TEST(TotalLagrangian, DeformationRateIsTheReferenceVelocityGradient)
 
 TEST(TotalLagrangian, ReferenceStencilIsMadeAtTheReferencePositions)
 {
-  auto            simulation = test::make_simulation<2>(block);
-  ParticleSet<2> &particles  = simulation->particle_set();
-  const auto     &grid       = simulation->background_grid();
+  // cpGIMP stretches its domains by F: the reference stencil must see F = I.
+  auto simulation = test::make_simulation<2>(
+    std::string(block) + "subsection MPM\n set Shape function = cpGIMP\nend\n");
+  ParticleSet<2> &particles = simulation->particle_set();
+  const auto     &grid      = simulation->background_grid();
   Stencil<2>      at_start;
-  compute_linear_stencil(grid, particles, at_start);
+  simulation->get_kernel().compute_stencil(grid, particles, at_start);
 
   // Move and deform every particle; the stencil must not see it.
   const CoreFields     &f = particles.fields;
