@@ -23,8 +23,10 @@ if [ -n "$missing" ]; then
 fi
 
 jobs=$(nproc 2>/dev/null || echo 2)
-# ccache hits across clones of the project (CI builds a fresh clone).
-export CCACHE_BASEDIR="$PWD"
+# ccache hits across clones of the project (CI builds a fresh clone): paths
+# relative to the clone, and the build folder left out of the hash (deal.II's
+# flags have -g, which would otherwise hash it).
+export CCACHE_BASEDIR="$PWD" CCACHE_NOHASHDIR=1
 [ -f build/CMakeCache.txt ] || cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j "$jobs"
 
