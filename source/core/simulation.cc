@@ -90,7 +90,8 @@ namespace dealmpm
       }
     stages = stages_of<dim>(run_settings.method.scheme,
                             mixed_cells != nullptr,
-                            run_settings.method.formulation);
+                            run_settings.method.formulation,
+                            run_settings.method.particle_update.newmark);
 
     particle_check =
       check_particles(grid, materials, *particles, total_lagrangian());
@@ -157,6 +158,8 @@ namespace dealmpm
     std::vector<FieldDescription> method_fields = kernel.particle_fields();
     if (run_settings.method.apic)
       method_fields.push_back({"apic_B", dim * dim});
+    if (run_settings.method.particle_update.newmark)
+      method_fields.push_back({"acceleration", dim});
     std::vector<FieldDescription> effect_fields;
     for (const auto &effect : effects)
       for (const FieldDescription &f : effect->particle_fields())
@@ -256,6 +259,7 @@ namespace dealmpm
                          dt,
                          *computing_timer);
     state.mixed_cells = mixed_cells.get();
+    state.previous_dt = loop.last_dt;
     for (const Stage<dim> &stage : stages)
       stage.run(state, stage.name);
 
@@ -279,6 +283,7 @@ namespace dealmpm
                        loop.time + dt,
                        comm);
     loop.time += dt;
+    loop.last_dt = dt;
     ++loop.step;
     if (Utilities::MPI::logical_or(state.left_cell, comm))
       {

@@ -47,6 +47,9 @@ namespace dealmpm
     fields.affine_velocity    = layout.has("apic_B") ?
                                   layout.offset("apic_B") :
                                   numbers::invalid_unsigned_int;
+    fields.acceleration       = layout.has("acceleration") ?
+                                  layout.offset("acceleration") :
+                                  numbers::invalid_unsigned_int;
     // One block of internal variables per model in use, shared by the
     // materials of that model.
     std::map<std::string, unsigned int> block_of_model;

@@ -99,8 +99,64 @@ namespace dealmpm
                       "4",
                       Patterns::Integer(1, 1000),
                       "Number of substeps N of 'subcycle'.");
+    prm.declare_entry(
+      "Particle update",
+      "explicit",
+      Patterns::Selection(ParticleUpdate::pattern()),
+      "How particles advance from the grid's acceleration a: 'explicit' "
+      "(the usual MPM: v += dt a, then x moves with the new grid velocity; "
+      "the velocity lags the position by half a step, so velocities and "
+      "kinetic energy carry an O(dt) error) or 'Newmark' (Newmark's "
+      "formulas with 'Newmark beta' and 'Newmark gamma', in Hughes and "
+      "Liu's explicit predictor-corrector form: the force is taken at the "
+      "predicted position, one force evaluation a step, the same stable "
+      "step; velocities second order in dt with gamma = 1/2). Newmark "
+      "needs 'Stress update = MUSL' (the particles' displacement velocity "
+      "is re-mapped to the grid) and 'Velocity update = FLIP', and adds "
+      "dim doubles per particle (the acceleration).");
+    prm.declare_entry("Newmark beta",
+                      "0.25",
+                      Patterns::Double(),
+                      "Newmark's beta, in [0, 0.5]: the weight of the new "
+                      "acceleration in the position (0.25: average "
+                      "acceleration; 0: central difference).");
+    prm.declare_entry("Newmark gamma",
+                      "0.5",
+                      Patterns::Double(),
+                      "Newmark's gamma, in [0.5, 1]: the weight of the new "
+                      "acceleration in the velocity (0.5: no numerical "
+                      "damping; above 0.5 damps the highest frequencies, "
+                      "at the cost of first order in dt).");
     prm.leave_subsection();
   }
+
+  namespace
+  {
+    /** Newmark's parameters, and what it needs of the other entries. */
+    void
+    read_newmark(SceneReader &reader, MethodSettings &s)
+    {
+      ParticleUpdate &u = s.particle_update;
+      u.beta            = reader.get_double("Newmark beta");
+      u.gamma           = reader.get_double("Newmark gamma");
+      if (!(u.beta >= 0 && u.beta <= 0.5))
+        reader.fail("Newmark beta", "a number in [0, 0.5]");
+      if (!(u.gamma >= 0.5 && u.gamma <= 1))
+        reader.fail("Newmark gamma",
+                    "a number in [0.5, 1] (below 0.5 the update gains "
+                    "energy)");
+      if (s.scheme != UpdateScheme::MUSL)
+        reader.fail("Stress update",
+                    "'MUSL' with 'Particle update = Newmark' (its "
+                    "displacement velocity is re-mapped to the grid as "
+                    "MUSL re-maps momentum)");
+      if (s.flip_fraction != 1 || s.apic)
+        reader.fail("Velocity update",
+                    "'FLIP' with 'Particle update = Newmark' (Newmark "
+                    "advances the velocity by the acceleration; PIC and "
+                    "APIC replace it by the grid's)");
+    }
+  } // namespace
 
   MethodSettings
   MethodSettings::read(SceneReader &reader)
@@ -132,6 +188,9 @@ namespace dealmpm
       DeformationUpdate::parse(reader.get("Deformation gradient update"));
     s.deformation_update.taylor_terms = reader.get_integer("Taylor terms");
     s.deformation_update.subcycles    = reader.get_integer("Subcycles");
+    s.particle_update.newmark = reader.get("Particle update") == "Newmark";
+    if (s.particle_update.newmark)
+      read_newmark(reader, s);
     return s;
   }
 } // namespace dealmpm

@@ -2,6 +2,7 @@
 #include <dealmpm/grid/grid_update.h>
 #include <dealmpm/schemes/stages.h>
 #include <dealmpm/transfer/grid_to_particle.h>
+#include <dealmpm/transfer/newmark_update.h>
 #include <dealmpm/transfer/particle_to_grid.h>
 #include <dealmpm/transfer/reference_stencil.h>
 
@@ -13,7 +14,8 @@ namespace dealmpm
   std::vector<Stage<dim>>
   stages_of(const UpdateScheme scheme,
             const bool         split_mixed_cells,
-            const Formulation  formulation)
+            const Formulation  formulation,
+            const bool         newmark)
   {
     using namespace stages;
     // Before the sweep that deforms the particles, from the velocity it
@@ -32,6 +34,23 @@ namespace dealmpm
       {"grid update", &grid_update<dim>},
       {"effects after the grid update", &effects_after_grid_update<dim>}};
     std::vector<Stage<dim>> list(std::begin(first), std::end(first));
+    if (newmark)
+      {
+        // MUSL's order, with the particles' displacement velocity re-mapped
+        // in place of their momentum (MethodSettings requires MUSL).
+        list.push_back({"P2G", &p2g_newmark<dim>});
+        list.insert(list.end(),
+                    std::begin(p2g_and_forces) + 1,
+                    std::end(p2g_and_forces));
+        list.push_back({"Newmark G2P", &newmark_predictor<dim>});
+        list.push_back({"P2G", &p2g_mass_momentum<dim>});
+        list.push_back({"grid update", &velocity_from_momentum<dim>});
+        split(list);
+        list.push_back(
+          {"Newmark motion and stress update", &newmark_motion<dim>});
+        list.push_back({"effects after G2P", &effects_after_g2p<dim>});
+        return list;
+      }
     switch (scheme)
       {
         case UpdateScheme::USL:
@@ -127,6 +146,24 @@ namespace dealmpm
                        true,
                        true,
                        s.method.formulation);
+    }
+
+    template <int dim>
+    void
+    p2g_newmark(StepState<dim> &s, const std::string &timer_section)
+    {
+      TimerOutput::Scope t(s.timer, timer_section);
+      particle_to_grid(s.grid,
+                       s.particles,
+                       s.stencil,
+                       s.fields,
+                       true,
+                       true,
+                       s.method.formulation,
+                       NewmarkStep(s.method.particle_update,
+                                   s.dt,
+                                   s.previous_dt)
+                         .predictor_offset);
     }
 
     template <int dim>
@@ -315,6 +352,49 @@ namespace dealmpm
 
     template <int dim>
     void
+    newmark_predictor(StepState<dim> &s, const std::string &timer_section)
+    {
+      TimerOutput::Scope t(s.timer, timer_section);
+      newmark_predict(s.grid,
+                      s.stencil,
+                      s.fields,
+                      NewmarkStep(s.method.particle_update,
+                                  s.dt,
+                                  s.previous_dt),
+                      s.dt,
+                      s.particles);
+    }
+
+    template <int dim>
+    void
+    newmark_motion(StepState<dim> &s, const std::string &timer_section)
+    {
+      TimerOutput::Scope                       t(s.timer, timer_section);
+      const CoreFields                        &f = s.particles.fields;
+      ReportNewmarkVelocity<StressUpdate<dim>> report{
+        NewmarkStep(s.method.particle_update, s.dt, s.previous_dt).reported,
+        f.velocity,
+        f.acceleration,
+        s.stress_update};
+      with_deformation_choices(
+        s,
+        [&](const auto formulation, const auto &adjust, const auto &increment) {
+          s.left_cell = grid_to_particle<G2P::position_and_deformation,
+                                         decltype(formulation)::value>(
+            s.grid,
+            s.stencil,
+            s.fields,
+            s.dt,
+            s.method.flip_fraction,
+            s.particles,
+            report,
+            adjust,
+            increment);
+        });
+    }
+
+    template <int dim>
+    void
     effects_after_g2p(StepState<dim> &s, const std::string &)
     {
       const EffectContext<dim> context = s.effect_context();
@@ -324,8 +404,11 @@ namespace dealmpm
     }
   } // namespace stages
 
-#define DEALMPM_INSTANTIATE(dim) \
-  template std::vector<Stage<dim>> stages_of(UpdateScheme, bool, Formulation);
+#define DEALMPM_INSTANTIATE(dim)                           \
+  template std::vector<Stage<dim>> stages_of(UpdateScheme, \
+                                             bool,         \
+                                             Formulation,  \
+                                             bool);
   DEALMPM_INSTANTIATE(2)
   DEALMPM_INSTANTIATE(3)
 #undef DEALMPM_INSTANTIATE

@@ -29,12 +29,14 @@ namespace dealmpm
               bool mass_and_momentum,
               bool internal_force,
               bool affine,
-              bool total_lagrangian = false>
+              bool total_lagrangian = false,
+              bool predictor        = false>
     void
     transfer(const BackgroundGrid<dim> &grid,
              const ParticleSet<dim>    &particles,
              const Stencil<dim>        &stencil,
-             NodalFields<dim>          &fields)
+             NodalFields<dim>          &fields,
+             const double               predictor_offset = 0)
     {
       double *mass = fields.mass.begin();
       double *momentum[dim], *force[dim];
@@ -53,7 +55,10 @@ namespace dealmpm
             const GridCell<dim> &) DEAL_II_ALWAYS_INLINE {
           const ArrayView<const double> props = p.get_properties();
           const double                  m     = props[f.mass];
-          const Tensor<1, dim> v = read_vector<dim>(&props[f.velocity]);
+          Tensor<1, dim> v = read_vector<dim>(&props[f.velocity]);
+          // Newmark: the grid carries the predicted velocity.
+          if constexpr (predictor)
+            v -= predictor_offset * read_vector<dim>(&props[f.acceleration]);
           // APIC: the particle carries the affine field v + C (x - x_p)
           // with C = B D^-1, B stored by G2P and D = sum N (x_i - x_p) (x)
           // (x_i - x_p), x_p the position of the stencil (MUSL re-maps
@@ -112,7 +117,8 @@ namespace dealmpm
                    NodalFields<dim>          &fields,
                    const bool                 mass_and_momentum,
                    const bool                 internal_force,
-                   const Formulation          formulation)
+                   const Formulation          formulation,
+                   const double               predictor_offset)
   {
     if (mass_and_momentum)
       {
@@ -127,7 +133,21 @@ namespace dealmpm
     const bool affine =
       particles.fields.affine_velocity != numbers::invalid_unsigned_int;
     const bool reference = formulation == Formulation::total_lagrangian;
-    if (internal_force && reference)
+    if (predictor_offset != 0.)
+      {
+        // Newmark's first P2G (FLIP only: no affine part).
+        AssertThrow(mass_and_momentum && internal_force && !affine &&
+                      particles.fields.acceleration !=
+                        numbers::invalid_unsigned_int,
+                    ExcInternalError());
+        if (reference)
+          transfer<dim, true, true, false, true, true>(
+            grid, particles, stencil, fields, predictor_offset);
+        else
+          transfer<dim, true, true, false, false, true>(
+            grid, particles, stencil, fields, predictor_offset);
+      }
+    else if (internal_force && reference)
       {
         if (mass_and_momentum && affine)
           transfer<dim, true, true, true, true>(grid,
@@ -174,7 +194,8 @@ namespace dealmpm
                                  NodalFields<dim> &,          \
                                  bool,                        \
                                  bool,                        \
-                                 Formulation);
+                                 Formulation,                 \
+                                 double);
   DEALMPM_INSTANTIATE(2)
   DEALMPM_INSTANTIATE(3)
 #undef DEALMPM_INSTANTIATE

@@ -105,6 +105,16 @@ expect 2 "Body 1/K0.*expected 'elastic' or a number >= 0" "$scene" "${s[@]}" -s 
 expect 2 "Body 1/Initial stress.*expected 'none' under 'MPM/Formulation = total Lagrangian'" \
   "$(dirname "$scene")/elastic_column_2d.prm" "${s[@]}" -s "Body 1/Initial stress=geostatic" \
   -s "MPM/Formulation=total Lagrangian"
+# Newmark needs MUSL and FLIP, and its parameters in their ranges.
+n=(-s "MPM/Particle update=Newmark")
+expect 2 "MPM/Stress update.*expected 'MUSL' with 'Particle update = Newmark'" \
+  "$scene" "${s[@]}" "${n[@]}" -s "MPM/Stress update=USL"
+expect 2 "MPM/Velocity update.*expected 'FLIP' with 'Particle update = Newmark'" \
+  "$scene" "${s[@]}" "${n[@]}" -s "MPM/Velocity update=APIC"
+expect 2 "MPM/Newmark gamma.*expected a number in \[0.5, 1\]" \
+  "$scene" "${s[@]}" "${n[@]}" -s "MPM/Newmark gamma=0.4"
+expect 2 "MPM/Newmark beta.*expected a number in \[0, 0.5\]" \
+  "$scene" "${s[@]}" "${n[@]}" -s "MPM/Newmark beta=-0.1"
 touch afile
 expect 2 "Output/Directory.*expected a folder that can be created and written" "$scene" -s "Output/Directory=afile/sub"
 # The same under MPI must not hang (only rank 0 makes folders).

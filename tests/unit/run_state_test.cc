@@ -17,6 +17,7 @@ TEST(RunState, WrittenAndReadBackWhole)
   state.particle_steps   = 9.87654321e12;
   state.stepping_time    = 12.5;
   state.lost_particles   = 7;
+  state.last_dt          = 1e-3 / 3;
   state.output.counter   = 5;
   state.output.last_time = 2. / 7.;
   state.output.last_step = 1200;
@@ -46,6 +47,7 @@ TEST(RunState, WrittenAndReadBackWhole)
   EXPECT_EQ(read.particle_steps, state.particle_steps);
   EXPECT_EQ(read.stepping_time, state.stepping_time);
   EXPECT_EQ(read.lost_particles, state.lost_particles);
+  EXPECT_EQ(read.last_dt, state.last_dt);
   EXPECT_EQ(read.output.counter, state.output.counter);
   EXPECT_EQ(read.output.last_time, state.output.last_time);
   EXPECT_EQ(read.output.last_step, state.output.last_step);

@@ -10,12 +10,12 @@ namespace dealmpm
 {
   /**
    * Everything a run has learnt besides its particles and grid: where it is
-   * (time, step), what it has written (the output record), when it writes
-   * next, its speed counters, the particles it lost or held at a wall, the
-   * accuracy monitor, and each effect's accumulators (in the order the scene
-   * lists them, filled when the state is saved). Written and read whole, so
-   * that a later `resume` can rebuild the loop from a saved run instead of from
-   * the scene's start.
+   * (time, step, the last step's size), what it has written (the output
+   * record), when it writes next, its speed counters, the particles it lost or
+   * held at a wall, the accuracy monitor, and each effect's accumulators (in
+   * the order the scene lists them, filled when the state is saved). Written
+   * and read whole, so that a later `resume` can rebuild the loop from a saved
+   * run instead of from the scene's start.
    */
   struct RunState
   {
@@ -26,6 +26,7 @@ namespace dealmpm
     double          stepping_time  = 0; ///< wall seconds of steps + checks
     double          lost_particles = 0; ///< all ranks
     double          held_particles = 0; ///< put back on a wall, all ranks
+    double          last_dt = 0; ///< the last step's size (Newmark needs it)
     OutputRecord    output;
     AccuracyMonitor accuracy;
     std::vector<std::vector<double>> effect_states;
@@ -34,9 +35,9 @@ namespace dealmpm
     void
     serialize(Archive &archive, const unsigned int /*version*/)
     {
-      archive &time &step &next_output &particle_steps &stepping_time;
-      archive &lost_particles &held_particles &output  &accuracy;
-      archive                                          &effect_states;
+      archive &time &step &next_output &particle_steps         &stepping_time;
+      archive &lost_particles &held_particles &last_dt &output &accuracy;
+      archive                                                  &effect_states;
     }
 
     /** As text with every double to the last bit. */

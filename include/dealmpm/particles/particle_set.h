@@ -28,6 +28,9 @@ namespace dealmpm
      * invalid_unsigned_int when the scene does not use APIC (then no particle
      * stores it). */
     unsigned int affine_velocity;
+    /** Newmark's particle acceleration (dim), or invalid_unsigned_int when
+     * the scene does not use Newmark. */
+    unsigned int acceleration;
     /** GIMP's initial particle-domain half-lengths (dim), or
      * invalid_unsigned_int for kernels without a particle domain. */
     unsigned int domain_half_length;
@@ -45,7 +48,8 @@ namespace dealmpm
     /**
      * The layout is built from what the parts of the run ask for, in this
      * order: the core fields, @p method_fields (the shape function's and
-     * the transfer's: "domain_half_length", "apic_B"), per material index
+     * the transfer's: "domain_half_length", "apic_B",
+     * "acceleration"), per material index
      * the model's @p internal_variables (models that share a name share
      * storage), then the listed effects' @p effect_fields.
      */

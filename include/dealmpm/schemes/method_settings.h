@@ -3,6 +3,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <dealmpm/base/scene_reader.h>
+#include <dealmpm/schemes/particle_update.h>
 #include <dealmpm/schemes/update_scheme.h>
 #include <dealmpm/transfer/deformation_update.h>
 #include <dealmpm/transfer/formulation.h>
@@ -17,8 +18,8 @@ namespace dealmpm
    * The "MPM" section: the formulation, the stress update scheme, the
    * shape function, the
    * velocity transfer, the nodal mass threshold, what happens to
-   * particles that leave the grid, cells of mixed materials and the
-   * deformation gradient update.
+   * particles that leave the grid, cells of mixed materials, the
+   * deformation gradient update and the particle update.
    */
   struct MethodSettings
   {
@@ -35,6 +36,8 @@ namespace dealmpm
     bool split_mixed_cells = true;
     /** How F advances over a step. */
     DeformationUpdate deformation_update;
+    /** How particles advance from the grid's acceleration. */
+    ParticleUpdate particle_update;
 
     /** Declare the section's entries. */
     static void

@@ -26,12 +26,17 @@ namespace dealmpm
    * the mixed-cell split (MixedCellSplit) comes before the sweep that
    * deforms the particles, and that sweep applies it. With @p formulation
    * total Lagrangian, the stencil is the reference one, made in the first
-   * step and kept; the other stages are the same. */
+   * step and kept; the other stages are the same. With @p newmark
+   * (ParticleUpdate; the scheme is MUSL), the particles advance by
+   * Newmark's formulas: P2G of the predicted velocity, the acceleration
+   * and displacement velocity on the particles, its re-map, then one sweep
+   * that moves, deforms and reports the velocity. */
   template <int dim>
   std::vector<Stage<dim>>
   stages_of(const UpdateScheme scheme,
             const bool         split_mixed_cells = false,
-            const Formulation  formulation = Formulation::updated_lagrangian);
+            const Formulation  formulation = Formulation::updated_lagrangian,
+            const bool         newmark     = false);
 
   /** The stages, each a function of the step's state. */
   namespace stages
@@ -52,6 +57,11 @@ namespace dealmpm
     template <int dim>
     void
     p2g(StepState<dim> &state, const std::string &timer_section);
+
+    /** P2G of mass, Newmark's predicted momentum and internal force. */
+    template <int dim>
+    void
+    p2g_newmark(StepState<dim> &state, const std::string &timer_section);
 
     /** P2G of mass and momentum (USF's and MUSL's re-map). */
     template <int dim>
@@ -108,6 +118,18 @@ namespace dealmpm
     template <int dim>
     void
     stress_update(StepState<dim> &state, const std::string &timer_section);
+
+    /** Newmark's acceleration and displacement velocity on the particles
+     * (newmark_predict()). */
+    template <int dim>
+    void
+    newmark_predictor(StepState<dim> &state, const std::string &timer_section);
+
+    /** Newmark's move, F and stress from the re-mapped displacement
+     * velocity, and the particle velocity (ReportNewmarkVelocity). */
+    template <int dim>
+    void
+    newmark_motion(StepState<dim> &state, const std::string &timer_section);
 
     /** Effects after G2P. */
     template <int dim>

@@ -82,6 +82,8 @@ namespace dealmpm
     unsigned int step;
     double       time;
     double       dt;
+    /** The step before's size, 0 in the first step (Newmark). */
+    double       previous_dt = 0;
     TimerOutput &timer;
 
     /** The stress update and what it learns of the particles. */

@@ -16,7 +16,11 @@ namespace dealmpm
   {
     motion,      ///< velocity, position, displacement, reference location
     deformation, ///< L, F, then the after-deformation callback
-    motion_and_deformation
+    motion_and_deformation,
+    /** position, displacement, reference location, L, F and the callback,
+     * all from one nodal velocity; the particle velocity is the callback's
+     * (Newmark) */
+    position_and_deformation
   };
 
   /** A callback for sweeps without deformation. */
@@ -148,6 +152,10 @@ namespace dealmpm
    * x_i - x_p are reference positions then, as the stencil's positions
    * are.
    *
+   * - position_and_deformation: motion without the velocity update, and
+   *   deformation, from the same nodal velocity (Newmark's re-mapped
+   *   displacement velocity, newmark_predict()).
+   *
    * @return true if motion moved some local particle out of its cell
    * (never with total Lagrangian).
    */
@@ -168,7 +176,9 @@ namespace dealmpm
                    const AdjustGradient      &adjust_gradient   = {},
                    const Increment           &f_increment       = {})
   {
-    constexpr bool motion      = what != G2P::deformation;
+    constexpr bool motion =
+      what == G2P::motion || what == G2P::motion_and_deformation;
+    constexpr bool move        = what != G2P::deformation;
     constexpr bool deformation = what != G2P::motion;
     constexpr bool reference   = formulation == Formulation::total_lagrangian;
     const double  *velocity[dim], *increment[dim];
@@ -199,11 +209,10 @@ namespace dealmpm
               const double       N = stencil.N[e];
               for (unsigned int d = 0; d < dim; ++d)
                 {
+                  if (move)
+                    v_grid[d] += N * velocity[d][n];
                   if (motion)
-                    {
-                      v_grid[d] += N * velocity[d][n];
-                      dv[d] += N * increment[d][n];
-                    }
+                    dv[d] += N * increment[d][n];
                   if (deformation)
                     for (unsigned int b = 0; b < dim; ++b)
                       L[d][b] += velocity[d][n] * stencil.grad_N[e][b];
@@ -218,9 +227,10 @@ namespace dealmpm
             }
           const ArrayView<double> props = p.get_properties();
           if (motion)
+            g2p_sweep::update_velocity(
+              props, f, v_grid, dv, B, flip_fraction, affine);
+          if (move)
             {
-              g2p_sweep::update_velocity(
-                props, f, v_grid, dv, B, flip_fraction, affine);
               if constexpr (reference)
                 g2p_sweep::displace(p, props, f, x_p, dt * v_grid);
               else

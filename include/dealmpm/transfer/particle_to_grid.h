@@ -16,7 +16,8 @@ namespace dealmpm
    * with @p formulation total Lagrangian, the stencil's gradients are the
    * reference ones and f_int = -sum_p V_p0 P_p Grad N, P = J sigma F^-T.
    * External forces are the effects' business (gravity acts on the nodal
-   * mass directly, which is the same sum).
+   * mass directly, which is the same sum). A nonzero @p predictor_offset
+   * (Newmark, see NewmarkStep) maps the momentum of v_p - offset a_p.
    */
   template <int dim>
   void
@@ -27,5 +28,6 @@ namespace dealmpm
     NodalFields<dim>          &fields,
     const bool                 mass_and_momentum = true,
     const bool                 internal_force    = true,
-    const Formulation          formulation = Formulation::updated_lagrangian);
+    const Formulation          formulation = Formulation::updated_lagrangian,
+    const double               predictor_offset = 0);
 } // namespace dealmpm
