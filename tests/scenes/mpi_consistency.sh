@@ -11,7 +11,9 @@
 #   quadratic B-spline (3 x 3 node blocks reaching into ghost cells);
 # - the 3D elastic column settling (slip walls, gravity, damping, CFL step);
 # - total Lagrangian: the 3D column, and the cantilever with the quadratic
-#   B-spline (reference stencils reaching into ghost cells).
+#   B-spline (reference stencils reaching into ghost cells);
+# - the Newmark particle update on the disks (particles carry their
+#   acceleration across the rank boundary).
 # Every run must have particles on both ranks.
 set -euo pipefail
 dealmpm=$1 compare=$2 mpirun=$3 disks=$4 column=$5
@@ -43,6 +45,7 @@ compare_ranks cpdi "$disks" "${fast[@]}" -s "MPM/Shape function=CPDI" \
   -s "Grid/Local refinement/Levels=1" -s "Grid/Local refinement/Lower corner=-0.25, -0.5" \
   -s "Grid/Local refinement/Upper corner=0.25, 0.5"
 compare_ranks bspline "$disks" "${fast[@]}" -s "MPM/Shape function=quadratic B-spline"
+compare_ranks newmark "$disks" "${fast[@]}" -s "MPM/Particle update=Newmark"
 compare_ranks column "$column" -s "Time/End time=0.3" -s "Output/Interval=0.02"
 compare_ranks column_tl "$column" -s "Time/End time=0.3" -s "Output/Interval=0.02" \
   -s "MPM/Formulation=total Lagrangian"
