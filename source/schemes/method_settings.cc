@@ -114,12 +114,18 @@ namespace dealmpm
       "needs 'Stress update = MUSL' (the particles' displacement velocity "
       "is re-mapped to the grid) and 'Velocity update = FLIP', and adds "
       "dim doubles per particle (the acceleration).");
-    prm.declare_entry("Newmark beta",
-                      "0.25",
-                      Patterns::Double(),
-                      "Newmark's beta, in [0, 0.5]: the weight of the new "
-                      "acceleration in the position (0.25: average "
-                      "acceleration; 0: central difference).");
+    prm.declare_entry(
+      "Newmark beta",
+      "0",
+      Patterns::Double(),
+      "Newmark's beta, in [0, 0.5]: the weight of the new acceleration in "
+      "the position (0: central differences; 0.25: average acceleration). "
+      "In this explicit form the force is taken at the predicted position, "
+      "so beta > 0 buys no stability; it changes the first step and puts "
+      "the stored position beta dt^2 a from Newmark's, whose energy "
+      "mismatch at the start of a run (of the order of the energy put in "
+      "by then) can trip 'Checks/Energy growth limit'. 0 keeps positions "
+      "and velocities consistent from the first step.");
     prm.declare_entry("Newmark gamma",
                       "0.5",
                       Patterns::Double(),

@@ -26,7 +26,7 @@ namespace
 
   /** Largest errors of the particle at x > 0 over one period in n steps. */
   Errors
-  single_particle_errors(const bool newmark, const unsigned int n)
+  single_particle_errors(const std::string &update, const unsigned int n)
   {
     const double E = 4 * M_PI * M_PI, v0 = 0.1, x0 = 0.5, w = 2 * M_PI;
     std::string  scene =
@@ -39,7 +39,7 @@ namespace
       "\n  set Poisson's ratio = 0\n  set Yield stress = 1e30\n end\nend\n"
       "subsection MPM\n set Deformation gradient update = Taylor series\n"
       " set Taylor terms = 6\n" +
-      std::string(newmark ? " set Particle update = Newmark\n" : "") + "end\n";
+      update + "end\n";
     // Body 1 fills [0, 1] and moves right, body 2 its mirror image.
     for (const int side : {1, -1})
       scene += "subsection Body " + std::to_string(side > 0 ? 1 : 2) +
@@ -75,7 +75,7 @@ namespace
    * rho = 1, one cell per unit length, 2 x 2 particles a cell) over one
    * period in steps of dt. */
   double
-  bar_energy_drift(const bool newmark, const double dt)
+  bar_energy_drift(const std::string &update, const double dt)
   {
     constexpr double  L = 25, v0 = 0.01;
     const double      beta = M_PI / (2 * L), omega = beta * 10;
@@ -87,10 +87,9 @@ namespace
       "subsection Material 1\n set Density = 1\n subsection linear elastic\n"
       "  set Young's modulus = 100\n  set Poisson's ratio = 0\n end\nend\n"
       "subsection Body 1\n set Lower corner = 0, 0\n set Upper corner = 25, 1\n"
-      " set Particles per cell = 2\nend\n" +
-      std::string(newmark ? "subsection MPM\n set Particle update = Newmark\n"
-                            "end\n" :
-                            "");
+      " set Particles per cell = 2\nend\n"
+      "subsection MPM\n" +
+      update + "end\n";
     auto              simulation = test::make_simulation<2>(scene);
     auto             &particles  = simulation->particle_set();
     const CoreFields &f          = particles.fields;
@@ -110,59 +109,83 @@ namespace
       }
     return drift;
   }
+
+  /** The MPM entries of Newmark with @p beta. */
+  std::string
+  newmark_with(const double beta)
+  {
+    return " set Particle update = Newmark\n set Newmark beta = " +
+           std::to_string(beta) + "\n";
+  }
 } // namespace
 
 TEST(Newmark, SingleParticleBarVelocityIsSecondOrderInTime)
 {
   // Steps per period: 50, 100, 200, 400.
-  std::vector<Errors> explicit_update, newmark;
-  for (const unsigned int n : {50, 100, 200, 400})
+  const unsigned int  steps[] = {50, 100, 200, 400};
+  std::vector<Errors> explicit_update;
+  for (const unsigned int n : steps)
+    explicit_update.push_back(single_particle_errors("", n));
+  for (const double beta : {0., 0.25})
     {
-      explicit_update.push_back(single_particle_errors(false, n));
-      newmark.push_back(single_particle_errors(true, n));
-      std::cout << "single-particle bar, " << n
-                << " steps: explicit position, velocity error "
-                << explicit_update.back().position << ", "
-                << explicit_update.back().velocity << "; Newmark "
-                << newmark.back().position << ", " << newmark.back().velocity
-                << std::endl;
+      std::vector<Errors> newmark;
+      for (unsigned int k = 0; k < 4; ++k)
+        {
+          newmark.push_back(
+            single_particle_errors(newmark_with(beta), steps[k]));
+          std::cout << "single-particle bar, " << steps[k]
+                    << " steps: explicit position, velocity error "
+                    << explicit_update[k].position << ", "
+                    << explicit_update[k].velocity
+                    << "; Newmark (beta = " << beta << ") "
+                    << newmark[k].position << ", " << newmark[k].velocity
+                    << std::endl;
+        }
+      for (unsigned int k = 0; k + 1 < newmark.size(); ++k)
+        {
+          // Measured 2.0 and 1.0 at every halving.
+          EXPECT_NEAR(std::log2(newmark[k].velocity / newmark[k + 1].velocity),
+                      2,
+                      0.1);
+          EXPECT_NEAR(std::log2(explicit_update[k].velocity /
+                                explicit_update[k + 1].velocity),
+                      1,
+                      0.1);
+        }
+      // 57x at 400 steps. The position's error is 65x smaller at 100
+      // steps, but first order in the end (1.3, 1.2): x moves by N(x_n) of
+      // the start of the step, forward Euler in the shape function.
+      EXPECT_LT(newmark[3].velocity, explicit_update[3].velocity / 40);
+      EXPECT_LT(newmark[1].position, explicit_update[1].position / 40);
     }
-  for (unsigned int k = 0; k + 1 < newmark.size(); ++k)
-    {
-      // Measured 2.0 and 1.0 at every halving.
-      EXPECT_NEAR(std::log2(newmark[k].velocity / newmark[k + 1].velocity),
-                  2,
-                  0.1);
-      EXPECT_NEAR(std::log2(explicit_update[k].velocity /
-                            explicit_update[k + 1].velocity),
-                  1,
-                  0.1);
-    }
-  // 57x at 400 steps. The position's error is 65x smaller at 100 steps,
-  // but first order in the end (1.3, 1.2): x moves by N(x_n) of the start
-  // of the step, forward Euler in the shape function.
-  EXPECT_LT(newmark[3].velocity, explicit_update[3].velocity / 40);
-  EXPECT_LT(newmark[1].position, explicit_update[1].position / 40);
 }
 
 TEST(Newmark, ContinuumBarEnergyDriftIsSecondOrderInTime)
 {
   // dt = 0.04 is CFL 0.4.
   const double dts[] = {0.04, 0.02, 0.01};
-  double       explicit_drift[3], newmark_drift[3];
+  double       explicit_drift[3];
   for (unsigned int k = 0; k < 3; ++k)
+    explicit_drift[k] = bar_energy_drift("", dts[k]);
+  for (const double beta : {0., 0.25})
     {
-      explicit_drift[k] = bar_energy_drift(false, dts[k]);
-      newmark_drift[k]  = bar_energy_drift(true, dts[k]);
-      std::cout << "continuum bar, dt = " << dts[k]
-                << ": largest energy drift explicit " << explicit_drift[k]
-                << ", Newmark " << newmark_drift[k] << std::endl;
+      double newmark_drift[3];
+      for (unsigned int k = 0; k < 3; ++k)
+        {
+          newmark_drift[k] = bar_energy_drift(newmark_with(beta), dts[k]);
+          std::cout << "continuum bar, dt = " << dts[k]
+                    << ": largest energy drift explicit " << explicit_drift[k]
+                    << ", Newmark (beta = " << beta << ") " << newmark_drift[k]
+                    << std::endl;
+        }
+      for (unsigned int k = 0; k < 2; ++k)
+        {
+          // Measured 2.2 and 1.0 (0.0127 -> 0.0032, 6.0e-4 -> 2.8e-5).
+          EXPECT_GT(std::log2(newmark_drift[k] / newmark_drift[k + 1]), 1.8);
+          EXPECT_NEAR(std::log2(explicit_drift[k] / explicit_drift[k + 1]),
+                      1,
+                      0.1);
+        }
+      EXPECT_LT(newmark_drift[2], explicit_drift[2] / 50);
     }
-  for (unsigned int k = 0; k < 2; ++k)
-    {
-      // Measured 2.2 and 1.0 (0.0127 -> 0.0032, 6.0e-4 -> 2.8e-5).
-      EXPECT_GT(std::log2(newmark_drift[k] / newmark_drift[k + 1]), 1.8);
-      EXPECT_NEAR(std::log2(explicit_drift[k] / explicit_drift[k + 1]), 1, 0.1);
-    }
-  EXPECT_LT(newmark_drift[2], explicit_drift[2] / 50);
 }

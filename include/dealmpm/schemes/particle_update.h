@@ -23,14 +23,20 @@ namespace dealmpm
    * velocity over the step, d_p = (x~_{n+1} - x~_n) / dt, is re-mapped to
    * the grid (as MUSL re-maps momentum), so that positions and F follow the
    * same nodal field. gamma = 1/2 adds no numerical damping; gamma > 1/2
-   * damps the highest frequencies at first order. beta enters the start
-   * and the difference between x~ and Newmark's x (beta dt^2 a): second
-   * order either way.
+   * damps the highest frequencies at first order. beta enters only the
+   * first step and the difference between the stored position x~ and
+   * Newmark's x, x = x~ + beta dt^2 a: second order either way, but only
+   * with beta = 0 (central differences, the default) is the stored
+   * position Newmark's own, so that positions, velocities and energies
+   * agree from the first step. With beta > 0 the first step moves the
+   * body by dt^2 (1/2 - beta) a while the velocity gains dt a: an energy
+   * mismatch of the order of the energy put in during the first steps,
+   * which the energy-growth check may take for growth when it runs then.
    */
   struct ParticleUpdate
   {
     bool   newmark = false;
-    double beta    = 0.25;
+    double beta    = 0;
     double gamma   = 0.5;
 
     /** "explicit|Newmark" */
