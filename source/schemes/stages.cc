@@ -38,7 +38,7 @@ namespace dealmpm
       {
         // MUSL's order, with the particles' displacement velocity re-mapped
         // in place of their momentum (MethodSettings requires MUSL).
-        list.push_back({"P2G", &p2g_newmark<dim>});
+        list.push_back({"P2G", &p2g<dim>});
         list.insert(list.end(),
                     std::begin(p2g_and_forces) + 1,
                     std::end(p2g_and_forces));
@@ -138,32 +138,19 @@ namespace dealmpm
     void
     p2g(StepState<dim> &s, const std::string &timer_section)
     {
-      TimerOutput::Scope t(s.timer, timer_section);
-      particle_to_grid(s.grid,
-                       s.particles,
-                       s.stencil,
-                       s.fields,
-                       true,
-                       true,
-                       s.method.formulation);
-    }
-
-    template <int dim>
-    void
-    p2g_newmark(StepState<dim> &s, const std::string &timer_section)
-    {
-      TimerOutput::Scope t(s.timer, timer_section);
-      particle_to_grid(s.grid,
-                       s.particles,
-                       s.stencil,
-                       s.fields,
-                       true,
-                       true,
-                       s.method.formulation,
-                       NewmarkStep(s.method.particle_update,
-                                   s.dt,
-                                   s.previous_dt)
-                         .predictor_offset);
+      TimerOutput::Scope    t(s.timer, timer_section);
+      const ParticleUpdate &update = s.method.particle_update;
+      particle_to_grid(
+        s.grid,
+        s.particles,
+        s.stencil,
+        s.fields,
+        true,
+        true,
+        s.method.formulation,
+        update.newmark ?
+          NewmarkStep(update, s.dt, s.previous_dt).predictor_offset :
+          0.);
     }
 
     template <int dim>

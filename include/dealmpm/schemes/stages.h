@@ -53,15 +53,11 @@ namespace dealmpm
     void
     reference_stencil(StepState<dim> &state, const std::string &timer_section);
 
-    /** P2G of mass, momentum and internal force. */
+    /** P2G of mass, momentum (Newmark's predicted momentum when the scene
+     * chose it) and internal force. */
     template <int dim>
     void
     p2g(StepState<dim> &state, const std::string &timer_section);
-
-    /** P2G of mass, Newmark's predicted momentum and internal force. */
-    template <int dim>
-    void
-    p2g_newmark(StepState<dim> &state, const std::string &timer_section);
 
     /** P2G of mass and momentum (USF's and MUSL's re-map). */
     template <int dim>
