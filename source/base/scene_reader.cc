@@ -187,6 +187,58 @@ namespace dealmpm
     return values;
   }
 
+  std::map<unsigned int, std::string>
+  SceneReader::get_id_map(const std::string &entry,
+                          const std::string &value_expected) const
+  {
+    const std::string expected =
+      "a list of 'id: value' pairs, each id once (id a boundary id, value " +
+      value_expected + ")";
+    std::map<unsigned int, std::string> map;
+    for (const auto &item : Utilities::split_string_list(get(entry), ','))
+      {
+        const auto parts = Utilities::split_string_list(item, ':');
+        long       id    = -1;
+        try
+          {
+            if (parts.size() == 2 && !parts[1].empty())
+              id = Utilities::string_to_int(parts[0]);
+          }
+        catch (...)
+          {}
+        if (id < 0 ||
+            id >= static_cast<long>(numbers::internal_face_boundary_id) ||
+            map.count(id) > 0)
+          fail(entry, expected);
+        map[id] = parts[1];
+      }
+    return map;
+  }
+
+  std::map<unsigned int, double>
+  SceneReader::get_id_nonnegatives(const std::string &entry) const
+  {
+    const std::string              expected = "a number >= 0";
+    std::map<unsigned int, double> map;
+    for (const auto &[id, text] : get_id_map(entry, expected))
+      {
+        double value = -1;
+        try
+          {
+            value = Utilities::string_to_double(text);
+          }
+        catch (...)
+          {}
+        if (!(value >= 0.) || !std::isfinite(value))
+          fail(entry,
+               "a list of 'id: value' pairs, each id once (id a boundary "
+               "id, value " +
+                 expected + ")");
+        map[id] = value;
+      }
+    return map;
+  }
+
   template <int dim>
   Point<dim>
   SceneReader::get_point(const std::string &entry) const

@@ -88,6 +88,25 @@ namespace dealmpm
     return registry;
   }
 
+  void
+  check_grid_has_ids(const SceneReader                         &reader,
+                     const std::string                         &entry,
+                     const std::map<unsigned int, std::string> &ids,
+                     const std::vector<types::boundary_id>     &grid_ids)
+  {
+    for (const auto &item : ids)
+      if (std::find(grid_ids.begin(), grid_ids.end(), item.first) ==
+          grid_ids.end())
+        {
+          std::string known;
+          for (const auto g : grid_ids)
+            known += (known.empty() ? "" : ", ") + std::to_string(g);
+          reader.fail(entry,
+                      "boundary ids the grid has (" + known + "), not " +
+                        std::to_string(item.first));
+        }
+  }
+
   template <int dim>
   std::map<types::boundary_id, std::string>
   BoundaryConditions<dim>::read(SceneReader                           &reader,
@@ -95,38 +114,16 @@ namespace dealmpm
   {
     SectionScope grid(reader, "Grid");
     const auto  &registry = boundary_condition_registry<dim>();
+    const std::map<unsigned int, std::string> items =
+      reader.get_id_map("Boundary conditions", "a kind " + registry.pattern());
+    check_grid_has_ids(reader, "Boundary conditions", items, grid_ids);
     std::map<types::boundary_id, std::string> names;
-    for (const auto &item :
-         Utilities::split_string_list(reader.get("Boundary conditions"), ','))
+    for (const auto &[id, kind] : items)
       {
-        const auto parts = Utilities::split_string_list(item, ':');
-        long       id    = -1;
-        try
-          {
-            if (parts.size() == 2)
-              id = Utilities::string_to_int(parts[0]);
-          }
-        catch (...)
-          {}
-        if (parts.size() != 2 || id < 0 ||
-            id >= static_cast<long>(numbers::internal_face_boundary_id))
+        if (!registry.has(kind))
           reader.fail("Boundary conditions",
-                      "a list of 'id: kind' pairs (kind " + registry.pattern() +
-                        ")");
-        if (std::find(grid_ids.begin(), grid_ids.end(), id) == grid_ids.end())
-          {
-            std::string known;
-            for (const auto g : grid_ids)
-              known += (known.empty() ? "" : ", ") + std::to_string(g);
-            reader.fail("Boundary conditions",
-                        "boundary ids the grid has (" + known + "), not " +
-                          std::to_string(id));
-          }
-        if (!registry.has(parts[1]))
-          reader.fail("Boundary conditions",
-                      "kind " + registry.pattern() + ", not '" + parts[1] +
-                        "'");
-        names[id] = parts[1];
+                      "kind " + registry.pattern() + ", not '" + kind + "'");
+        names[id] = kind;
       }
     return names;
   }
@@ -138,6 +135,7 @@ namespace dealmpm
     const std::map<types::boundary_id, std::string> &names)
   {
     conditions.clear();
+    condition_names = names;
     for (const auto &[id, name] : names)
       conditions[id] = boundary_condition_registry<dim>().get(name).create();
     rebuild(grid);

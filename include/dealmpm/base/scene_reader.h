@@ -58,6 +58,16 @@ namespace dealmpm
     std::string
     get_file(const std::string &entry, const std::string &expected) const;
 
+    /** A list of 'id: value' pairs (boundary ids), each id once; @p
+     * value_expected says what a value must be, for the message. */
+    std::map<unsigned int, std::string>
+    get_id_map(const std::string &entry,
+               const std::string &value_expected) const;
+
+    /** get_id_map() with values that are numbers >= 0. */
+    std::map<unsigned int, double>
+    get_id_nonnegatives(const std::string &entry) const;
+
     /** Exactly dim comma-separated numbers. */
     template <int dim>
     Point<dim>

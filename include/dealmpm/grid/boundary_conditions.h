@@ -48,6 +48,13 @@ namespace dealmpm
   BoundaryConditionRegistry<dim> &
   boundary_condition_registry();
 
+  /** Fail on @p entry unless every id of @p ids is one of @p grid_ids. */
+  void
+  check_grid_has_ids(const SceneReader                         &reader,
+                     const std::string                         &entry,
+                     const std::map<unsigned int, std::string> &ids,
+                     const std::vector<types::boundary_id>     &grid_ids);
+
   /**
    * Velocity conditions on grid nodes by boundary id, applied to the nodal
    * velocity v* of each step. A node on two slip faces that meet at a corner
@@ -76,6 +83,13 @@ namespace dealmpm
     /** Find the nodes again after the grid changed. */
     void
     rebuild(const BackgroundGrid<dim> &grid);
+
+    /** The condition's name per boundary id, as the scene gave them. */
+    const std::map<types::boundary_id, std::string> &
+    names() const
+    {
+      return condition_names;
+    }
 
     /** The ids whose condition constrains the nodes (slip, no-slip): walls
      * that particles do not cross (hold_particles_at_walls()). */
@@ -123,7 +137,8 @@ namespace dealmpm
     collect_nodes(const BackgroundGrid<dim> &grid) const;
 
     std::map<types::boundary_id, std::shared_ptr<const BoundaryCondition<dim>>>
-                      conditions;
-    std::vector<Node> nodes;
+                                              conditions;
+    std::map<types::boundary_id, std::string> condition_names;
+    std::vector<Node>                         nodes;
   };
 } // namespace dealmpm
