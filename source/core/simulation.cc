@@ -76,9 +76,17 @@ namespace dealmpm
     read_scene(reader, shape);
     build_grid(reader);
     create_particles(reader);
-    for (const auto &effect : effects)
-      for (const FieldDescription &field : effect->nodal_fields_per_body())
-        nodal.request_per_body(field);
+    for (unsigned int e = 0; e < effects.size(); ++e)
+      {
+        for (const FieldDescription &field :
+             effects[e]->nodal_fields_per_body())
+          nodal.request_per_body(field);
+        if (effects[e]->needs_body_fields())
+          {
+            check_body_fields(reader, effect_names[e]);
+            nodal.request_body_fields();
+          }
+      }
     nodal.reinit(grid.partitioner, bodies.size());
     if (total_lagrangian())
       check_total_lagrangian(reader);
@@ -146,6 +154,22 @@ namespace dealmpm
     boundary_conditions.setup(grid,
                               BoundaryConditions<dim>::read(
                                 reader, grid.triangulation.get_boundary_ids()));
+    for (unsigned int e = 0; e < effects.size(); ++e)
+      {
+        SectionScope section(reader, section_title(effect_names[e]));
+        effects[e]->setup({grid,
+                           boundary_conditions,
+                           static_cast<unsigned int>(bodies.size())},
+                          reader);
+        if (effects[e]->wants_pic() && run_settings.method.flip_fraction > 0 &&
+            !run_settings.method.apic)
+          pcout << "warning: " << reader.file_name() << ": '" << effect_names[e]
+                << "' is reliable only when the particles take the grid's "
+                   "velocity: set 'MPM/Velocity update = PIC' (under FLIP "
+                   "the particles' own velocities ring, and friction that "
+                   "should hold lets bodies creep; see README, Effects)"
+                << std::endl;
+      }
   }
 
   template <int dim>
@@ -352,6 +376,8 @@ namespace dealmpm
                      ": after the grid changed, 'MPM/Shape function' = '" +
                      kernel.name() + "' needs " + problem);
     boundary_conditions.rebuild(grid);
+    for (const auto &effect : effects)
+      effect->grid_changed(grid);
     nodal.reinit(grid.partitioner, bodies.size());
     // Smaller cells, smaller stable step.
     particle_check  = check_particles(grid, materials, *particles);
@@ -377,7 +403,8 @@ namespace dealmpm
         if (!(g.norm() > 0))
           reader.fail("Initial stress",
                       "'none' in a scene without gravity (no listed effect "
-                      "has a uniform force field)");
+                      "has a uniform force field at t = 0; a gravity ramp "
+                      "starts from none)");
         // Total Lagrangian's stencil is taken where F = I; a body filled
         // at rest under stress has no such configuration on record.
         if (total_lagrangian())
@@ -439,6 +466,23 @@ namespace dealmpm
                       "(inside its yield surface; 1 for a fluid): " +
                         failure + ", with K0 = " + short_number(K0));
       }
+  }
+
+  template <int dim>
+  void
+  Simulation<dim>::check_body_fields(SceneReader       &reader,
+                                     const std::string &effect) const
+  {
+    SectionScope      mpm(reader, "MPM");
+    const std::string why =
+      " with '" + effect + "', which gives each body its own nodal fields";
+    if (total_lagrangian())
+      reader.fail("Formulation",
+                  "'updated Lagrangian'" + why +
+                    " (total Lagrangian keeps bodies bonded where they "
+                    "share grid nodes)");
+    if (run_settings.method.particle_update.newmark)
+      reader.fail("Particle update", "'explicit'" + why);
   }
 
   template <int dim>

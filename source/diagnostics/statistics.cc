@@ -75,6 +75,17 @@ namespace dealmpm
     s.gravitational_energy = sums[7];
     s.has_dissipated_work  = dissipates;
     s.dissipated_work      = sums[8];
+    for (const auto &effect : effects)
+      for (const auto &[name, value] : effect->statistics_columns())
+        {
+          s.effect_columns.push_back(name);
+          s.effect_values.push_back(value);
+        }
+    if (!s.effect_values.empty())
+      Utilities::MPI::sum(
+        ArrayView<const double>(s.effect_values.data(), s.effect_values.size()),
+        comm,
+        ArrayView<double>(s.effect_values.data(), s.effect_values.size()));
     if (exact != nullptr)
       {
         s.has_error = true;

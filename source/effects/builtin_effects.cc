@@ -1,45 +1,105 @@
+#include <dealmpm/effects/boundary_friction.h>
 #include <dealmpm/effects/effect.h>
+#include <dealmpm/effects/frictional_contact.h>
 #include <dealmpm/effects/generalized_vortex.h>
 #include <dealmpm/effects/manufactured_solution.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace dealmpm
 {
   namespace
   {
-    /** Uniform body force g per unit mass: f_i += m_i g, which equals
-     * sum_p N_ip m_p g. */
+    /**
+     * Uniform body force g per unit mass: f_i += m_i g, which equals
+     * sum_p N_ip m_p g. With a ramp time T, g grows linearly from 0 to its
+     * full value over [0, T] (the step uses its value at mid-step); the
+     * potential -m g(t) . x then changes with t too, and that change,
+     * -(g(t + dt) - g(t)) . sum_p m_p x_p (at mid-step), is counted as
+     * work so that the energy balance closes (a particle sweep in the
+     * ramp's steps only).
+     */
     template <int dim>
     class Gravity : public Effect<dim>
     {
     public:
-      explicit Gravity(const Tensor<1, dim> &g)
+      Gravity(const Tensor<1, dim> &g, const double ramp_time)
         : g(g)
+        , ramp_time(ramp_time)
+        , factor_now(factor(0.))
       {}
 
       void
-      add_nodal_forces(const EffectContext<dim> &,
-                       NodalFields<dim> &fields) override
+      add_nodal_forces(const EffectContext<dim> &state,
+                       NodalFields<dim>         &fields) override
       {
+        const double t = state.time, dt = state.dt;
+        const double scale = factor(t + 0.5 * dt);
+        if (factor(t + dt) != factor(t))
+          {
+            // sum_p m_p x_p at mid-step, x_p + dt / 2 v_p.
+            const CoreFields &f = state.particles.fields;
+            Tensor<1, dim>    moment;
+            for (const auto &p : state.particles.handler)
+              {
+                const auto props = p.get_properties();
+                moment += props[f.mass] *
+                          (Tensor<1, dim>(p.get_location()) +
+                           0.5 * dt * read_vector<dim>(&props[f.velocity]));
+              }
+            work -= (factor(t + dt) - factor(t)) * (g * moment);
+          }
+        factor_now = factor(t + dt);
+
         const unsigned int n    = fields.mass.locally_owned_size();
         const double      *mass = fields.mass.begin();
         for (unsigned int d = 0; d < dim; ++d)
           {
-            double *force = fields.force[d].begin();
+            const double gd    = scale * g[d];
+            double      *force = fields.force[d].begin();
             for (unsigned int i = 0; i < n; ++i)
-              force[i] += mass[i] * g[d];
+              force[i] += mass[i] * gd;
           }
       }
 
       double
       potential_energy(const double mass, const Point<dim> &x) const override
       {
-        return -mass * (g * x);
+        return -mass * factor_now * (g * x);
+      }
+
+      double
+      work_done() const override
+      {
+        return work;
+      }
+
+      std::vector<double>
+      saved_state() const override
+      {
+        return {factor_now, work};
+      }
+
+      void
+      restore_state(const std::vector<double> &state) override
+      {
+        factor_now = state.at(0);
+        work       = state.at(1);
       }
 
     private:
+      /** g(t) / g. */
+      double
+      factor(const double t) const
+      {
+        return ramp_time > 0. ? std::min(1., t / ramp_time) : 1.;
+      }
+
       Tensor<1, dim> g;
+      double         ramp_time;
+      double         factor_now; ///< g(t) / g at the end of the last step
+      double         work = 0;   ///< of the ramp's change in time
     };
 
     /**
@@ -125,11 +185,41 @@ namespace dealmpm
           prm.declare_entry("Acceleration",
                             dim == 2 ? "0, -9.81" : "0, 0, -9.81",
                             Patterns::List(Patterns::Double(), dim, dim),
-                            "Gravitational acceleration vector (m/s^2).");
+                            "Gravitational acceleration vector (m/s^2). "
+                            "Tilt it to put a scene on an incline.");
+          prm.declare_entry("Ramp time",
+                            "0",
+                            Patterns::Double(0),
+                            "0: full gravity from t = 0. T > 0: gravity "
+                            "grows linearly from 0 to full over [0, T] (s), "
+                            "so that a body settles without a shock.");
         },
         [](SceneReader &reader) -> std::unique_ptr<Effect<dim>> {
           return std::make_unique<Gravity<dim>>(
-            reader.get_vector<dim>("Acceleration"));
+            reader.get_vector<dim>("Acceleration"),
+            reader.get_nonnegative("Ramp time"));
+        });
+      r.add(
+        "boundary friction",
+        "Coulomb friction on slip walls of the grid (section Boundary "
+        "friction: Coefficients).",
+        [](ParameterHandler &prm) {
+          prm.declare_entry(
+            "Coefficients",
+            "",
+            Patterns::Anything(),
+            "Friction coefficient per boundary id, e.g. '2: 0.3, 3: 0.5'; "
+            "each id must have 'slip' in 'Grid/Boundary conditions'.");
+        },
+        [](SceneReader &reader) -> std::unique_ptr<Effect<dim>> {
+          const std::map<unsigned int, double> read =
+            reader.get_id_nonnegatives("Coefficients");
+          const std::map<types::boundary_id, double> coefficients(read.begin(),
+                                                                  read.end());
+          if (coefficients.empty())
+            reader.fail("Coefficients",
+                        "at least one 'id: friction coefficient' pair");
+          return std::make_unique<BoundaryFriction<dim>>(coefficients);
         });
       r.add(
         "local damping",
@@ -146,6 +236,98 @@ namespace dealmpm
           if (!(alpha >= 0. && alpha < 1.))
             reader.fail("Coefficient", "a number in [0, 1)");
           return std::make_unique<LocalDamping<dim>>(alpha);
+        });
+    }
+
+    /** "1 2: 0.4, 2 3: 0.1": body pairs (1-based in the scene, 0-based
+     * and ordered in the map) to friction coefficients. */
+    std::map<std::pair<unsigned int, unsigned int>, double>
+    read_pair_friction(SceneReader &reader, const std::string &entry)
+    {
+      const std::string expected =
+        "a list of 'b c: mu' items (two different body numbers, each pair "
+        "once, and a number mu >= 0)";
+      std::map<std::pair<unsigned int, unsigned int>, double> pairs;
+      for (const auto &item :
+           Utilities::split_string_list(reader.get(entry), ','))
+        {
+          const auto parts = Utilities::split_string_list(item, ':');
+          if (parts.size() != 2)
+            reader.fail(entry, expected);
+          std::vector<long> bodies;
+          double            mu = -1;
+          try
+            {
+              for (const auto &word :
+                   Utilities::split_string_list(parts[0], ' '))
+                if (!word.empty())
+                  bodies.push_back(Utilities::string_to_int(word));
+              mu = Utilities::string_to_double(parts[1]);
+            }
+          catch (...)
+            {
+              reader.fail(entry, expected);
+            }
+          if (bodies.size() != 2 || bodies[0] < 1 || bodies[1] < 1 ||
+              bodies[0] == bodies[1] || !(mu >= 0.) || !std::isfinite(mu))
+            reader.fail(entry, expected);
+          const std::pair<unsigned int, unsigned int> key(
+            std::min(bodies[0], bodies[1]) - 1,
+            std::max(bodies[0], bodies[1]) - 1);
+          if (pairs.count(key) > 0)
+            reader.fail(entry, expected);
+          pairs[key] = mu;
+        }
+      return pairs;
+    }
+
+    /** Contact between bodies. */
+    template <int dim>
+    void
+    add_contact(Registry<Effect<dim>> &r)
+    {
+      r.add(
+        "frictional contact",
+        "contact between bodies with Coulomb friction: each body moves in "
+        "its own nodal velocity field, corrected where bodies meet and "
+        "approach (section Frictional contact: Friction coefficient, Pair "
+        "friction coefficients, Normals).",
+        [](ParameterHandler &prm) {
+          prm.declare_entry("Friction coefficient",
+                            "0",
+                            Patterns::Double(0),
+                            "Coulomb coefficient mu >= 0 between any two "
+                            "bodies (0: frictionless).");
+          prm.declare_entry(
+            "Pair friction coefficients",
+            "",
+            Patterns::Anything(),
+            "Coefficients for particular pairs of bodies, e.g. '1 2: 0.4, "
+            "2 3: 0.1'; the other pairs take 'Friction coefficient'.");
+          prm.declare_entry(
+            "Normals",
+            "steepest mass gradient",
+            Patterns::Selection(
+              "steepest mass gradient|difference of bodies|mass gradient"),
+            "The contact normal of body b at node i, from g_b = sum over "
+            "b's particles of m_p grad N_i(x_p), which points out of b: "
+            "'steepest mass gradient' along g_b or -g_c, whichever of b "
+            "and the other body c is steeper (Nairn's maximum volume "
+            "gradient: the flat face of a base, not the corner of a block "
+            "sliding on it), 'difference of bodies' along g_b - g_others, "
+            "'mass gradient' along g_b alone (Bardenhagen's). The first two "
+            "give two bodies opposite normals, so that momentum is kept to "
+            "round-off.");
+        },
+        [](SceneReader &reader) -> std::unique_ptr<Effect<dim>> {
+          return std::make_unique<FrictionalContact<dim>>(
+            reader.get_nonnegative("Friction coefficient"),
+            read_pair_friction(reader, "Pair friction coefficients"),
+            reader.get("Normals") == "mass gradient" ?
+              FrictionalContact<dim>::Normals::own_mass_gradient :
+            reader.get("Normals") == "difference of bodies" ?
+              FrictionalContact<dim>::Normals::difference_of_bodies :
+              FrictionalContact<dim>::Normals::steepest_mass_gradient);
         });
     }
 
@@ -214,6 +396,7 @@ namespace dealmpm
     static Registry<Effect<dim>> registry = [] {
       Registry<Effect<dim>> r;
       add_forces_and_damping(r);
+      add_contact(r);
       add_known_motions(r);
       return r;
     }();

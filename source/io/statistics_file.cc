@@ -33,6 +33,8 @@ namespace dealmpm
       "lost_particles,wall_time";
     if (errors)
       header += ",error_L2,error_max";
+    for (const std::string &name : first.effect_columns)
+      header += "," + name;
     append(header + '\n');
   }
 
@@ -90,6 +92,8 @@ namespace dealmpm
         << wall_time;
     if (errors)
       out << ',' << s.error_L2 << ',' << s.error_max;
+    for (const double value : s.effect_values)
+      out << ',' << value;
     out << '\n';
     append(out.str());
   }

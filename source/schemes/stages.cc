@@ -134,23 +134,47 @@ namespace dealmpm
       stop_on_failed_stencil(s);
     }
 
+    /** P2G into the core fields, or into each body's (contact) and
+     * their sums. */
+    template <int dim>
+    void
+    map_to_grid(StepState<dim> &s,
+                const bool      mass_and_momentum,
+                const bool      internal_force,
+                const double    predictor_offset = 0)
+    {
+      if (s.field_set.has_body_fields())
+        particle_to_body_grids(s.grid,
+                               s.particles,
+                               s.stencil,
+                               s.field_set,
+                               mass_and_momentum,
+                               internal_force,
+                               s.method.formulation,
+                               predictor_offset);
+      else
+        particle_to_grid(s.grid,
+                         s.particles,
+                         s.stencil,
+                         s.fields,
+                         mass_and_momentum,
+                         internal_force,
+                         s.method.formulation,
+                         predictor_offset);
+    }
+
     template <int dim>
     void
     p2g(StepState<dim> &s, const std::string &timer_section)
     {
       TimerOutput::Scope    t(s.timer, timer_section);
       const ParticleUpdate &update = s.method.particle_update;
-      particle_to_grid(
-        s.grid,
-        s.particles,
-        s.stencil,
-        s.fields,
-        true,
-        true,
-        s.method.formulation,
-        update.newmark ?
-          NewmarkStep(update, s.dt, s.previous_dt).predictor_offset :
-          0.);
+      map_to_grid(s,
+                  true,
+                  true,
+                  update.newmark ?
+                    NewmarkStep(update, s.dt, s.previous_dt).predictor_offset :
+                    0.);
     }
 
     template <int dim>
@@ -158,7 +182,7 @@ namespace dealmpm
     p2g_mass_momentum(StepState<dim> &s, const std::string &timer_section)
     {
       TimerOutput::Scope t(s.timer, timer_section);
-      particle_to_grid(s.grid, s.particles, s.stencil, s.fields, true, false);
+      map_to_grid(s, true, false);
     }
 
     template <int dim>
@@ -166,13 +190,7 @@ namespace dealmpm
     p2g_force(StepState<dim> &s, const std::string &timer_section)
     {
       TimerOutput::Scope t(s.timer, timer_section);
-      particle_to_grid(s.grid,
-                       s.particles,
-                       s.stencil,
-                       s.fields,
-                       false,
-                       true,
-                       s.method.formulation);
+      map_to_grid(s, false, true);
     }
 
     /** Call @p hook on every effect, each in its own timer section. */
@@ -226,10 +244,16 @@ namespace dealmpm
     void
     velocity_from_momentum(StepState<dim> &s, const std::string &timer_section)
     {
-      TimerOutput::Scope t(s.timer, timer_section);
-      dealmpm::velocity_from_momentum(s.fields,
-                                      s.mass_threshold,
-                                      s.boundary_conditions);
+      {
+        TimerOutput::Scope t(s.timer, timer_section);
+        dealmpm::velocity_from_momentum(s.fields,
+                                        s.mass_threshold,
+                                        s.boundary_conditions);
+      }
+      const EffectContext<dim> context = s.effect_context();
+      for_each_effect(s, [&](Effect<dim> &effect) {
+        effect.after_remap(context, s.fields);
+      });
     }
 
     template <int dim>
@@ -273,26 +297,42 @@ namespace dealmpm
         with_increment(UpdatedLagrangian(), NoGradientAdjustment());
     }
 
+    /** Run @p sweep(velocities) with the nodal velocities the particles
+     * read: the core fields, or each particle its body's (contact). */
+    template <int dim, typename Sweep>
+    void
+    with_nodal_velocity(StepState<dim> &s, const Sweep &sweep)
+    {
+      if (s.field_set.has_body_fields())
+        sweep(BodyVelocities<dim>(s.field_set, s.particles.fields.body));
+      else
+        sweep(s.fields);
+    }
+
     template <int dim>
     void
     g2p_and_stress_update(StepState<dim> &s, const std::string &timer_section)
     {
       TimerOutput::Scope t(s.timer, timer_section);
-      with_deformation_choices(
-        s,
-        [&](const auto formulation, const auto &adjust, const auto &increment) {
-          s.left_cell = grid_to_particle<G2P::motion_and_deformation,
-                                         decltype(formulation)::value>(
-            s.grid,
-            s.stencil,
-            s.fields,
-            s.dt,
-            s.method.flip_fraction,
-            s.particles,
-            s.stress_update,
-            adjust,
-            increment);
-        });
+      with_nodal_velocity(s, [&](const auto &velocities) {
+        with_deformation_choices(
+          s,
+          [&](const auto  formulation,
+              const auto &adjust,
+              const auto &increment) {
+            s.left_cell = grid_to_particle<G2P::motion_and_deformation,
+                                           decltype(formulation)::value>(
+              s.grid,
+              s.stencil,
+              velocities,
+              s.dt,
+              s.method.flip_fraction,
+              s.particles,
+              s.stress_update,
+              adjust,
+              increment);
+          });
+      });
     }
 
     template <int dim>
@@ -300,20 +340,22 @@ namespace dealmpm
     g2p(StepState<dim> &s, const std::string &timer_section)
     {
       TimerOutput::Scope t(s.timer, timer_section);
-      const auto         motion = [&](const auto formulation) {
-        s.left_cell =
-          grid_to_particle<G2P::motion, decltype(formulation)::value>(
-            s.grid,
-            s.stencil,
-            s.fields,
-            s.dt,
-            s.method.flip_fraction,
-            s.particles);
-      };
-      if (s.method.formulation == Formulation::total_lagrangian)
-        motion(TotalLagrangian());
-      else
-        motion(UpdatedLagrangian());
+      with_nodal_velocity(s, [&](const auto &velocities) {
+        const auto motion = [&](const auto formulation) {
+          s.left_cell =
+            grid_to_particle<G2P::motion, decltype(formulation)::value>(
+              s.grid,
+              s.stencil,
+              velocities,
+              s.dt,
+              s.method.flip_fraction,
+              s.particles);
+        };
+        if (s.method.formulation == Formulation::total_lagrangian)
+          motion(TotalLagrangian());
+        else
+          motion(UpdatedLagrangian());
+      });
     }
 
     template <int dim>
@@ -321,20 +363,24 @@ namespace dealmpm
     stress_update(StepState<dim> &s, const std::string &timer_section)
     {
       TimerOutput::Scope t(s.timer, timer_section);
-      with_deformation_choices(
-        s,
-        [&](const auto formulation, const auto &adjust, const auto &increment) {
-          grid_to_particle<G2P::deformation, decltype(formulation)::value>(
-            s.grid,
-            s.stencil,
-            s.fields,
-            s.dt,
-            s.method.flip_fraction,
-            s.particles,
-            s.stress_update,
-            adjust,
-            increment);
-        });
+      with_nodal_velocity(s, [&](const auto &velocities) {
+        with_deformation_choices(
+          s,
+          [&](const auto  formulation,
+              const auto &adjust,
+              const auto &increment) {
+            grid_to_particle<G2P::deformation, decltype(formulation)::value>(
+              s.grid,
+              s.stencil,
+              velocities,
+              s.dt,
+              s.method.flip_fraction,
+              s.particles,
+              s.stress_update,
+              adjust,
+              increment);
+          });
+      });
     }
 
     template <int dim>

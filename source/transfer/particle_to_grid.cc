@@ -1,6 +1,9 @@
 #include <dealmpm/transfer/particle_to_grid.h>
 #include <dealmpm/transfer/stencil_order.h>
 
+#include <type_traits>
+#include <vector>
+
 namespace dealmpm
 {
   namespace
@@ -23,6 +26,71 @@ namespace dealmpm
         return minus_V_sigma;
     }
 
+    /** The raw arrays P2G adds into. */
+    template <int dim>
+    struct NodalPointers
+    {
+      double *mass;
+      double *momentum[dim];
+      double *force[dim];
+      double *mass_gradient[dim] = {}; ///< body targets only
+
+      explicit NodalPointers(NodalFields<dim> &f)
+        : mass(f.mass.begin())
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            momentum[d] = f.momentum[d].begin();
+            force[d]    = f.force[d].begin();
+          }
+      }
+    };
+
+    /** Where P2G adds: one set of nodal fields. */
+    template <int dim>
+    struct SharedTarget
+    {
+      static constexpr bool per_body = false;
+      NodalPointers<dim>    fields;
+
+      explicit SharedTarget(NodalFields<dim> &f)
+        : fields(f)
+      {}
+
+      DEAL_II_ALWAYS_INLINE const NodalPointers<dim>                             &
+      of(const ArrayView<const double> &) const
+      {
+        return fields;
+      }
+    };
+
+    /** Where P2G adds: the fields of the particle's body, whose mass
+     * gradient sum_p m_p grad N it adds too (contact's normals). */
+    template <int dim>
+    struct BodyTargets
+    {
+      static constexpr bool           per_body = true;
+      std::vector<NodalPointers<dim>> bodies;
+      unsigned int                    body; ///< the property's offset
+
+      BodyTargets(NodalFieldSet<dim> &set, const unsigned int body)
+        : body(body)
+      {
+        for (unsigned int b = 0; b < set.body.size(); ++b)
+          {
+            bodies.emplace_back(set.body[b]);
+            for (unsigned int d = 0; d < dim; ++d)
+              bodies.back().mass_gradient[d] = set.mass_gradient[b][d].begin();
+          }
+      }
+
+      DEAL_II_ALWAYS_INLINE const NodalPointers<dim>                             &
+      of(const ArrayView<const double> &props) const
+      {
+        return bodies[static_cast<unsigned int>(props[body])];
+      }
+    };
+
     /** The kernel, compiled once per choice of quantities so that the usual
      * all-in-one P2G has no branch in its loop. */
     template <int  dim,
@@ -30,21 +98,15 @@ namespace dealmpm
               bool internal_force,
               bool affine,
               bool total_lagrangian = false,
-              bool predictor        = false>
+              bool predictor        = false,
+              typename Targets>
     void
     transfer(const BackgroundGrid<dim> &grid,
              const ParticleSet<dim>    &particles,
              const Stencil<dim>        &stencil,
-             NodalFields<dim>          &fields,
+             const Targets             &targets,
              const double               predictor_offset = 0)
     {
-      double *mass = fields.mass.begin();
-      double *momentum[dim], *force[dim];
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          momentum[d] = fields.momentum[d].begin();
-          force[d]    = fields.force[d].begin();
-        }
       const CoreFields &f = particles.fields;
 
       for_each_particle_in_stencil_order(
@@ -55,6 +117,7 @@ namespace dealmpm
             const GridCell<dim> &) DEAL_II_ALWAYS_INLINE {
           const ArrayView<const double> props = p.get_properties();
           const double                  m     = props[f.mass];
+          const NodalPointers<dim>     &to    = targets.of(props);
           Tensor<1, dim> v = read_vector<dim>(&props[f.velocity]);
           // Newmark: the grid carries the predicted velocity.
           if constexpr (predictor)
@@ -92,20 +155,116 @@ namespace dealmpm
               if (mass_and_momentum)
                 {
                   const double mN = m * stencil.N[e];
-                  mass[n] += mN;
+                  to.mass[n] += mN;
                   const Tensor<1, dim> v_n =
                     affine ? v + C * (grid.node_positions[n] - x_p) : v;
                   for (unsigned int d = 0; d < dim; ++d)
-                    momentum[d][n] += mN * v_n[d];
+                    to.momentum[d][n] += mN * v_n[d];
+                  if constexpr (Targets::per_body)
+                    for (unsigned int d = 0; d < dim; ++d)
+                      to.mass_gradient[d][n] += m * stencil.grad_N[e][d];
                 }
               if (internal_force)
                 {
                   const Tensor<1, dim> fi = Vsigma * stencil.grad_N[e];
                   for (unsigned int d = 0; d < dim; ++d)
-                    force[d][n] += fi[d];
+                    to.force[d][n] += fi[d];
                 }
             }
         });
+    }
+  } // namespace
+
+  namespace
+  {
+    /** Zero what P2G will add into. */
+    template <int dim>
+    void
+    zero(NodalFields<dim> &fields,
+         const bool        mass_and_momentum,
+         const bool        internal_force)
+    {
+      if (mass_and_momentum)
+        {
+          fields.mass = 0.;
+          for (unsigned int d = 0; d < dim; ++d)
+            fields.momentum[d] = 0.;
+        }
+      if (internal_force)
+        for (unsigned int d = 0; d < dim; ++d)
+          fields.force[d] = 0.;
+    }
+
+    /** Sum what P2G added over the ranks. */
+    template <int dim>
+    void
+    compress(NodalFields<dim> &fields,
+             const bool        mass_and_momentum,
+             const bool        internal_force)
+    {
+      if (mass_and_momentum)
+        {
+          fields.mass.compress(VectorOperation::add);
+          for (unsigned int d = 0; d < dim; ++d)
+            fields.momentum[d].compress(VectorOperation::add);
+        }
+      if (internal_force)
+        for (unsigned int d = 0; d < dim; ++d)
+          fields.force[d].compress(VectorOperation::add);
+    }
+
+    /** The kernel for the quantities asked for, into @p targets. */
+    template <int dim, typename Targets>
+    void
+    dispatch(const BackgroundGrid<dim> &grid,
+             const ParticleSet<dim>    &particles,
+             const Stencil<dim>        &stencil,
+             const Targets             &targets,
+             const bool                 mass_and_momentum,
+             const bool                 internal_force,
+             const Formulation          formulation,
+             const double               predictor_offset)
+    {
+      const bool affine =
+        particles.fields.affine_velocity != numbers::invalid_unsigned_int;
+      const bool reference = formulation == Formulation::total_lagrangian;
+      const auto run       = [&](auto... choices) {
+        transfer<dim, decltype(choices)::value...>(
+          grid, particles, stencil, targets, predictor_offset);
+      };
+      using Yes = std::true_type;
+      using No  = std::false_type;
+      if (predictor_offset != 0.)
+        {
+          // Newmark's first P2G (FLIP only: no affine part).
+          AssertThrow(mass_and_momentum && internal_force && !affine &&
+                        particles.fields.acceleration !=
+                          numbers::invalid_unsigned_int,
+                      ExcInternalError());
+          if (reference)
+            run(Yes(), Yes(), No(), Yes(), Yes());
+          else
+            run(Yes(), Yes(), No(), No(), Yes());
+        }
+      else if (internal_force && reference)
+        {
+          if (mass_and_momentum && affine)
+            run(Yes(), Yes(), Yes(), Yes());
+          else if (mass_and_momentum)
+            run(Yes(), Yes(), No(), Yes());
+          else
+            run(No(), Yes(), No(), Yes());
+        }
+      else if (mass_and_momentum && internal_force && affine)
+        run(Yes(), Yes(), Yes());
+      else if (mass_and_momentum && internal_force)
+        run(Yes(), Yes(), No());
+      else if (mass_and_momentum && affine)
+        run(Yes(), No(), Yes());
+      else if (mass_and_momentum)
+        run(Yes(), No(), No());
+      else if (internal_force)
+        run(No(), Yes(), No());
     }
   } // namespace
 
@@ -120,82 +279,82 @@ namespace dealmpm
                    const Formulation          formulation,
                    const double               predictor_offset)
   {
-    if (mass_and_momentum)
-      {
-        fields.mass = 0.;
-        for (unsigned int d = 0; d < dim; ++d)
-          fields.momentum[d] = 0.;
-      }
-    if (internal_force)
-      for (unsigned int d = 0; d < dim; ++d)
-        fields.force[d] = 0.;
-
-    const bool affine =
-      particles.fields.affine_velocity != numbers::invalid_unsigned_int;
-    const bool reference = formulation == Formulation::total_lagrangian;
-    if (predictor_offset != 0.)
-      {
-        // Newmark's first P2G (FLIP only: no affine part).
-        AssertThrow(mass_and_momentum && internal_force && !affine &&
-                      particles.fields.acceleration !=
-                        numbers::invalid_unsigned_int,
-                    ExcInternalError());
-        if (reference)
-          transfer<dim, true, true, false, true, true>(
-            grid, particles, stencil, fields, predictor_offset);
-        else
-          transfer<dim, true, true, false, false, true>(
-            grid, particles, stencil, fields, predictor_offset);
-      }
-    else if (internal_force && reference)
-      {
-        if (mass_and_momentum && affine)
-          transfer<dim, true, true, true, true>(grid,
-                                                particles,
-                                                stencil,
-                                                fields);
-        else if (mass_and_momentum)
-          transfer<dim, true, true, false, true>(grid,
-                                                 particles,
-                                                 stencil,
-                                                 fields);
-        else
-          transfer<dim, false, true, false, true>(grid,
-                                                  particles,
-                                                  stencil,
-                                                  fields);
-      }
-    else if (mass_and_momentum && internal_force && affine)
-      transfer<dim, true, true, true>(grid, particles, stencil, fields);
-    else if (mass_and_momentum && internal_force)
-      transfer<dim, true, true, false>(grid, particles, stencil, fields);
-    else if (mass_and_momentum && affine)
-      transfer<dim, true, false, true>(grid, particles, stencil, fields);
-    else if (mass_and_momentum)
-      transfer<dim, true, false, false>(grid, particles, stencil, fields);
-    else if (internal_force)
-      transfer<dim, false, true, false>(grid, particles, stencil, fields);
-
-    if (mass_and_momentum)
-      {
-        fields.mass.compress(VectorOperation::add);
-        for (unsigned int d = 0; d < dim; ++d)
-          fields.momentum[d].compress(VectorOperation::add);
-      }
-    if (internal_force)
-      for (unsigned int d = 0; d < dim; ++d)
-        fields.force[d].compress(VectorOperation::add);
+    zero(fields, mass_and_momentum, internal_force);
+    dispatch(grid,
+             particles,
+             stencil,
+             SharedTarget<dim>(fields),
+             mass_and_momentum,
+             internal_force,
+             formulation,
+             predictor_offset);
+    compress(fields, mass_and_momentum, internal_force);
   }
 
-#define DEALMPM_INSTANTIATE(dim)                              \
-  template void particle_to_grid(const BackgroundGrid<dim> &, \
-                                 const ParticleSet<dim> &,    \
-                                 const Stencil<dim> &,        \
-                                 NodalFields<dim> &,          \
-                                 bool,                        \
-                                 bool,                        \
-                                 Formulation,                 \
-                                 double);
+  template <int dim>
+  void
+  particle_to_body_grids(const BackgroundGrid<dim> &grid,
+                         const ParticleSet<dim>    &particles,
+                         const Stencil<dim>        &stencil,
+                         NodalFieldSet<dim>        &set,
+                         const bool                 mass_and_momentum,
+                         const bool                 internal_force,
+                         const Formulation          formulation,
+                         const double               predictor_offset)
+  {
+    for (unsigned int b = 0; b < set.body.size(); ++b)
+      {
+        zero(set.body[b], mass_and_momentum, internal_force);
+        if (mass_and_momentum)
+          for (NodalVector &v : set.mass_gradient[b])
+            v = 0.;
+      }
+    dispatch(grid,
+             particles,
+             stencil,
+             BodyTargets<dim>(set, particles.fields.body),
+             mass_and_momentum,
+             internal_force,
+             formulation,
+             predictor_offset);
+    zero(set.core, mass_and_momentum, internal_force);
+    for (unsigned int b = 0; b < set.body.size(); ++b)
+      {
+        NodalFields<dim> &body = set.body[b];
+        compress(body, mass_and_momentum, internal_force);
+        if (mass_and_momentum)
+          {
+            for (NodalVector &v : set.mass_gradient[b])
+              v.compress(VectorOperation::add);
+            set.core.mass += body.mass;
+          }
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            if (mass_and_momentum)
+              set.core.momentum[d] += body.momentum[d];
+            if (internal_force)
+              set.core.force[d] += body.force[d];
+          }
+      }
+  }
+
+#define DEALMPM_INSTANTIATE(dim)                                    \
+  template void particle_to_grid(const BackgroundGrid<dim> &,       \
+                                 const ParticleSet<dim> &,          \
+                                 const Stencil<dim> &,              \
+                                 NodalFields<dim> &,                \
+                                 bool,                              \
+                                 bool,                              \
+                                 Formulation,                       \
+                                 double);                           \
+  template void particle_to_body_grids(const BackgroundGrid<dim> &, \
+                                       const ParticleSet<dim> &,    \
+                                       const Stencil<dim> &,        \
+                                       NodalFieldSet<dim> &,        \
+                                       bool,                        \
+                                       bool,                        \
+                                       Formulation,                 \
+                                       double);
   DEALMPM_INSTANTIATE(2)
   DEALMPM_INSTANTIATE(3)
 #undef DEALMPM_INSTANTIATE

@@ -206,6 +206,10 @@ namespace dealmpm
      * uniform force field of the effects (gravity). */
     void
     start_geostatic_bodies(SceneReader &reader);
+    /** Refuse what an effect with body fields (@p effect, contact)
+     * cannot run with: total Lagrangian, Newmark. */
+    void
+    check_body_fields(SceneReader &reader, const std::string &effect) const;
     /** Refuse what total Lagrangian cannot do (fluids, bodies that start
      * apart) and make its reference stencil. */
     void

@@ -8,6 +8,7 @@
 #include <array>
 #include <limits>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace dealmpm
@@ -30,6 +31,10 @@ namespace dealmpm
     bool   has_error = false;
     double error_L2  = 0;
     double error_max = 0;
+    /** The listed effects' own columns (Effect::statistics_columns()),
+     * summed over the ranks: names and values. */
+    std::vector<std::string> effect_columns;
+    std::vector<double>      effect_values;
 
     double
     total_energy() const
@@ -46,6 +51,8 @@ namespace dealmpm
       archive &kinetic_energy &strain_energy &gravitational_energy;
       archive &has_dissipated_work           &dissipated_work;
       archive &has_error &error_L2           &error_max;
+      // Needs <boost/serialization/{vector,string}.hpp>.
+      archive &effect_columns &effect_values;
     }
   };
 

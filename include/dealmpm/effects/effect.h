@@ -4,12 +4,14 @@
 
 #include <dealmpm/base/registry.h>
 #include <dealmpm/grid/background_grid.h>
+#include <dealmpm/grid/boundary_conditions.h>
 #include <dealmpm/grid/nodal_field_set.h>
 #include <dealmpm/particles/particle_set.h>
 #include <dealmpm/transfer/stencil.h>
 #include <dealmpm/transfer/stencil_order.h>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace dealmpm
@@ -25,6 +27,17 @@ namespace dealmpm
     double                     dt;
     /** Every nodal field, the per-body ones included. */
     NodalFieldSet<dim> &field_set;
+    /** Nodes lighter than this are inactive. */
+    double mass_threshold;
+  };
+
+  /** What an effect may check and find at set-up. */
+  template <int dim>
+  struct EffectSetup
+  {
+    const BackgroundGrid<dim>     &grid;
+    const BoundaryConditions<dim> &conditions;
+    unsigned int                   n_bodies;
   };
 
   /**
@@ -61,6 +74,27 @@ namespace dealmpm
       return {};
     }
 
+    /** Once the grid and its boundary conditions exist, before any
+     * particle: check what the effect needs of the scene (@p reader is in
+     * the effect's section, for one-line failures) and find its nodes. */
+    virtual void
+    setup(const EffectSetup<dim> & /*setup*/, SceneReader & /*reader*/)
+    {}
+
+    /** Whether each body needs nodal fields of its own (contact): P2G then
+     * maps each body to its fields (NodalFieldSet::body), the core fields
+     * being their sums, and G2P reads each particle's body's fields. */
+    virtual bool
+    needs_body_fields() const
+    {
+      return false;
+    }
+
+    /** The grid changed (refined, repartitioned): find the nodes again. */
+    virtual void
+    grid_changed(const BackgroundGrid<dim> & /*grid*/)
+    {}
+
     /** Set initial particle state (a velocity field, a pre-deformed state),
      * once, after the bodies are made; particles may be moved (they are
      * sorted into their cells afterwards). */
@@ -81,11 +115,27 @@ namespace dealmpm
     adjust_nodal_forces(NodalFields<dim> & /*fields*/)
     {}
 
+    /** Whether the effect is reliable only when the particles take the
+     * grid's velocity (PIC): the run warns under FLIP. */
+    virtual bool
+    wants_pic() const
+    {
+      return false;
+    }
+
     /** After the grid update and its boundary conditions: act on v* and the
      * increment (contact, coupling). */
     virtual void
     after_grid_update(const EffectContext<dim> & /*state*/,
                       NodalFields<dim> & /*fields*/)
+    {}
+
+    /** After USF's and MUSL's re-map made the nodal velocity v = p / m
+     * (with its boundary conditions) that the stress update reads: act on
+     * it (contact). */
+    virtual void
+    after_remap(const EffectContext<dim> & /*state*/,
+                NodalFields<dim> & /*fields*/)
     {}
 
     /** After G2P moved the particles (erosion, rigid bodies). */
@@ -100,6 +150,15 @@ namespace dealmpm
     work_done() const
     {
       return 0;
+    }
+
+    /** Columns of statistics.csv that the effect adds (name, this rank's
+     * value; the values are summed over the ranks), the same names in
+     * every call: friction work, a rigid body's reaction force. */
+    virtual std::vector<std::pair<std::string, double>>
+    statistics_columns() const
+    {
+      return {};
     }
 
     /** The effect's accumulators, for a saved run (core/run_state.h). */

@@ -24,6 +24,28 @@ namespace dealmpm
   public:
     NodalFields<dim> core;
 
+    /** With body fields (contact), each body's own NodalFields and its
+     * mass gradient sum_p m_p grad N_i(x_p) (which points out of the body:
+     * minus the nodal mass's gradient in the node's position); the core
+     * fields are then their sums (the centre-of-mass field). Empty
+     * otherwise. */
+    std::vector<NodalFields<dim>>             body;
+    std::vector<std::array<NodalVector, dim>> mass_gradient;
+
+    /** Give each body its own nodal fields from the next reinit() on: P2G
+     * then maps each particle to its body's fields, and G2P reads them. */
+    void
+    request_body_fields()
+    {
+      with_body_fields = true;
+    }
+
+    bool
+    has_body_fields() const
+    {
+      return with_body_fields;
+    }
+
     /** Ask for @p field once per body; the same name twice must agree in
      * components. */
     void
@@ -48,6 +70,17 @@ namespace dealmpm
       const unsigned int                                        n_bodies)
     {
       core.reinit(partitioner);
+      if (with_body_fields)
+        {
+          body.resize(n_bodies);
+          mass_gradient.resize(n_bodies);
+          for (unsigned int b = 0; b < n_bodies; ++b)
+            {
+              body[b].reinit(partitioner);
+              for (NodalVector &v : mass_gradient[b])
+                v.reinit(partitioner);
+            }
+        }
       for (PerBody &f : per_body_fields)
         {
           f.vectors.resize(n_bodies * f.n_components);
@@ -85,7 +118,7 @@ namespace dealmpm
     unsigned int
     n_vectors() const
     {
-      unsigned int n = 1 + 4 * dim;
+      unsigned int n = (1 + 4 * dim) * (1 + body.size()) + dim * body.size();
       for (const PerBody &f : per_body_fields)
         n += f.vectors.size();
       return n;
@@ -109,5 +142,6 @@ namespace dealmpm
     }
 
     std::vector<PerBody> per_body_fields;
+    bool                 with_body_fields = false;
   };
 } // namespace dealmpm

@@ -99,7 +99,7 @@ namespace dealmpm
     EffectContext<dim>
     effect_context() const
     {
-      return {grid, particles, stencil, time, dt, field_set};
+      return {grid, particles, stencil, time, dt, field_set, mass_threshold};
     }
   };
 } // namespace dealmpm

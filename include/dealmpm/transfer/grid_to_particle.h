@@ -2,12 +2,15 @@
 
 #include <dealmpm/base/smallest_stretch.h>
 #include <dealmpm/grid/background_grid.h>
+#include <dealmpm/grid/nodal_field_set.h>
 #include <dealmpm/grid/nodal_fields.h>
 #include <dealmpm/particles/particle_set.h>
 #include <dealmpm/transfer/deformation_update.h>
 #include <dealmpm/transfer/formulation.h>
 #include <dealmpm/transfer/stencil.h>
 #include <dealmpm/transfer/stencil_order.h>
+
+#include <vector>
 
 namespace dealmpm
 {
@@ -40,6 +43,69 @@ namespace dealmpm
     operator()(const Args &...) const
     {}
   };
+
+  /** The nodal velocity and increment arrays a G2P sweep reads: one set
+   * for every particle (single-velocity MPM). */
+  template <int dim>
+  struct VelocityArrays
+  {
+    const double *velocity[dim];
+    const double *increment[dim];
+
+    explicit VelocityArrays(const NodalFields<dim> &fields)
+    {
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          velocity[d]  = fields.velocity[d].begin();
+          increment[d] = fields.velocity_increment[d].begin();
+        }
+    }
+
+    template <typename Properties>
+    DEAL_II_ALWAYS_INLINE const VelocityArrays &
+    of(const Properties &) const
+    {
+      return *this;
+    }
+  };
+
+  /** Each particle reads its own body's nodal velocity (contact: the
+   * field set's body fields). */
+  template <int dim>
+  struct BodyVelocities
+  {
+    std::vector<VelocityArrays<dim>> bodies;
+    unsigned int                     body; ///< the property's offset
+
+    BodyVelocities(const NodalFieldSet<dim> &set, const unsigned int body)
+      : body(body)
+    {
+      for (const NodalFields<dim> &fields : set.body)
+        bodies.emplace_back(fields);
+    }
+
+    template <typename Properties>
+    DEAL_II_ALWAYS_INLINE const VelocityArrays<dim>                             &
+    of(const Properties &props) const
+    {
+      return bodies[static_cast<unsigned int>(props[body])];
+    }
+  };
+
+  /** What a sweep reads for @p fields: their arrays. */
+  template <int dim>
+  VelocityArrays<dim>
+  velocity_arrays(const NodalFields<dim> &fields)
+  {
+    return VelocityArrays<dim>(fields);
+  }
+
+  template <int dim>
+  const BodyVelocities<dim> &
+  velocity_arrays(const BodyVelocities<dim> &bodies)
+  {
+    return bodies;
+  }
 
   namespace g2p_sweep
   {
@@ -127,7 +193,8 @@ namespace dealmpm
 
   /**
    * G2P from the nodal velocity field (fields.velocity) and its increment
-   * (fields.velocity_increment, for FLIP):
+   * (fields.velocity_increment, for FLIP); @p fields is a NodalFields, or
+   * BodyVelocities for each particle to read its own body's fields:
    * - motion: particle velocity alpha (v_p + sum N dv) + (1 - alpha) sum N v
    *   (alpha = FLIP fraction), position and displacement += dt sum N v, and
    *   the reference location in the old cell; with APIC (the particles carry
@@ -162,13 +229,14 @@ namespace dealmpm
   template <G2P         what,
             Formulation formulation = Formulation::updated_lagrangian,
             int         dim,
+            typename Fields,
             typename AfterDeformation = NoAfterDeformation,
             typename AdjustGradient   = NoGradientAdjustment,
             typename Increment        = FirstOrderIncrement>
   bool
   grid_to_particle(const BackgroundGrid<dim> &grid,
                    const Stencil<dim>        &stencil,
-                   const NodalFields<dim>    &fields,
+                   const Fields              &fields,
                    const double               dt,
                    const double               flip_fraction,
                    ParticleSet<dim>          &particles,
@@ -178,16 +246,11 @@ namespace dealmpm
   {
     constexpr bool motion =
       what == G2P::motion || what == G2P::motion_and_deformation;
-    constexpr bool move        = what != G2P::deformation;
-    constexpr bool deformation = what != G2P::motion;
-    constexpr bool reference   = formulation == Formulation::total_lagrangian;
-    const double  *velocity[dim], *increment[dim];
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        velocity[d]  = fields.velocity[d].begin();
-        increment[d] = fields.velocity_increment[d].begin();
-      }
-    const CoreFields &f  = particles.fields;
+    constexpr bool    move        = what != G2P::deformation;
+    constexpr bool    deformation = what != G2P::motion;
+    constexpr bool    reference = formulation == Formulation::total_lagrangian;
+    const auto       &arrays    = velocity_arrays(fields);
+    const CoreFields &f         = particles.fields;
     const bool affine    = f.affine_velocity != numbers::invalid_unsigned_int;
     bool       left_cell = false;
     for_each_particle_in_stencil_order(
@@ -195,9 +258,13 @@ namespace dealmpm
       particles.handler,
       [&](const std::size_t k, auto &p, const GridCell<dim> &c)
         DEAL_II_ALWAYS_INLINE {
-          Tensor<1, dim>   v_grid, dv;
-          Tensor<2, dim>   L, B;
-          const Point<dim> x_p = p.get_location();
+          Tensor<1, dim>          v_grid, dv;
+          Tensor<2, dim>          L, B;
+          const Point<dim>        x_p       = p.get_location();
+          const ArrayView<double> props     = p.get_properties();
+          const auto             &from      = arrays.of(props);
+          const auto             &velocity  = from.velocity;
+          const auto             &increment = from.increment;
           // APIC measures x_i - x_p from the stencil's positions (the
           // particle's own in the updated Lagrangian sweeps, which have not
           // moved it yet; its reference one in total Lagrangian).
@@ -225,7 +292,6 @@ namespace dealmpm
                       B[a][b] += N * velocity[a][n] * r[b];
                 }
             }
-          const ArrayView<double> props = p.get_properties();
           if (motion)
             g2p_sweep::update_velocity(
               props, f, v_grid, dv, B, flip_fraction, affine);

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <dealmpm/grid/background_grid.h>
+#include <dealmpm/grid/nodal_field_set.h>
 #include <dealmpm/grid/nodal_fields.h>
 #include <dealmpm/particles/particle_set.h>
 #include <dealmpm/transfer/formulation.h>
@@ -26,6 +27,24 @@ namespace dealmpm
     const ParticleSet<dim>    &particles,
     const Stencil<dim>        &stencil,
     NodalFields<dim>          &fields,
+    const bool                 mass_and_momentum = true,
+    const bool                 internal_force    = true,
+    const Formulation          formulation = Formulation::updated_lagrangian,
+    const double               predictor_offset = 0);
+
+  /**
+   * particle_to_grid() with each body's own fields (contact): each particle
+   * adds into @p set.body of its body, and its mass times grad N into @p
+   * set.mass_gradient of its body (with mass and momentum); the core fields
+   * are then the bodies' sums, the centre-of-mass field.
+   */
+  template <int dim>
+  void
+  particle_to_body_grids(
+    const BackgroundGrid<dim> &grid,
+    const ParticleSet<dim>    &particles,
+    const Stencil<dim>        &stencil,
+    NodalFieldSet<dim>        &set,
     const bool                 mass_and_momentum = true,
     const bool                 internal_force    = true,
     const Formulation          formulation = Formulation::updated_lagrangian,

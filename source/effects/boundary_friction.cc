@@ -1,0 +1,118 @@
+#include <deal.II/base/mpi.h>
+
+#include <dealmpm/effects/boundary_friction.h>
+#include <dealmpm/effects/coulomb_friction.h>
+
+#include <algorithm>
+#include <array>
+
+namespace dealmpm
+{
+  template <int dim>
+  void
+  BoundaryFriction<dim>::setup(const EffectSetup<dim> &setup,
+                               SceneReader            &reader)
+  {
+    const BoundaryConditions<dim>      &conditions = setup.conditions;
+    std::map<unsigned int, std::string> ids;
+    for (const auto &item : coefficients)
+      ids[item.first] = "";
+    check_grid_has_ids(reader,
+                       "Coefficients",
+                       ids,
+                       setup.grid.triangulation.get_boundary_ids());
+    for (const auto &item : coefficients)
+      {
+        const auto  named = conditions.names().find(item.first);
+        const auto  id    = std::to_string(item.first);
+        std::string kind =
+          named == conditions.names().end() ? "free" : named->second;
+        if (kind != "slip")
+          reader.fail("Coefficients",
+                      "ids whose 'Grid/Boundary conditions' is 'slip' (id " +
+                        id + " is '" + kind +
+                        "'): friction acts where a slip wall holds the "
+                        "normal velocity");
+      }
+    grid_changed(setup.grid);
+  }
+
+  template <int dim>
+  void
+  BoundaryFriction<dim>::grid_changed(const BackgroundGrid<dim> &grid)
+  {
+    std::set<types::boundary_id> ids;
+    for (const auto &item : coefficients)
+      ids.insert(item.first);
+    nodes = boundary_nodes(grid, ids);
+  }
+
+  template <int dim>
+  void
+  BoundaryFriction<dim>::after_grid_update(const EffectContext<dim> &state,
+                                           NodalFields<dim>         &fields)
+  {
+    // Per node, what the slip condition took off the normal velocity (> 0
+    // where it pushed, < 0 where it held a node that was leaving the wall).
+    pressed.assign(nodes.size(), 0.);
+    std::map<types::boundary_id, std::array<double, 2>> sums; // net, pushes
+    for (const auto &item : coefficients)
+      sums[item.first] = {{0., 0.}};
+    for (unsigned int k = 0; k < nodes.size(); ++k)
+      {
+        const unsigned int i = nodes[k].local_index;
+        const double       m = fields.mass.local_element(i);
+        if (!(m > state.mass_threshold))
+          continue;
+        const Tensor<1, dim> n = nodes[k].normal();
+        for (unsigned int d = 0; d < dim; ++d)
+          pressed[k] += n[d] * ((fields.momentum[d].local_element(i) +
+                                 state.dt * fields.force[d].local_element(i)) /
+                                  m -
+                                fields.velocity[d].local_element(i));
+        sums[nodes[k].id][0] += m * pressed[k];
+        sums[nodes[k].id][1] += m * std::max(0., pressed[k]);
+      }
+    // The wall's pulls are no Coulomb contact: charge them against its
+    // pushes, so that friction acts on the net normal force.
+    std::map<types::boundary_id, double> share;
+    for (auto &[id, sum] : sums)
+      {
+        const double net    = Utilities::MPI::sum(sum[0], state.grid.comm);
+        const double pushes = Utilities::MPI::sum(sum[1], state.grid.comm);
+        share[id] = pushes > 0. ? std::clamp(net / pushes, 0., 1.) : 0.;
+      }
+    for (unsigned int k = 0; k < nodes.size(); ++k)
+      {
+        if (!(pressed[k] > 0.))
+          continue;
+        const BoundaryNode<dim> &node = nodes[k];
+        const unsigned int       i    = node.local_index;
+        const double             m    = fields.mass.local_element(i);
+        Tensor<1, dim>           v;
+        for (unsigned int d = 0; d < dim; ++d)
+          v[d] = fields.velocity[d].local_element(i);
+        const Tensor<1, dim> change =
+          coulomb_change(v,
+                         node.normal(),
+                         share[node.id] * pressed[k],
+                         coefficients.at(node.id));
+        if (change.norm_square() == 0.)
+          continue;
+        work += 0.5 * m * ((v + change).norm_square() - v.norm_square());
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            fields.velocity[d].local_element(i) += change[d];
+            fields.velocity_increment[d].local_element(i) += change[d];
+          }
+      }
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        fields.velocity[d].update_ghost_values();
+        fields.velocity_increment[d].update_ghost_values();
+      }
+  }
+
+  template class BoundaryFriction<2>;
+  template class BoundaryFriction<3>;
+} // namespace dealmpm
