@@ -115,6 +115,27 @@ expect 2 "MPM/Newmark gamma.*expected a number in \[0.5, 1\]" \
   "$scene" "${s[@]}" "${n[@]}" -s "MPM/Newmark gamma=0.4"
 expect 2 "MPM/Newmark beta.*expected a number in \[0, 0.5\]" \
   "$scene" "${s[@]}" "${n[@]}" -s "MPM/Newmark beta=-0.1"
+# Wall friction: ids the grid has, on slip walls, as 'id: mu' pairs; contact:
+# pairs of existing bodies, and only with the updated-Lagrangian explicit
+# update, which give each body its own nodal fields; a gravity ramp >= 0.
+f=(-s "Effects=boundary friction")
+expect 2 "Boundary friction/Coefficients.*expected boundary ids the grid has \(0, 1, 2, 3\), not 7" \
+  "$scene" "${s[@]}" "${f[@]}" -s "Boundary friction/Coefficients=7: 0.3"
+expect 2 "Boundary friction/Coefficients.*expected ids whose 'Grid/Boundary conditions' is 'slip' \(id 2 is 'free'\)" \
+  "$scene" "${s[@]}" "${f[@]}" -s "Boundary friction/Coefficients=2: 0.3"
+expect 2 "Boundary friction/Coefficients.*expected a list of 'id: value' pairs" \
+  "$scene" "${s[@]}" "${f[@]}" -s "Boundary friction/Coefficients=2 0.3"
+c=(-s "Effects=frictional contact")
+expect 2 "Pair friction coefficients.*expected pairs of body numbers from 1 to 2 \('Number of bodies'\), not 3" \
+  "$scene" "${s[@]}" "${c[@]}" -s "Frictional contact/Pair friction coefficients=1 3: 0.2"
+expect 2 "Pair friction coefficients.*expected a list of 'b c: mu' items" \
+  "$scene" "${s[@]}" "${c[@]}" -s "Frictional contact/Pair friction coefficients=1 2: -1"
+expect 2 "MPM/Formulation.*expected 'updated Lagrangian' with 'frictional contact'" \
+  "$scene" "${s[@]}" "${c[@]}" -s "MPM/Formulation=total Lagrangian"
+expect 2 "MPM/Particle update.*expected 'explicit' with 'frictional contact'" \
+  "$scene" "${s[@]}" "${c[@]}" -s "MPM/Particle update=Newmark"
+expect 2 "Gravity/Ramp time.*expected a number >= 0" \
+  "$scene" "${s[@]}" -s "Effects=gravity" -s "Gravity/Ramp time=-1"
 touch afile
 expect 2 "Output/Directory.*expected a folder that can be created and written" "$scene" -s "Output/Directory=afile/sub"
 # The same under MPI must not hang (only rank 0 makes folders).
