@@ -66,8 +66,10 @@ namespace dealmpm
     }
 
     /** Nodal fields the effect needs once per body (name, components), in
-     * the nodal field set only when the effect is listed (contact asks for
-     * a velocity per body). */
+     * the nodal field set only when the effect is listed: accumulators of
+     * its own (tests/scenes/extension_test.cc). Each body's mass,
+     * momentum, force and velocity, which P2G and G2P use, come with
+     * needs_body_fields(). */
     virtual std::vector<FieldDescription>
     nodal_fields_per_body() const
     {
