@@ -136,6 +136,8 @@ expect 2 "MPM/Particle update.*expected 'explicit' with 'frictional contact'" \
   "$scene" "${s[@]}" "${c[@]}" -s "MPM/Particle update=Newmark"
 expect 2 "Gravity/Ramp time.*expected a number >= 0" \
   "$scene" "${s[@]}" -s "Effects=gravity" -s "Gravity/Ramp time=-1"
+expect 2 "Rotating frame/Angular velocity.*expected a rotation that is not zero" \
+  "$scene" "${s[@]}" -s "Effects=rotating frame"
 touch afile
 expect 2 "Output/Directory.*expected a folder that can be created and written" "$scene" -s "Output/Directory=afile/sub"
 # The same under MPI must not hang (only rank 0 makes folders).

@@ -199,10 +199,11 @@ namespace dealmpm
   };
 
   /**
-   * f_i += sum_p N_ip m_p b(X_p) for a body force per unit mass given at the
-   * particles' reference positions X_p: a sweep over the particles of its
-   * own, so only scenes with such an effect pay for it. Returns the force's
-   * power on this rank's particles, sum_p m_p b(X_p) . v_p.
+   * f_i += sum_p N_ip m_p b(X_p, x_p, v_p) for a body force per unit mass
+   * given at the particles' reference positions X_p, current positions
+   * x_p and velocities v_p: a sweep over the particles of its own, so only
+   * scenes with such an effect pay for it. Returns the force's power on
+   * this rank's particles, sum_p m_p b . v_p.
    */
   template <int dim, typename BodyForce>
   double
@@ -223,11 +224,12 @@ namespace dealmpm
       state.particles.handler,
       [&](const std::size_t k, const auto &p, const GridCell<dim> &)
         DEAL_II_ALWAYS_INLINE {
-          const auto       props = p.get_properties();
-          const Point<dim> X =
-            p.get_location() - read_vector<dim>(&props[f.displacement]);
-          const Tensor<1, dim> mb = props[f.mass] * body_force(X);
-          power += mb * read_vector<dim>(&props[f.velocity]);
+          const auto           props = p.get_properties();
+          const Point<dim>     x     = p.get_location();
+          const Point<dim>     X = x - read_vector<dim>(&props[f.displacement]);
+          const Tensor<1, dim> v = read_vector<dim>(&props[f.velocity]);
+          const Tensor<1, dim> mb = props[f.mass] * body_force(X, x, v);
+          power += mb * v;
           for (unsigned int e = state.stencil.begin[k];
                e < state.stencil.begin[k + 1];
                ++e)

@@ -22,10 +22,14 @@ namespace dealmpm
     add_nodal_forces(const EffectContext<dim> &state,
                      NodalFields<dim>         &fields) override
     {
-      work += state.dt *
-              add_particle_body_force(state, fields, [&](const Point<dim> &X) {
-                return body_force(X, state.time);
-              });
+      work +=
+        state.dt * add_particle_body_force(state,
+                                           fields,
+                                           [&](const Point<dim> &X,
+                                               const Point<dim> &,
+                                               const Tensor<1, dim> &) {
+                                             return body_force(X, state.time);
+                                           });
     }
 
     double
