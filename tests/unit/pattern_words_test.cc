@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 
 using namespace dealmpm;
@@ -83,8 +84,11 @@ TEST(PatternWords, OverrideRefusedInTheProgramsWords)
 // The same in a scene file: the entry's section found from deal.II's line.
 TEST(PatternWords, FileEntryRefusedInTheProgramsWords)
 {
-  const std::string file = "pattern_words_test.prm";
-  std::ofstream("pattern_words_test.prm")
+  // In the temporary folder: the tests may run from the source tree.
+  const std::string file =
+    (std::filesystem::temp_directory_path() / "pattern_words_test.prm")
+      .string();
+  std::ofstream(file)
     << "subsection Output\n  set Interval = 1 # comment\nend\n"
     << "subsection Time  # the times\n  subsection Inner\n  end\n"
     << "  set End time = soon\nend\n";
@@ -112,4 +116,5 @@ TEST(PatternWords, FileEntryRefusedInTheProgramsWords)
       EXPECT_EQ(std::string(e.what()),
                 file + ": entry 'Time/End time' = 'soon': expected a number");
     }
+  std::filesystem::remove(file);
 }
