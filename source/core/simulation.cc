@@ -85,6 +85,13 @@ namespace dealmpm
           {
             check_body_fields(reader, effect_names[e]);
             nodal.request_body_fields();
+            for (unsigned int other = 0; other < effects.size(); ++other)
+              if (effects[other]->changes_core_velocity())
+                reader.fail("Effects",
+                            "'" + effect_names[e] + "' without '" +
+                              effect_names[other] +
+                              "': it acts on the grid's common velocity, "
+                              "which each body's own does not see yet");
           }
       }
     nodal.reinit(grid.partitioner, bodies.size());
@@ -159,7 +166,8 @@ namespace dealmpm
         SectionScope section(reader, section_title(effect_names[e]));
         effects[e]->setup({grid,
                            boundary_conditions,
-                           static_cast<unsigned int>(bodies.size())},
+                           static_cast<unsigned int>(bodies.size()),
+                           bodies},
                           reader);
         if (effects[e]->wants_pic() && run_settings.method.flip_fraction > 0 &&
             !run_settings.method.apic)

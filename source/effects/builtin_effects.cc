@@ -1,9 +1,12 @@
+#include <dealmpm/effects/absorbing_boundary.h>
 #include <dealmpm/effects/boundary_friction.h>
 #include <dealmpm/effects/effect.h>
 #include <dealmpm/effects/frictional_contact.h>
 #include <dealmpm/effects/generalized_vortex.h>
 #include <dealmpm/effects/manufactured_solution.h>
+#include <dealmpm/effects/rigid_body.h>
 #include <dealmpm/effects/rotating_frame.h>
+#include <dealmpm/effects/traction.h>
 
 #include <algorithm>
 #include <cmath>
@@ -237,6 +240,216 @@ namespace dealmpm
           if (!(alpha >= 0. && alpha < 1.))
             reader.fail("Coefficient", "a number in [0, 1)");
           return std::make_unique<LocalDamping<dim>>(alpha);
+        });
+      r.add(
+        "absorbing boundary",
+        "viscous dashpots on free grid boundaries that let waves leave "
+        "the grid (section Absorbing boundary: Boundary ids, Density, "
+        "P-wave speed, S-wave speed).",
+        [](ParameterHandler &prm) {
+          prm.declare_entry("Boundary ids",
+                            "",
+                            Patterns::List(Patterns::Integer(0)),
+                            "The free boundaries (ids without a condition "
+                            "in 'Grid/Boundary conditions') that absorb, "
+                            "e.g. '1, 2'.");
+          prm.declare_entry("Density",
+                            "0",
+                            Patterns::Double(0),
+                            "Density rho (kg/m^3) of the ground beyond the "
+                            "boundary, usually the body's next to it.");
+          prm.declare_entry("P-wave speed",
+                            "0",
+                            Patterns::Double(0),
+                            "c_p (m/s) of the ground beyond, sqrt((lambda "
+                            "+ 2 mu) / rho) for an elastic one: the normal "
+                            "dashpot is rho c_p per unit area.");
+          prm.declare_entry("S-wave speed",
+                            "0",
+                            Patterns::Double(0),
+                            "c_s (m/s), sqrt(mu / rho): the tangential "
+                            "dashpot is rho c_s per unit area.");
+        },
+        [](SceneReader &reader) -> std::unique_ptr<Effect<dim>> {
+          std::set<types::boundary_id> ids;
+          for (const double id : reader.get_doubles("Boundary ids"))
+            ids.insert(static_cast<types::boundary_id>(id));
+          if (ids.empty())
+            reader.fail("Boundary ids", "at least one boundary id");
+          return std::make_unique<AbsorbingBoundary<dim>>(
+            ids,
+            reader.get_positive("Density"),
+            reader.get_positive("P-wave speed"),
+            reader.get_nonnegative("S-wave speed"));
+        });
+      r.add(
+        "rigid body",
+        "a rigid body moving with a prescribed velocity (a punch, a "
+        "piston, a moving wall or a fixed obstacle), with friction; its "
+        "reaction force goes to the statistics (section Rigid body: Shape, "
+        "Lower corner, Upper corner, Center, Radius, Point, Normal, "
+        "Velocity, Load curve, Direction mask, Friction coefficient).",
+        [](ParameterHandler &prm) {
+          const std::string zero = dim == 2 ? "0, 0" : "0, 0, 0";
+          prm.declare_entry("Shape",
+                            "box",
+                            Patterns::Selection("box|cylinder|half-space"),
+                            "box (Lower corner, Upper corner), cylinder "
+                            "(Center, Radius; a disk in 2D, along z in 3D) "
+                            "or half-space (Point on its face, outward "
+                            "Normal), where it starts.");
+          prm.declare_entry("Lower corner",
+                            zero,
+                            Patterns::List(Patterns::Double(), dim, dim),
+                            "Box: lower corner (m).");
+          prm.declare_entry("Upper corner",
+                            zero,
+                            Patterns::List(Patterns::Double(), dim, dim),
+                            "Box: upper corner (m).");
+          prm.declare_entry("Center",
+                            zero,
+                            Patterns::List(Patterns::Double(), dim, dim),
+                            "Cylinder: centre (m).");
+          prm.declare_entry("Radius",
+                            "0",
+                            Patterns::Double(0),
+                            "Cylinder: radius (m).");
+          prm.declare_entry("Point",
+                            zero,
+                            Patterns::List(Patterns::Double(), dim, dim),
+                            "Half-space: a point of its face (m).");
+          prm.declare_entry("Normal",
+                            zero,
+                            Patterns::List(Patterns::Double(), dim, dim),
+                            "Half-space: its outward normal, towards the "
+                            "material (need not be unit).");
+          prm.declare_entry("Velocity",
+                            dim == 2 ? "0; 0" : "0; 0; 0",
+                            Patterns::Anything(),
+                            "Its velocity (m/s), one expression of t per "
+                            "direction separated by ';'.");
+          prm.declare_entry("Load curve",
+                            "",
+                            Patterns::Anything(),
+                            "A factor on the velocity, piecewise linear in "
+                            "time: 't0: f0, t1: f1, ...' (a velocity "
+                            "table); empty for 1.");
+          prm.declare_entry("Direction mask",
+                            dim == 2 ? "1, 1" : "1, 1, 1",
+                            Patterns::List(Patterns::Integer(0, 1), dim, dim),
+                            "1 where it acts on the material's velocity "
+                            "component, 0 where it leaves it alone.");
+          prm.declare_entry("Friction coefficient",
+                            "0",
+                            Patterns::Double(0),
+                            "Coulomb's mu between it and the material.");
+        },
+        [](SceneReader &reader) -> std::unique_ptr<Effect<dim>> {
+          typename RigidBody<dim>::Settings settings;
+          RigidShape<dim>                  &shape = settings.shape;
+          const std::string                 kind  = reader.get("Shape");
+          if (kind == "box")
+            {
+              shape.kind  = RigidShape<dim>::Kind::box;
+              shape.lower = reader.get_point<dim>("Lower corner");
+              shape.upper = reader.get_point<dim>("Upper corner");
+              for (unsigned int d = 0; d < dim; ++d)
+                if (!(shape.lower[d] < shape.upper[d]))
+                  reader.fail("Upper corner",
+                              "a point above 'Lower corner' in every "
+                              "direction");
+            }
+          else if (kind == "cylinder")
+            {
+              shape.kind   = RigidShape<dim>::Kind::cylinder;
+              shape.centre = reader.get_point<dim>("Center");
+              shape.radius = reader.get_positive("Radius");
+            }
+          else
+            {
+              shape.kind                  = RigidShape<dim>::Kind::half_space;
+              shape.centre                = reader.get_point<dim>("Point");
+              const Tensor<1, dim> normal = reader.get_vector<dim>("Normal");
+              if (normal.norm() == 0.)
+                reader.fail("Normal", "a direction that is not zero");
+              shape.face_normal = normal / normal.norm();
+            }
+          settings.velocity =
+            Utilities::split_string_list(reader.get("Velocity"), ';');
+          settings.curve = LoadCurve::read(reader, "Load curve");
+          const std::vector<double> mask = reader.get_doubles("Direction mask");
+          for (unsigned int d = 0; d < dim; ++d)
+            settings.mask[d] = mask.at(d) != 0.;
+          settings.friction = reader.get_nonnegative("Friction coefficient");
+          return std::make_unique<RigidBody<dim>>(settings, reader);
+        });
+      r.add(
+        "traction",
+        "surface loads, a traction and a pressure (expressions of x and t "
+        "times a load curve), on the surface particles of bodies and on "
+        "free grid boundaries (section Traction: Bodies, Surface "
+        "selection, Boundary ids, Traction, Pressure, Follower pressure, "
+        "Load curve).",
+        [](ParameterHandler &prm) {
+          prm.declare_entry("Bodies",
+                            "",
+                            Patterns::List(Patterns::Integer(1)),
+                            "Bodies (numbers from 1) whose surface "
+                            "particles carry the load, e.g. '1, 3'.");
+          prm.declare_entry("Surface selection",
+                            "1",
+                            Patterns::Anything(),
+                            "Which of their surface particles: an "
+                            "expression of the initial position (x, y, z) "
+                            "that is nonzero where the load acts, e.g. "
+                            "'y > 0.99' for a top face.");
+          prm.declare_entry("Boundary ids",
+                            "",
+                            Patterns::List(Patterns::Integer(0)),
+                            "Free grid boundaries (ids without a condition "
+                            "in 'Grid/Boundary conditions') loaded where "
+                            "material touches them.");
+          prm.declare_entry("Traction",
+                            dim == 2 ? "0; 0" : "0; 0; 0",
+                            Patterns::Anything(),
+                            "Force per unit area (Pa), one expression of "
+                            "x, y, (z,) t per direction separated by ';', "
+                            "per unit initial area on particles.");
+          prm.declare_entry("Pressure",
+                            "0",
+                            Patterns::Anything(),
+                            "Pressure (Pa) pushing into the body, an "
+                            "expression of x, y, (z,) t.");
+          prm.declare_entry("Follower pressure",
+                            "false",
+                            Patterns::Bool(),
+                            "On particles: true, the pressure acts on the "
+                            "deformed surface (J F^-T A0); false, on the "
+                            "initial one (dead load).");
+          prm.declare_entry("Load curve",
+                            "",
+                            Patterns::Anything(),
+                            "A factor on both, piecewise linear in time: "
+                            "'t0: f0, t1: f1, ...', constant outside; "
+                            "empty for 1.");
+        },
+        [](SceneReader &reader) -> std::unique_ptr<Effect<dim>> {
+          typename Traction<dim>::Settings settings;
+          for (const double b : reader.get_doubles("Bodies"))
+            settings.bodies.insert(static_cast<unsigned int>(b) - 1);
+          for (const double id : reader.get_doubles("Boundary ids"))
+            settings.boundary_ids.insert(static_cast<types::boundary_id>(id));
+          if (settings.bodies.empty() && settings.boundary_ids.empty())
+            reader.fail("Bodies",
+                        "at least one body or one of 'Boundary ids' to "
+                        "load");
+          settings.selection = reader.get("Surface selection");
+          settings.traction =
+            Utilities::split_string_list(reader.get("Traction"), ';');
+          settings.pressure = reader.get("Pressure");
+          settings.follower = reader.get_bool("Follower pressure");
+          settings.curve    = LoadCurve::read(reader, "Load curve");
+          return std::make_unique<Traction<dim>>(settings, reader);
         });
       r.add(
         "rotating frame",

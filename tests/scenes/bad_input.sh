@@ -138,6 +138,30 @@ expect 2 "Gravity/Ramp time.*expected a number >= 0" \
   "$scene" "${s[@]}" -s "Effects=gravity" -s "Gravity/Ramp time=-1"
 expect 2 "Rotating frame/Angular velocity.*expected a rotation that is not zero" \
   "$scene" "${s[@]}" -s "Effects=rotating frame"
+# Dashpots only on free faces, and not with contact (each body's own
+# velocity would not see them); surface loads: bodies that exist, parsable
+# expressions, a load curve with increasing times.
+a=(-s "Absorbing boundary/Boundary ids=1" -s "Absorbing boundary/Density=1000" -s "Absorbing boundary/P-wave speed=100")
+expect 2 "Absorbing boundary/Boundary ids.*expected ids without a velocity condition \(id 1 is 'slip'" \
+  "$scene" "${s[@]}" "${a[@]}" -s "Effects=absorbing boundary" -s "Grid/Boundary conditions=1: slip"
+expect 2 "Effects.*expected 'frictional contact' without 'absorbing boundary'" \
+  "$scene" "${s[@]}" "${a[@]}" -s "Effects=frictional contact, absorbing boundary"
+t=(-s "Effects=traction")
+expect 2 "Traction/Bodies.*expected at least one body" "$scene" "${s[@]}" "${t[@]}"
+expect 2 "Traction/Bodies.*expected body numbers from 1 to the scene's 'Number of bodies' \(2\), not 3" \
+  "$scene" "${s[@]}" "${t[@]}" -s "Traction/Bodies=3"
+expect 2 "Traction/Pressure.*expected an expression of x,y,t" \
+  "$scene" "${s[@]}" "${t[@]}" -s "Traction/Bodies=1" -s "Traction/Pressure=1e4*(t"
+expect 2 "Traction/Traction.*expected 2 expressions separated by ';'" \
+  "$scene" "${s[@]}" "${t[@]}" -s "Traction/Bodies=1" -s "Traction/Traction=0; 0; 1"
+expect 2 "Traction/Load curve.*expected a table 'time: factor" \
+  "$scene" "${s[@]}" "${t[@]}" -s "Traction/Bodies=1" -s "Traction/Load curve=0: 0, 0: 1"
+r=(-s "Effects=rigid body")
+expect 2 "Rigid body/Upper corner.*expected a point above 'Lower corner'" "$scene" "${s[@]}" "${r[@]}"
+expect 2 "Rigid body/Normal.*expected a direction that is not zero" \
+  "$scene" "${s[@]}" "${r[@]}" -s "Rigid body/Shape=half-space"
+expect 2 "Rigid body/Velocity.*expected 2 expressions of t separated by ';'" \
+  "$scene" "${s[@]}" "${r[@]}" -s "Rigid body/Shape=cylinder" -s "Rigid body/Radius=0.1" -s "Rigid body/Velocity=sin(t)"
 touch afile
 expect 2 "Output/Directory.*expected a folder that can be created and written" "$scene" -s "Output/Directory=afile/sub"
 # The same under MPI must not hang (only rank 0 makes folders).

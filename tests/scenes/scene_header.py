@@ -13,6 +13,7 @@ with <quantity> one of
     <column> at end            the last row
     max <column>, min <column> over all rows
     time of max <column>       the output time where the column peaks
+    mean <column> after t = T  mean over the output rows from time T on
     steps                      the number of steps to the end
 and <column> any statistics.csv column. The scene must run to its end
 (exit code 0); particle output is switched off for the check.
@@ -64,6 +65,13 @@ def measure(quantity):
     if match:
         pick = max if match.group(1) == "max" else min
         return pick(r[match.group(2)] for r in rows)
+    match = re.fullmatch(r"mean (\w+) after t = (\S+)", quantity)
+    if match:
+        late = [r[match.group(1)] for r in rows
+                if r["time"] >= float(match.group(2))]
+        if not late:
+            raise KeyError("no output after t = %s" % match.group(2))
+        return sum(late) / len(late)
     match = re.fullmatch(r"(\w+) at end", quantity)
     if match:
         return rows[-1][match.group(1)]

@@ -53,6 +53,12 @@ namespace dealmpm
     after_grid_update(const EffectContext<dim> &state,
                       NodalFields<dim>         &fields) override;
 
+    bool
+    changes_core_velocity() const override
+    {
+      return true;
+    }
+
     /** FLIP particles pump the wall's friction into a vibration. */
     bool
     wants_pic() const override

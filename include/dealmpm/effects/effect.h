@@ -6,6 +6,7 @@
 #include <dealmpm/grid/background_grid.h>
 #include <dealmpm/grid/boundary_conditions.h>
 #include <dealmpm/grid/nodal_field_set.h>
+#include <dealmpm/particles/body.h>
 #include <dealmpm/particles/particle_set.h>
 #include <dealmpm/transfer/stencil.h>
 #include <dealmpm/transfer/stencil_order.h>
@@ -38,6 +39,8 @@ namespace dealmpm
     const BackgroundGrid<dim>     &grid;
     const BoundaryConditions<dim> &conditions;
     unsigned int                   n_bodies;
+    /** The scene's bodies (shapes, particle patterns), alive for the run. */
+    const std::vector<Body<dim>> &bodies;
   };
 
   /**
@@ -116,6 +119,16 @@ namespace dealmpm
     virtual void
     adjust_nodal_forces(NodalFields<dim> & /*fields*/)
     {}
+
+    /** Whether the effect changes the core fields' v* after the grid
+     * update (wall friction, dashpots): contact, which moves each body
+     * with its own fields, does not combine with such effects yet, and
+     * the scene is refused. */
+    virtual bool
+    changes_core_velocity() const
+    {
+      return false;
+    }
 
     /** Whether the effect is reliable only when the particles take the
      * grid's velocity (PIC): the run warns under FLIP. */

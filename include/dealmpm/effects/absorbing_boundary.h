@@ -1,0 +1,91 @@
+#pragma once
+
+#include <dealmpm/effects/effect.h>
+#include <dealmpm/grid/boundary_nodes.h>
+
+#include <set>
+#include <vector>
+
+namespace dealmpm
+{
+  /**
+   * Viscous dashpots on free grid boundaries (Lysmer and Kuhlemeyer 1969),
+   * so that waves leave the grid instead of coming back: a traction
+   * -rho (c_p v_n n + c_s v_t) on the faces of the listed ids, rho c_p and
+   * rho c_s the impedances of the ground beyond them. A plane wave that
+   * meets the boundary head-on is taken whole.
+   *
+   * On each boundary node of area vector A the dashpot acts on v* after
+   * the grid update, implicitly (backward Euler: v_n <- v_n / (1 + dt rho
+   * c_p |A| / m), v_t likewise with c_s), so that it stays stable however
+   * light the node; the FLIP increment changes alike. Its work, the
+   * dashpots' force on the velocity they leave, counts in the energy
+   * balance (column absorbed_work).
+   */
+  template <int dim>
+  class AbsorbingBoundary : public Effect<dim>
+  {
+  public:
+    AbsorbingBoundary(const std::set<types::boundary_id> &ids,
+                      const double                        density,
+                      const double                        p_wave_speed,
+                      const double                        s_wave_speed)
+      : ids(ids)
+      , density(density)
+      , p_wave_speed(p_wave_speed)
+      , s_wave_speed(s_wave_speed)
+    {}
+
+    /** The ids must be on the grid and free of velocity conditions. */
+    void
+    setup(const EffectSetup<dim> &setup, SceneReader &reader) override;
+
+    void
+    grid_changed(const BackgroundGrid<dim> &grid) override
+    {
+      nodes = boundary_nodes(grid, ids);
+    }
+
+    void
+    after_grid_update(const EffectContext<dim> &state,
+                      NodalFields<dim>         &fields) override;
+
+    bool
+    changes_core_velocity() const override
+    {
+      return true;
+    }
+
+    double
+    work_done() const override
+    {
+      return work;
+    }
+
+    std::vector<std::pair<std::string, double>>
+    statistics_columns() const override
+    {
+      return {{"absorbed_work", work}};
+    }
+
+    std::vector<double>
+    saved_state() const override
+    {
+      return {work};
+    }
+
+    void
+    restore_state(const std::vector<double> &state) override
+    {
+      work = state.at(0);
+    }
+
+  private:
+    std::set<types::boundary_id>   ids;
+    double                         density;
+    double                         p_wave_speed;
+    double                         s_wave_speed;
+    std::vector<BoundaryNode<dim>> nodes;
+    double                         work = 0;
+  };
+} // namespace dealmpm

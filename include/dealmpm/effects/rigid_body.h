@@ -1,0 +1,128 @@
+#pragma once
+
+#include <deal.II/base/function_parser.h>
+
+#include <dealmpm/effects/effect.h>
+#include <dealmpm/effects/load_curve.h>
+
+#include <string>
+#include <vector>
+
+namespace dealmpm
+{
+  /**
+   * The region a rigid body fills at its start: signed distance (< 0
+   * inside) and outward normal at any point.
+   */
+  template <int dim>
+  struct RigidShape
+  {
+    enum class Kind
+    {
+      box,
+      cylinder, ///< a disk in 2D; along z in 3D
+      half_space
+    };
+    Kind           kind = Kind::box;
+    Point<dim>     lower, upper; ///< box
+    Point<dim>     centre;       ///< cylinder; a point of a half-space's face
+    double         radius = 0;   ///< cylinder
+    Tensor<1, dim> face_normal;  ///< half-space: outward, unit
+
+    /** Signed distance of @p x to the surface, < 0 inside. */
+    double
+    distance(const Point<dim> &x) const;
+
+    /** Outward unit normal of the surface nearest to @p x. */
+    Tensor<1, dim>
+    normal(const Point<dim> &x) const;
+  };
+
+  /**
+   * A rigid body moving with a prescribed velocity (a piston, a moving
+   * wall, a punch, a fixed obstacle of any shape): grid nodes inside it
+   * (at the end of the step) that move into it lose that normal velocity
+   * relative to it, and Coulomb friction acts on their slip; components
+   * outside the direction mask are left alone. Its position is the
+   * integral of its velocity, V(t) = curve(t) v(t) with v expressions of t.
+   *
+   * The force the material exerts on it, -sum_i m_i dv_i / dt over the
+   * corrected nodes, is the statistics' rigid_force_x, _y (, _z) (that of
+   * the last step), beside its displacement; the work it does on the
+   * material, sum_i m_i dv_i . v_i, counts in the energy balance
+   * (rigid_body_work). Under USF and MUSL it also holds the re-mapped
+   * velocity that the stress update reads.
+   */
+  template <int dim>
+  class RigidBody : public Effect<dim>
+  {
+  public:
+    struct Settings
+    {
+      RigidShape<dim>          shape;
+      std::vector<std::string> velocity; ///< dim expressions of t
+      LoadCurve                curve;
+      std::array<bool, dim>    mask;
+      double                   friction = 0;
+    };
+
+    RigidBody(const Settings &settings, const SceneReader &reader);
+
+    void
+    after_grid_update(const EffectContext<dim> &state,
+                      NodalFields<dim>         &fields) override;
+
+    void
+    after_remap(const EffectContext<dim> &state,
+                NodalFields<dim>         &fields) override;
+
+    bool
+    changes_core_velocity() const override
+    {
+      return true;
+    }
+
+    bool
+    wants_pic() const override
+    {
+      return settings.friction > 0;
+    }
+
+    double
+    work_done() const override
+    {
+      return work;
+    }
+
+    std::vector<std::pair<std::string, double>>
+    statistics_columns() const override;
+
+    std::vector<double>
+    saved_state() const override;
+
+    void
+    restore_state(const std::vector<double> &state) override;
+
+    /** How far it has moved. */
+    const Tensor<1, dim> &
+    displacement() const
+    {
+      return moved;
+    }
+
+  private:
+    /** Hold the nodes inside it; returns the momentum given to them. */
+    Tensor<1, dim>
+    hold(const EffectContext<dim> &state,
+         NodalFields<dim>         &fields,
+         const Tensor<1, dim>     &V,
+         const bool                count_work);
+
+    Settings            settings;
+    FunctionParser<dim> velocity;
+    Tensor<1, dim>      moved;
+    Tensor<1, dim>      V_now; ///< its velocity in the current step
+    Tensor<1, dim>      force; ///< of the last step, this rank's share
+    double              work = 0;
+  };
+} // namespace dealmpm

@@ -1,0 +1,68 @@
+#include <dealmpm/effects/absorbing_boundary.h>
+
+#include <map>
+#include <string>
+
+namespace dealmpm
+{
+  template <int dim>
+  void
+  AbsorbingBoundary<dim>::setup(const EffectSetup<dim> &setup,
+                                SceneReader            &reader)
+  {
+    std::map<unsigned int, std::string> listed;
+    for (const types::boundary_id id : ids)
+      listed[id] = "";
+    check_grid_has_ids(reader,
+                       "Boundary ids",
+                       listed,
+                       setup.grid.triangulation.get_boundary_ids());
+    for (const types::boundary_id id : ids)
+      {
+        const auto named = setup.conditions.names().find(id);
+        if (named != setup.conditions.names().end() && named->second != "free")
+          reader.fail("Boundary ids",
+                      "ids without a velocity condition (id " +
+                        std::to_string(id) + " is '" + named->second +
+                        "' in 'Grid/Boundary conditions'): the dashpots "
+                        "stand for the ground beyond a free face");
+      }
+    grid_changed(setup.grid);
+  }
+
+  template <int dim>
+  void
+  AbsorbingBoundary<dim>::after_grid_update(const EffectContext<dim> &state,
+                                            NodalFields<dim>         &fields)
+  {
+    for (const BoundaryNode<dim> &node : nodes)
+      {
+        const unsigned int i = node.local_index;
+        const double       m = fields.mass.local_element(i);
+        if (!(m > state.mass_threshold))
+          continue;
+        const Tensor<1, dim> n    = node.normal();
+        const double         load = state.dt * density * node.area.norm() / m;
+        Tensor<1, dim>       v;
+        for (unsigned int d = 0; d < dim; ++d)
+          v[d] = fields.velocity[d].local_element(i);
+        const Tensor<1, dim> v_n   = (v * n) * n;
+        const Tensor<1, dim> v_new = v_n / (1 + load * p_wave_speed) +
+                                     (v - v_n) / (1 + load * s_wave_speed);
+        work += m * ((v_new - v) * v_new);
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            fields.velocity[d].local_element(i) = v_new[d];
+            fields.velocity_increment[d].local_element(i) += v_new[d] - v[d];
+          }
+      }
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        fields.velocity[d].update_ghost_values();
+        fields.velocity_increment[d].update_ghost_values();
+      }
+  }
+
+  template class AbsorbingBoundary<2>;
+  template class AbsorbingBoundary<3>;
+} // namespace dealmpm

@@ -1,0 +1,212 @@
+#include <deal.II/base/mpi.h>
+
+#include <dealmpm/effects/coulomb_friction.h>
+#include <dealmpm/effects/expressions.h>
+#include <dealmpm/effects/rigid_body.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace dealmpm
+{
+  template <int dim>
+  double
+  RigidShape<dim>::distance(const Point<dim> &x) const
+  {
+    switch (kind)
+      {
+          case Kind::box: {
+            // Outside: distance to the box; inside: minus the nearest face's.
+            double outside = 0, inside = -std::numeric_limits<double>::max();
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                const double g = std::max(lower[d] - x[d], x[d] - upper[d]);
+                outside += std::pow(std::max(g, 0.), 2);
+                inside = std::max(inside, g);
+              }
+            return outside > 0 ? std::sqrt(outside) : inside;
+          }
+          case Kind::cylinder: {
+            Tensor<1, 2> r;
+            for (unsigned int d = 0; d < 2; ++d)
+              r[d] = x[d] - centre[d];
+            return r.norm() - radius;
+          }
+        case Kind::half_space:
+        default:
+          return (x - centre) * face_normal;
+      }
+  }
+
+  template <int dim>
+  Tensor<1, dim>
+  RigidShape<dim>::normal(const Point<dim> &x) const
+  {
+    Tensor<1, dim> n;
+    switch (kind)
+      {
+          case Kind::box: {
+            // The face that is nearest from inside, or the direction to
+            // the box from outside.
+            unsigned int best = 0;
+            double       gap  = -std::numeric_limits<double>::max();
+            for (unsigned int d = 0; d < dim; ++d)
+              for (const double side : {-1., 1.})
+                {
+                  const double g = side > 0 ? x[d] - upper[d] : lower[d] - x[d];
+                  if (g > 0)
+                    n[d] += side * g;
+                  if (g > gap)
+                    {
+                      gap  = g;
+                      best = 2 * d + (side > 0);
+                    }
+                }
+            if (n.norm() > 0)
+              return n / n.norm();
+            n[best / 2] = (best % 2) ? 1. : -1.;
+            return n;
+          }
+          case Kind::cylinder: {
+            for (unsigned int d = 0; d < 2; ++d)
+              n[d] = x[d] - centre[d];
+            const double r = n.norm();
+            if (r == 0.)
+              n[0] = 1.;
+            return r > 0 ? n / r : n;
+          }
+        case Kind::half_space:
+        default:
+          return face_normal;
+      }
+  }
+
+  template <int dim>
+  RigidBody<dim>::RigidBody(const Settings &settings, const SceneReader &reader)
+    : settings(settings)
+    , velocity(dim)
+  {
+    const std::string expected =
+      std::to_string(dim) +
+      " expressions of t separated by ';' (muparser), in m/s";
+    if (settings.velocity.size() != dim)
+      reader.fail("Velocity", expected);
+    parse_expressions(
+      velocity, settings.velocity, true, reader, "Velocity", expected);
+  }
+
+  template <int dim>
+  Tensor<1, dim>
+  RigidBody<dim>::hold(const EffectContext<dim> &state,
+                       NodalFields<dim>         &fields,
+                       const Tensor<1, dim>     &V,
+                       const bool                count_work)
+  {
+    Tensor<1, dim>     given;
+    const unsigned int n = fields.mass.locally_owned_size();
+    // Its place at the end of the step, in its initial frame.
+    const Tensor<1, dim> shift = moved;
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const double m = fields.mass.local_element(i);
+        if (!(m > state.mass_threshold))
+          continue;
+        const Point<dim> x = state.grid.node_positions[i] - shift;
+        if (settings.shape.distance(x) > 0.)
+          continue;
+        Tensor<1, dim> v;
+        for (unsigned int d = 0; d < dim; ++d)
+          v[d] = fields.velocity[d].local_element(i);
+        const Tensor<1, dim> normal   = settings.shape.normal(x);
+        Tensor<1, dim>       relative = v - V;
+        const double         pressed  = -(relative * normal);
+        if (!(pressed > 0.))
+          continue;
+        relative += pressed * normal;
+        relative +=
+          coulomb_change(relative, normal, pressed, settings.friction);
+        Tensor<1, dim> change = V + relative - v;
+        for (unsigned int d = 0; d < dim; ++d)
+          if (!settings.mask[d])
+            change[d] = 0.;
+        given += m * change;
+        if (count_work)
+          work += m * (change * (v + change));
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            fields.velocity[d].local_element(i) += change[d];
+            if (count_work)
+              fields.velocity_increment[d].local_element(i) += change[d];
+          }
+      }
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        fields.velocity[d].update_ghost_values();
+        if (count_work)
+          fields.velocity_increment[d].update_ghost_values();
+      }
+    return given;
+  }
+
+  template <int dim>
+  void
+  RigidBody<dim>::after_grid_update(const EffectContext<dim> &state,
+                                    NodalFields<dim>         &fields)
+  {
+    const double t = state.time + 0.5 * state.dt;
+    velocity.set_time(t);
+    const double factor = settings.curve(t);
+    for (unsigned int d = 0; d < dim; ++d)
+      V_now[d] = factor * velocity.value(Point<dim>(), d);
+    moved += state.dt * V_now;
+    force = -hold(state, fields, V_now, true) / state.dt;
+  }
+
+  template <int dim>
+  void
+  RigidBody<dim>::after_remap(const EffectContext<dim> &state,
+                              NodalFields<dim>         &fields)
+  {
+    hold(state, fields, V_now, false);
+  }
+
+  template <int dim>
+  std::vector<std::pair<std::string, double>>
+  RigidBody<dim>::statistics_columns() const
+  {
+    // Summed over the ranks: the displacement only on rank 0.
+    const bool  first  = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+    const char *axes[] = {"x", "y", "z"};
+    std::vector<std::pair<std::string, double>> columns;
+    for (unsigned int d = 0; d < dim; ++d)
+      columns.emplace_back(std::string("rigid_force_") + axes[d], force[d]);
+    for (unsigned int d = 0; d < dim; ++d)
+      columns.emplace_back(std::string("rigid_displacement_") + axes[d],
+                           first ? moved[d] : 0.);
+    columns.emplace_back("rigid_body_work", work);
+    return columns;
+  }
+
+  template <int dim>
+  std::vector<double>
+  RigidBody<dim>::saved_state() const
+  {
+    std::vector<double> state(&moved[0], &moved[0] + dim);
+    state.push_back(work);
+    return state;
+  }
+
+  template <int dim>
+  void
+  RigidBody<dim>::restore_state(const std::vector<double> &state)
+  {
+    for (unsigned int d = 0; d < dim; ++d)
+      moved[d] = state.at(d);
+    work = state.at(dim);
+  }
+
+  template struct RigidShape<2>;
+  template struct RigidShape<3>;
+  template class RigidBody<2>;
+  template class RigidBody<3>;
+} // namespace dealmpm

@@ -1,0 +1,228 @@
+#include <deal.II/base/mpi.h>
+
+#include <dealmpm/effects/expressions.h>
+#include <dealmpm/effects/traction.h>
+#include <dealmpm/particles/surface_area.h>
+#include <dealmpm/transfer/stencil_order.h>
+
+#include <map>
+
+namespace dealmpm
+{
+
+  template <int dim>
+  Traction<dim>::Traction(const Settings &settings, const SceneReader &reader)
+    : settings(settings)
+    , selection(1)
+    , traction(dim)
+    , pressure(1)
+  {
+    const std::string of = " of " + coordinate_names(dim, true) + " (muparser)";
+    parse_expressions(selection,
+                      {settings.selection},
+                      false,
+                      reader,
+                      "Surface selection",
+                      "an expression of " + coordinate_names(dim, false) +
+                        " (muparser), nonzero where the surface is loaded");
+    if (settings.traction.size() != dim)
+      reader.fail("Traction",
+                  std::to_string(dim) + " expressions separated by ';'" + of);
+    parse_expressions(traction,
+                      settings.traction,
+                      true,
+                      reader,
+                      "Traction",
+                      std::to_string(dim) + " expressions separated by ';'" +
+                        of);
+    parse_expressions(pressure,
+                      {settings.pressure},
+                      true,
+                      reader,
+                      "Pressure",
+                      "an expression" + of);
+  }
+
+  template <int dim>
+  std::vector<FieldDescription>
+  Traction<dim>::particle_fields() const
+  {
+    if (settings.bodies.empty())
+      return {};
+    return {{"surface_area", dim}, {"surface_offset", dim}};
+  }
+
+  template <int dim>
+  void
+  Traction<dim>::setup(const EffectSetup<dim> &setup, SceneReader &reader)
+  {
+    for (const unsigned int b : settings.bodies)
+      if (b >= setup.n_bodies)
+        reader.fail("Bodies",
+                    "body numbers from 1 to the scene's 'Number of bodies' (" +
+                      std::to_string(setup.n_bodies) + "), not " +
+                      std::to_string(b + 1));
+    std::map<unsigned int, std::string> listed;
+    for (const types::boundary_id id : settings.boundary_ids)
+      listed[id] = "";
+    check_grid_has_ids(reader,
+                       "Boundary ids",
+                       listed,
+                       setup.grid.triangulation.get_boundary_ids());
+    for (const types::boundary_id id : settings.boundary_ids)
+      {
+        const auto named = setup.conditions.names().find(id);
+        if (named != setup.conditions.names().end() && named->second != "free")
+          reader.fail("Boundary ids",
+                      "ids without a velocity condition (id " +
+                        std::to_string(id) + " is '" + named->second +
+                        "' in 'Grid/Boundary conditions'): a wall that "
+                        "prescribes the velocity takes any load itself");
+      }
+    bodies = &setup.bodies;
+    grid_changed(setup.grid);
+  }
+
+  template <int dim>
+  void
+  Traction<dim>::grid_changed(const BackgroundGrid<dim> &new_grid)
+  {
+    grid  = &new_grid;
+    nodes = boundary_nodes(new_grid, settings.boundary_ids);
+    for (unsigned int d = 0; d < dim; ++d)
+      nodal_load[d].reinit(new_grid.partitioner);
+  }
+
+  template <int dim>
+  void
+  Traction<dim>::initialize_particles(ParticleSet<dim> &particles) const
+  {
+    if (settings.bodies.empty())
+      return;
+    const CoreFields  &f      = particles.fields;
+    const unsigned int area   = particles.layout.offset("surface_area");
+    const unsigned int offset = particles.layout.offset("surface_offset");
+    for (const GridCell<dim> &c : grid->cells)
+      for (auto &p : particles.handler.particles_in_cell(c.cell))
+        {
+          const auto         props = p.get_properties();
+          const unsigned int body  = static_cast<unsigned int>(props[f.body]);
+          SurfaceFaces<dim>  faces;
+          if (settings.bodies.count(body) > 0 &&
+              selection.value(p.get_location()) != 0.)
+            faces = surface_faces(c,
+                                  p.get_reference_location(),
+                                  (*bodies)[body].particles_per_direction,
+                                  *(*bodies)[body].shape,
+                                  props[f.initial_volume]);
+          write_vector<dim>(&props[area], faces.area);
+          write_vector<dim>(&props[offset], faces.offset);
+        }
+  }
+
+  template <int dim>
+  Tensor<1, dim>
+  Traction<dim>::load(const Point<dim>     &x,
+                      const double          factor,
+                      const double          area,
+                      const Tensor<1, dim> &a) const
+  {
+    Tensor<1, dim> t;
+    for (unsigned int d = 0; d < dim; ++d)
+      t[d] = traction.value(x, d);
+    return factor * (area * t - pressure.value(x) * a);
+  }
+
+  template <int dim>
+  void
+  Traction<dim>::add_nodal_forces(const EffectContext<dim> &state,
+                                  NodalFields<dim>         &fields)
+  {
+    const double t      = state.time + 0.5 * state.dt;
+    const double factor = settings.curve(t);
+    traction.set_time(t);
+    pressure.set_time(t);
+    for (unsigned int d = 0; d < dim; ++d)
+      nodal_load[d] = 0.;
+
+    for (const BoundaryNode<dim> &node : nodes)
+      if (fields.mass.local_element(node.local_index) > state.mass_threshold)
+        {
+          const Tensor<1, dim> f =
+            load(state.grid.node_positions[node.local_index],
+                 factor,
+                 node.area.norm(),
+                 node.area);
+          for (unsigned int d = 0; d < dim; ++d)
+            nodal_load[d].local_element(node.local_index) += f[d];
+        }
+
+    if (!settings.bodies.empty())
+      {
+        const CoreFields  &cf   = state.particles.fields;
+        const unsigned int area = state.particles.layout.offset("surface_area");
+        const unsigned int offset =
+          state.particles.layout.offset("surface_offset");
+        double *target[dim];
+        for (unsigned int d = 0; d < dim; ++d)
+          target[d] = nodal_load[d].begin();
+        for_each_particle_in_stencil_order(
+          state.grid,
+          state.particles.handler,
+          [&](const std::size_t k, const auto &p, const GridCell<dim> &) {
+            const auto           props = p.get_properties();
+            const Tensor<1, dim> A0    = read_vector<dim>(&props[area]);
+            if (A0.norm_square() == 0.)
+              return;
+            const Tensor<2, dim> F =
+              read_tensor<dim>(&props[cf.deformation_gradient]);
+            const Tensor<1, dim> a = settings.follower ? cofactor(F) * A0 : A0;
+            // The faces' centre, where the load acts, moves with F (a
+            // reference stencil's gradients are in the initial frame).
+            const Tensor<1, dim> offset0 = read_vector<dim>(&props[offset]);
+            const Tensor<1, dim> delta =
+              state.stencil.reference ? offset0 : F * offset0;
+            const Tensor<1, dim> f =
+              load(p.get_location() + delta, factor, A0.norm(), a);
+            // N_i(x_p + delta) to first order: the loads' first moment,
+            // sum_i x_i (x) f_i, is then the faces' own, and a uniform
+            // pressure gives a mean stress of exactly -p.
+            for (unsigned int e = state.stencil.begin[k];
+                 e < state.stencil.begin[k + 1];
+                 ++e)
+              {
+                const double w =
+                  state.stencil.N[e] + state.stencil.grad_N[e] * delta;
+                for (unsigned int d = 0; d < dim; ++d)
+                  target[d][state.stencil.node[e]] += w * f[d];
+              }
+          });
+      }
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        nodal_load[d].compress(VectorOperation::add);
+        fields.force[d].add(1., nodal_load[d]);
+      }
+  }
+
+  template <int dim>
+  void
+  Traction<dim>::after_grid_update(const EffectContext<dim> &state,
+                                   NodalFields<dim>         &fields)
+  {
+    const unsigned int n = fields.mass.locally_owned_size();
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const double m = fields.mass.local_element(i);
+        if (!(m > state.mass_threshold))
+          continue;
+        for (unsigned int d = 0; d < dim; ++d)
+          work += 0.5 * state.dt * nodal_load[d].local_element(i) *
+                  (fields.momentum[d].local_element(i) / m +
+                   fields.velocity[d].local_element(i));
+      }
+  }
+
+  template class Traction<2>;
+  template class Traction<3>;
+} // namespace dealmpm
