@@ -1,5 +1,6 @@
 #include <dealmpm/effects/absorbing_boundary.h>
 #include <dealmpm/effects/boundary_friction.h>
+#include <dealmpm/effects/damage.h>
 #include <dealmpm/effects/effect.h>
 #include <dealmpm/effects/frictional_contact.h>
 #include <dealmpm/effects/generalized_vortex.h>
@@ -657,6 +658,7 @@ namespace dealmpm
       add_forces_and_damping(r);
       add_contact(r);
       add_known_motions(r);
+      add_damage_effect(r);
       return r;
     }();
     return registry;

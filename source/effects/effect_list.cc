@@ -81,7 +81,7 @@ namespace dealmpm
 
   template <int dim>
   EffectList<dim>
-  read_effects(SceneReader &reader, const MaterialSections<dim> &materials)
+  read_effects(SceneReader &reader, MaterialSections<dim> &materials)
   {
     EffectList<dim> list;
     const auto     &registry = effect_registry<dim>();
@@ -101,14 +101,17 @@ namespace dealmpm
         }
         if (list.effects.back()->has_exact_solution())
           check_known_motion_material(reader, section_title(name), materials);
+        {
+          SectionScope section(reader, section_title(name));
+          list.effects.back()->wrap_materials(materials, reader);
+        }
       }
     return list;
   }
 
 #define DEALMPM_INSTANTIATE(dim)                                               \
   template void            declare_effect_parameters<dim>(ParameterHandler &); \
-  template EffectList<dim> read_effects(SceneReader &,                         \
-                                        const MaterialSections<dim> &);
+  template EffectList<dim> read_effects(SceneReader &, MaterialSections<dim> &);
   DEALMPM_INSTANTIATE(2)
   DEALMPM_INSTANTIATE(3)
 #undef DEALMPM_INSTANTIATE

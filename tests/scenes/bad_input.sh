@@ -162,6 +162,13 @@ expect 2 "Rigid body/Normal.*expected a direction that is not zero" \
   "$scene" "${s[@]}" "${r[@]}" -s "Rigid body/Shape=half-space"
 expect 2 "Rigid body/Velocity.*expected 2 expressions of t separated by ';'" \
   "$scene" "${s[@]}" "${r[@]}" -s "Rigid body/Shape=cylinder" -s "Rigid body/Radius=0.1" -s "Rigid body/Velocity=sin(t)"
+d=(-s "Effects=damage")
+expect 2 "Damage/Materials.*expected material numbers from 1 to the scene's 'Number of materials' \\(1\\), not 3" \
+  "$scene" "${s[@]}" "${d[@]}" -s "Damage/Materials=3"
+expect 2 "Damage/Failure.*expected a value >= 'Onset'" \
+  "$scene" "${s[@]}" "${d[@]}" -s "Damage/Onset=0.2" -s "Damage/Failure=0.1"
+expect 2 "Damage/Onset.*expected a strain > 0" \
+  "$scene" "${s[@]}" "${d[@]}" -s "Damage/Onset=0"
 touch afile
 expect 2 "Output/Directory.*expected a folder that can be created and written" "$scene" -s "Output/Directory=afile/sub"
 # The same under MPI must not hang (only rank 0 makes folders).

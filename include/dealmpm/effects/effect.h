@@ -6,17 +6,22 @@
 #include <dealmpm/grid/background_grid.h>
 #include <dealmpm/grid/boundary_conditions.h>
 #include <dealmpm/grid/nodal_field_set.h>
+#include <dealmpm/materials/material_sections.h>
 #include <dealmpm/particles/body.h>
 #include <dealmpm/particles/particle_set.h>
 #include <dealmpm/transfer/stencil.h>
 #include <dealmpm/transfer/stencil_order.h>
 
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace dealmpm
 {
+  template <int dim>
+  class Effect;
+
   /** What an effect sees of the step it acts in. */
   template <int dim>
   struct EffectContext
@@ -30,6 +35,13 @@ namespace dealmpm
     NodalFieldSet<dim> &field_set;
     /** Nodes lighter than this are inactive. */
     double mass_threshold;
+    /** The scene's effects, for the potential energy of a mass. */
+    const std::vector<std::unique_ptr<Effect<dim>>> &effects;
+
+    /** Potential energy of a mass @p m at @p x in every effect's field
+     * (gravity's), as the statistics count it. */
+    double
+    potential_energy(const double m, const Point<dim> &x) const;
   };
 
   /** What an effect may check and find at set-up. */
@@ -78,6 +90,15 @@ namespace dealmpm
     {
       return {};
     }
+
+    /** Right after the effect is made, before any particle: replace
+     * some of the scene's materials by models of its own (damage wraps
+     * them); a replaced material needs a model name of its own, for its
+     * block of internal variables. */
+    virtual void
+    wrap_materials(MaterialSections<dim> & /*materials*/,
+                   SceneReader & /*reader*/)
+    {}
 
     /** Once the grid and its boundary conditions exist, before any
      * particle: check what the effect needs of the scene (@p reader is in
@@ -210,6 +231,17 @@ namespace dealmpm
       return {};
     }
   };
+
+  template <int dim>
+  double
+  EffectContext<dim>::potential_energy(const double      m,
+                                       const Point<dim> &x) const
+  {
+    double sum = 0;
+    for (const auto &effect : effects)
+      sum += effect->potential_energy(m, x);
+    return sum;
+  }
 
   /**
    * f_i += sum_p N_ip m_p b(X_p, x_p, v_p) for a body force per unit mass

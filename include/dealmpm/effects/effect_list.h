@@ -28,8 +28,9 @@ namespace dealmpm
    * at the top level). An effect with a known motion checks that the
    * scene's materials are the neo-Hookean ones its body force is computed
    * for: a different material would give silently wrong error norms.
+   * Effects may replace materials (Effect::wrap_materials()).
    */
   template <int dim>
   EffectList<dim>
-  read_effects(SceneReader &reader, const MaterialSections<dim> &materials);
+  read_effects(SceneReader &reader, MaterialSections<dim> &materials);
 } // namespace dealmpm

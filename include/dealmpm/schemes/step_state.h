@@ -99,7 +99,8 @@ namespace dealmpm
     EffectContext<dim>
     effect_context() const
     {
-      return {grid, particles, stencil, time, dt, field_set, mass_threshold};
+      return {
+        grid, particles, stencil, time, dt, field_set, mass_threshold, effects};
     }
   };
 } // namespace dealmpm

@@ -1,0 +1,84 @@
+#pragma once
+
+#include <dealmpm/effects/effect.h>
+#include <dealmpm/materials/damaged_material.h>
+
+#include <set>
+#include <vector>
+
+namespace dealmpm
+{
+  /**
+   * Damage and erosion: the listed materials fail (DamagedMaterial: their
+   * stress softens by 1 - D as a strain or stress measure passes a
+   * threshold), and their fully failed particles (D = 1) are removed at the
+   * end of the step or kept, stress-free. Kept, they conserve mass and
+   * momentum; removed, what they carried (mass, momentum, kinetic energy
+   * and dissipated work) goes to the statistics' eroded_* columns, and
+   * their energy leaves the balance as work (eroded_energy), so that it
+   * still closes.
+   */
+  template <int dim>
+  class Damage : public Effect<dim>
+  {
+  public:
+    struct Settings
+    {
+      std::set<unsigned int> materials; ///< 0-based; empty: all
+      DamageLaw              law;
+      bool                   erode = true;
+    };
+
+    explicit Damage(const Settings &settings);
+
+    void
+    wrap_materials(MaterialSections<dim> &materials,
+                   SceneReader           &reader) override;
+
+    void
+    after_g2p(const EffectContext<dim> &state,
+              ParticleSet<dim>         &particles) override;
+
+    double
+    work_done() const override
+    {
+      return -eroded[eroded_energy];
+    }
+
+    std::vector<std::pair<std::string, double>>
+    statistics_columns() const override;
+
+    std::vector<double>
+    saved_state() const override
+    {
+      return eroded;
+    }
+
+    void
+    restore_state(const std::vector<double> &state) override
+    {
+      eroded = state;
+    }
+
+  private:
+    enum Eroded : unsigned int
+    {
+      eroded_particles,
+      eroded_mass,
+      eroded_energy,
+      eroded_momentum, ///< then dim components
+    };
+
+    Settings settings;
+    /** Per material: its damaged model, or nullptr. */
+    std::vector<const DamagedMaterial<dim> *> damaged;
+    /** Running sums over the removed particles of this rank. */
+    std::vector<double> eroded;
+    unsigned int        failed_now = 0; ///< kept with D = 1, this rank
+  };
+
+  /** Register "damage" in the effect table. */
+  template <int dim>
+  void
+  add_damage_effect(Registry<Effect<dim>> &registry);
+} // namespace dealmpm
