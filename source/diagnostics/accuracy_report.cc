@@ -41,12 +41,17 @@ namespace dealmpm
         0.;
     double change = 0;
     for (unsigned int d = 0; d < 3; ++d)
-      change += std::pow(s.momentum[d] - initial.momentum[d], 2);
+      change += std::pow(s.momentum[d] + s.removed_momentum[d] -
+                           initial.momentum[d] - initial.removed_momentum[d],
+                         2);
     const double momentum_scale = std::sqrt(2 * s.mass * max_kinetic_energy);
     current.momentum_drift =
       momentum_scale > 0 ? std::sqrt(change) / momentum_scale : 0.;
     current.mass_loss =
-      initial.mass > 0 ? (initial.mass - s.mass) / initial.mass : 0.;
+      initial.mass > 0 ?
+        (initial.mass + initial.removed_mass - s.mass - s.removed_mass) /
+          initial.mass :
+        0.;
     // The same masses summed in another order (particles change ranks and
     // cells) differ by round-off, not by a lost particle.
     if (std::abs(current.mass_loss) < 1e-12)

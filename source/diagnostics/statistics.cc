@@ -75,6 +75,21 @@ namespace dealmpm
     s.gravitational_energy = sums[7];
     s.has_dissipated_work  = dissipates;
     s.dissipated_work      = sums[8];
+    // Removed mass and momentum (this rank's), then summed.
+    std::array<double, 4> removed{};
+    for (const auto &effect : effects)
+      {
+        removed[0] += effect->removed_mass();
+        const Tensor<1, dim> P = effect->removed_momentum();
+        for (unsigned int d = 0; d < dim; ++d)
+          removed[1 + d] += P[d];
+      }
+    if (!effects.empty())
+      Utilities::MPI::sum(ArrayView<const double>(removed.data(), 4),
+                          comm,
+                          ArrayView<double>(removed.data(), 4));
+    s.removed_mass     = removed[0];
+    s.removed_momentum = {{removed[1], removed[2], removed[3]}};
     for (const auto &effect : effects)
       for (const auto &[name, value] : effect->statistics_columns())
         {

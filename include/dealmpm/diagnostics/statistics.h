@@ -26,6 +26,10 @@ namespace dealmpm
      * work); only counted when a material of the scene dissipates. */
     bool   has_dissipated_work = false;
     double dissipated_work     = 0;
+    /** Mass and momentum that effects took out of the run on purpose
+     * (erosion), so far: the conservation checks count them as kept. */
+    double                removed_mass = 0;
+    std::array<double, 3> removed_momentum{{0, 0, 0}};
     /** Displacement error against an effect's exact solution, if any:
      * volume-weighted RMS and max over the particles. */
     bool   has_error = false;
@@ -51,6 +55,8 @@ namespace dealmpm
       archive &kinetic_energy &strain_energy &gravitational_energy;
       archive &has_dissipated_work           &dissipated_work;
       archive &has_error &error_L2           &error_max;
+      archive &removed_mass &removed_momentum[0] & removed_momentum[1] &
+        removed_momentum[2];
       // Needs <boost/serialization/{vector,string}.hpp>.
       archive &effect_columns &effect_values;
     }

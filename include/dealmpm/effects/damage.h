@@ -45,6 +45,21 @@ namespace dealmpm
       return -eroded[eroded_energy];
     }
 
+    double
+    removed_mass() const override
+    {
+      return eroded[eroded_mass];
+    }
+
+    Tensor<1, dim>
+    removed_momentum() const override
+    {
+      Tensor<1, dim> P;
+      for (unsigned int d = 0; d < dim; ++d)
+        P[d] = eroded[eroded_momentum + d];
+      return P;
+    }
+
     std::vector<std::pair<std::string, double>>
     statistics_columns() const override;
 

@@ -188,6 +188,21 @@ namespace dealmpm
       return 0;
     }
 
+    /** Mass and momentum the effect took out of the run on purpose
+     * (erosion) so far, on this rank: the mass and momentum checks count
+     * them as kept. */
+    virtual double
+    removed_mass() const
+    {
+      return 0;
+    }
+
+    virtual Tensor<1, dim>
+    removed_momentum() const
+    {
+      return {};
+    }
+
     /** Columns of statistics.csv that the effect adds (name, this rank's
      * value; the values are summed over the ranks), the same names in
      * every call: friction work, a rigid body's reaction force. */
