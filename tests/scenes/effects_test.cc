@@ -122,3 +122,47 @@ TEST(Effects, ContactAndFrictionCostNothingWhereUnused)
               .count("effect: frictional contact"),
             1u);
 }
+
+// Loads, rigid bodies and damage listed but idle (a zero pressure, a body
+// far away, a failure strain never reached) change nothing; unlisted, they
+// add no particle field and no timer section.
+TEST(Effects, IdleLoadsRigidBodiesAndDamageChangeNothing)
+{
+  const std::string body =
+    "subsection Grid\n set Cells = 8, 8\n set Boundary conditions = 2: "
+    "slip\nend\nsubsection Body 1\n set Lower corner = 0.25, 0.25\n set "
+    "Upper corner = 0.75, 0.75\n set Velocity = 0.3, 0.1\nend\n"
+    "subsection Traction\n set Bodies = 1\n set Pressure = 0\nend\n"
+    "subsection Rigid body\n set Lower corner = 0.9, 0.9\n"
+    " set Upper corner = 2, 2\nend\n"
+    "subsection Damage\n set Onset = 10\n set Failure = 10\nend\n";
+  auto plain = test::make_simulation<2>("set Effects = gravity\n" + body);
+  std::vector<std::unique_ptr<Simulation<2>>> idle;
+  for (const std::string effect : {"traction", "rigid body", "damage"})
+    idle.push_back(test::make_simulation<2>("set Effects = gravity, " + effect +
+                                            "\n" + body));
+  for (unsigned int i = 0; i < 20; ++i)
+    {
+      plain->advance(2e-3);
+      for (auto &with : idle)
+        with->advance(2e-3);
+    }
+  const Statistics a = plain->statistics();
+  for (auto &with : idle)
+    {
+      const Statistics b = with->statistics();
+      EXPECT_NEAR(a.kinetic_energy, b.kinetic_energy, 1e-12 * a.kinetic_energy);
+      EXPECT_NEAR(a.strain_energy, b.strain_energy, 1e-12 * a.kinetic_energy);
+      for (unsigned int d = 0; d < 2; ++d)
+        EXPECT_NEAR(a.momentum[d], b.momentum[d], 1e-12 * a.mass);
+      EXPECT_EQ(with->external_work(), 0.);
+    }
+  for (const std::string field : {"surface_area", "surface_offset", "damage"})
+    EXPECT_FALSE(plain->particle_set().layout.has(field)) << field;
+  EXPECT_TRUE(idle[0]->particle_set().layout.has("surface_area"));
+  EXPECT_TRUE(idle[2]->particle_set().layout.has("damage"));
+  const auto sections =
+    plain->timer().get_summary_data(TimerOutput::total_wall_time);
+  for (const std::string effect : {"traction", "rigid body", "damage"})
+    EXPECT_EQ(sections.count("effect: " + effect), 0u) << effect;
+}
