@@ -1,3 +1,5 @@
+#include <deal.II/base/mpi.h>
+
 #include <dealmpm/effects/damage.h>
 
 namespace dealmpm
@@ -81,7 +83,9 @@ namespace dealmpm
           eroded[eroded_momentum + d] += mass * v[d];
         failed.push_back(p);
       }
-    if (!failed.empty())
+    // remove_particles() updates the handler's global counts, a collective
+    // call: every rank makes it, or none.
+    if (Utilities::MPI::logical_or(!failed.empty(), state.grid.comm))
       particles.handler.remove_particles(failed);
   }
 

@@ -106,7 +106,7 @@ namespace dealmpm
           {
             double v_n = 0;
             for (unsigned int d = 0; d < dim; ++d)
-              v_n += n[d] * fields.velocity[d][stencil.node[e]];
+              v_n += n[d] * fields.velocity[d].local_element(stencil.node[e]);
             rate_p += v_n * (n * stencil.grad_N[e]);
           }
         rate[p.material] += p.volume * rate_p;

@@ -13,7 +13,11 @@
 # - total Lagrangian: the 3D column, and the cantilever with the quadratic
 #   B-spline (reference stencils reaching into ghost cells);
 # - the Newmark particle update on the disks (particles carry their
-#   acceleration across the rank boundary).
+#   acceleration across the rank boundary);
+# - two materials of different stiffness sharing cells (the projectile on
+#   its plate, without erosion: the mixed-cell split reads nodes of both
+#   ranks; it read the nodal velocity by global index and crashed on
+#   rank 1 before issue 13).
 # Every run must have particles on both ranks.
 set -euo pipefail
 dealmpm=$1 compare=$2 mpirun=$3 disks=$4 column=$5
@@ -53,3 +57,5 @@ compare_ranks cantilever_tl "$(dirname "$disks")/hard-cases/cantilever.prm" -s "
   -s "Output/Interval=0.05" -s "Output/Particle CSV=false" -s "MPM/Formulation=total Lagrangian" \
   -s "MPM/Shape function=quadratic B-spline" -s "Grid/Lower corner=0, 0" -s "Grid/Upper corner=4, 1" \
   -s "Grid/Cells=32, 8"
+compare_ranks mixed "$(dirname "$disks")/projectile_plate.prm" -s "Effects=" -s "Time/End time=2e-5" \
+  -s "Output/Interval=5e-6"
