@@ -50,10 +50,23 @@ namespace dealmpm
   Damage<dim>::after_g2p(const EffectContext<dim> &state,
                          ParticleSet<dim>         &particles)
   {
+    unsigned int newly_failed = 0;
+    for (const DamagedMaterial<dim> *material : damaged)
+      if (material != nullptr)
+        newly_failed += material->take_newly_failed();
+    if (!settings.erode)
+      {
+        failed_kept += newly_failed;
+        return;
+      }
+    // remove_particles() updates the handler's global counts, a collective
+    // call: every rank makes it, or none; and only in steps where some
+    // particle failed is there a sweep.
+    if (!Utilities::MPI::logical_or(newly_failed > 0, state.grid.comm))
+      return;
     const CoreFields &f = particles.fields;
     std::vector<typename Particles::ParticleHandler<dim>::particle_iterator>
       failed;
-    failed_now = 0;
     for (auto p = particles.handler.begin(); p != particles.handler.end(); ++p)
       {
         const auto         props = p->get_properties();
@@ -62,11 +75,6 @@ namespace dealmpm
         if (material == nullptr ||
             props[particles.internal_offset[m] + material->damage_index()] < 1.)
           continue;
-        if (!settings.erode)
-          {
-            ++failed_now;
-            continue;
-          }
         const double                  mass = props[f.mass];
         const Tensor<1, dim>          v = read_vector<dim>(&props[f.velocity]);
         const ArrayView<const double> internal(
@@ -83,10 +91,7 @@ namespace dealmpm
           eroded[eroded_momentum + d] += mass * v[d];
         failed.push_back(p);
       }
-    // remove_particles() updates the handler's global counts, a collective
-    // call: every rank makes it, or none.
-    if (Utilities::MPI::logical_or(!failed.empty(), state.grid.comm))
-      particles.handler.remove_particles(failed);
+    particles.handler.remove_particles(failed);
   }
 
   template <int dim>
@@ -95,7 +100,7 @@ namespace dealmpm
   {
     const char                                 *axes[]  = {"x", "y", "z"};
     std::vector<std::pair<std::string, double>> columns = {
-      {"failed_particles", failed_now},
+      {"failed_particles", failed_kept},
       {"eroded_particles", eroded[eroded_particles]},
       {"eroded_mass", eroded[eroded_mass]},
       {"eroded_energy", eroded[eroded_energy]}};

@@ -34,8 +34,9 @@ namespace dealmpm
     , law(law)
     , suffix(suffix)
   {
-    this->density = this->inner->density;
-    n_inner       = 0;
+    this->density    = this->inner->density;
+    inner_dissipates = this->inner->dissipates();
+    n_inner          = 0;
     for (const FieldDescription &f : this->inner->internal_variables())
       n_inner += f.n_components;
   }
@@ -93,9 +94,19 @@ namespace dealmpm
     double q = 0;
     if (law.measure == DamageLaw::Measure::principal_strain)
       {
+        // The largest eigenvalue of b = F F^T is at most tr/d +
+        // sqrt((d - 1) / d |dev b|^2) (Wolkowicz and Styan): most points
+        // are far from failing, and skip the eigenvalues.
         const SymmetricTensor<2, dim> b =
           symmetrize(Tensor<2, dim>(F * transpose(F)));
-        q = std::sqrt(eigenvalues(b)[0]) - 1.;
+        const double mean = trace(b) / dim;
+        const double bound =
+          mean +
+          std::sqrt(
+            std::max(0., (dim - 1.) / dim * (b * b - dim * mean * mean)));
+        q = bound < (1. + law.onset) * (1. + law.onset) ?
+              -1. :
+              std::sqrt(eigenvalues(b)[0]) - 1.;
       }
     else
       q = eigenvalues(full_stress(*inner, F, s, own))[0];
@@ -103,11 +114,14 @@ namespace dealmpm
 
     // Released energy and the model's own dissipation, in the share the
     // softened stress did.
-    const double inner_work =
-      inner->dissipates() ? inner->dissipated_energy_density(own) : 0.;
-    internal[n_inner + 1 + n_stress(dim)] +=
-      (D - D_old) * inner->strain_energy_density(F, s, own) +
-      (1. - D) * (inner_work - inner_work_old);
+    double &work = internal[n_inner + 1 + n_stress(dim)];
+    if (D > D_old)
+      work += (D - D_old) * inner->strain_energy_density(F, s, own);
+    if (inner_dissipates)
+      work +=
+        (1. - D) * (inner->dissipated_energy_density(own) - inner_work_old);
+    if (D >= 1. && D_old < 1.)
+      ++newly_failed;
     internal[n_inner] = D;
     for (unsigned int i = 0; i < n_stress(dim); ++i)
       internal[n_inner + 1 + i] = s.access_raw_entry(i);

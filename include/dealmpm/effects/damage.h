@@ -66,13 +66,16 @@ namespace dealmpm
     std::vector<double>
     saved_state() const override
     {
-      return eroded;
+      std::vector<double> state = eroded;
+      state.push_back(failed_kept);
+      return state;
     }
 
     void
     restore_state(const std::vector<double> &state) override
     {
-      eroded = state;
+      eroded.assign(state.begin(), state.end() - 1);
+      failed_kept = state.back();
     }
 
   private:
@@ -89,7 +92,9 @@ namespace dealmpm
     std::vector<const DamagedMaterial<dim> *> damaged;
     /** Running sums over the removed particles of this rank. */
     std::vector<double> eroded;
-    unsigned int        failed_now = 0; ///< kept with D = 1, this rank
+    /** Particles that reached D = 1 and were kept, counted on the rank
+     * where they failed (the statistics sum the ranks). */
+    double failed_kept = 0;
   };
 
   /** Register "damage" in the effect table. */

@@ -93,6 +93,16 @@ namespace dealmpm
       return n_inner;
     }
 
+    /** Points of this rank that reached D = 1 since the last call (the
+     * erosion sweeps only in steps that have some). */
+    unsigned int
+    take_newly_failed() const
+    {
+      const unsigned int n = newly_failed;
+      newly_failed         = 0;
+      return n;
+    }
+
   private:
     /** The effective stress: the stored one while undamaged. */
     SymmetricTensor<2, dim>
@@ -103,5 +113,8 @@ namespace dealmpm
     DamageLaw                      law;
     std::string                    suffix;
     unsigned int                   n_inner;
+    bool                           inner_dissipates;
+    /** The stress update runs on one thread per rank. */
+    mutable unsigned int newly_failed = 0;
   };
 } // namespace dealmpm
