@@ -5,19 +5,21 @@
 //
 //   ./custom_effect ../examples/custom_effect.prm
 #include <dealmpm/core/simulation.h>
-#include <dealmpm/effects/effect.h>
+#include <dealmpm/effects/effect_with_work.h>
 
 using namespace dealmpm;
 
 namespace
 {
-  /** Linear drag towards the air's velocity, at rate c (1/s). */
+  /** Linear drag towards the air's velocity, at rate c (1/s). Its work
+   * accumulator, column and saved state come with EffectWithWork. */
   template <int dim>
-  class AirDrag : public Effect<dim>
+  class AirDrag : public EffectWithWork<dim>
   {
   public:
     AirDrag(const double rate, const Tensor<1, dim> &air)
-      : rate(rate)
+      : EffectWithWork<dim>("drag_work")
+      , rate(rate)
       , air(air)
     {}
 
@@ -38,39 +40,14 @@ namespace
               const double v = fields.momentum[d].local_element(i) / m;
               const double f = -rate * m * (v - air[d]);
               fields.force[d].local_element(i) += f;
-              work += state.dt * f * v;
+              this->work += state.dt * f * v;
             }
         }
-    }
-
-    double
-    work_done() const override
-    {
-      return work;
-    }
-
-    std::vector<std::pair<std::string, double>>
-    statistics_columns() const override
-    {
-      return {{"drag_work", work}};
-    }
-
-    std::vector<double>
-    saved_state() const override
-    {
-      return {work};
-    }
-
-    void
-    restore_state(const std::vector<double> &state) override
-    {
-      work = state.at(0);
     }
 
   private:
     double         rate;
     Tensor<1, dim> air;
-    double         work = 0;
   };
 
   template <int dim>

@@ -49,7 +49,7 @@ namespace dealmpm
         const Tensor<1, dim> v_n   = (v * n) * n;
         const Tensor<1, dim> v_new = v_n / (1 + load * p_wave_speed) +
                                      (v - v_n) / (1 + load * s_wave_speed);
-        work += m * ((v_new - v) * v_new);
+        this->work += m * ((v_new - v) * v_new);
         for (unsigned int d = 0; d < dim; ++d)
           {
             fields.velocity[d].local_element(i) = v_new[d];

@@ -99,7 +99,7 @@ namespace dealmpm
                          coefficients.at(node.id));
         if (change.norm_square() == 0.)
           continue;
-        work += 0.5 * m * ((v + change).norm_square() - v.norm_square());
+        this->work += 0.5 * m * ((v + change).norm_square() - v.norm_square());
         for (unsigned int d = 0; d < dim; ++d)
           {
             fields.velocity[d].local_element(i) += change[d];

@@ -45,7 +45,7 @@ namespace dealmpm
     const bool         ramping = ramp_time > 0 && t < ramp_time;
     const Tensor<1, 3> w       = ramping ? t / ramp_time * omega : omega;
     const Tensor<1, 3> w_dot   = ramping ? omega / ramp_time : Tensor<1, 3>();
-    work +=
+    this->work +=
       state.dt *
       add_particle_body_force(state,
                               fields,

@@ -12,7 +12,8 @@ namespace dealmpm
 
   template <int dim>
   Traction<dim>::Traction(const Settings &settings, const SceneReader &reader)
-    : settings(settings)
+    : EffectWithWork<dim>("traction_work")
+    , settings(settings)
     , selection(1)
     , traction(dim)
     , pressure(1)
@@ -217,9 +218,9 @@ namespace dealmpm
         if (!(m > state.mass_threshold))
           continue;
         for (unsigned int d = 0; d < dim; ++d)
-          work += 0.5 * state.dt * nodal_load[d].local_element(i) *
-                  (fields.momentum[d].local_element(i) / m +
-                   fields.velocity[d].local_element(i));
+          this->work += 0.5 * state.dt * nodal_load[d].local_element(i) *
+                        (fields.momentum[d].local_element(i) / m +
+                         fields.velocity[d].local_element(i));
       }
   }
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include <dealmpm/effects/effect.h>
+#include <dealmpm/effects/effect_with_work.h>
 #include <dealmpm/grid/boundary_nodes.h>
 
 #include <set>
@@ -23,14 +23,15 @@ namespace dealmpm
    * balance (column absorbed_work).
    */
   template <int dim>
-  class AbsorbingBoundary : public Effect<dim>
+  class AbsorbingBoundary : public EffectWithWork<dim>
   {
   public:
     AbsorbingBoundary(const std::set<types::boundary_id> &ids,
                       const double                        density,
                       const double                        p_wave_speed,
                       const double                        s_wave_speed)
-      : ids(ids)
+      : EffectWithWork<dim>("absorbed_work")
+      , ids(ids)
       , density(density)
       , p_wave_speed(p_wave_speed)
       , s_wave_speed(s_wave_speed)
@@ -56,36 +57,11 @@ namespace dealmpm
       return true;
     }
 
-    double
-    work_done() const override
-    {
-      return work;
-    }
-
-    std::vector<std::pair<std::string, double>>
-    statistics_columns() const override
-    {
-      return {{"absorbed_work", work}};
-    }
-
-    std::vector<double>
-    saved_state() const override
-    {
-      return {work};
-    }
-
-    void
-    restore_state(const std::vector<double> &state) override
-    {
-      work = state.at(0);
-    }
-
   private:
     std::set<types::boundary_id>   ids;
     double                         density;
     double                         p_wave_speed;
     double                         s_wave_speed;
     std::vector<BoundaryNode<dim>> nodes;
-    double                         work = 0;
   };
 } // namespace dealmpm

@@ -1,6 +1,6 @@
 #pragma once
 
-#include <dealmpm/effects/effect.h>
+#include <dealmpm/effects/effect_with_work.h>
 #include <dealmpm/grid/boundary_nodes.h>
 
 #include <map>
@@ -34,12 +34,13 @@ namespace dealmpm
    * (wants_pic()).
    */
   template <int dim>
-  class BoundaryFriction : public Effect<dim>
+  class BoundaryFriction : public EffectWithWork<dim>
   {
   public:
     explicit BoundaryFriction(
       const std::map<types::boundary_id, double> &coefficients)
-      : coefficients(coefficients)
+      : EffectWithWork<dim>("boundary_friction_work")
+      , coefficients(coefficients)
     {}
 
     /** Every id must be on the grid and carry a slip condition. */
@@ -66,34 +67,9 @@ namespace dealmpm
       return true;
     }
 
-    double
-    work_done() const override
-    {
-      return work;
-    }
-
-    std::vector<std::pair<std::string, double>>
-    statistics_columns() const override
-    {
-      return {{"boundary_friction_work", work}};
-    }
-
-    std::vector<double>
-    saved_state() const override
-    {
-      return {work};
-    }
-
-    void
-    restore_state(const std::vector<double> &state) override
-    {
-      work = state.at(0);
-    }
-
   private:
     std::map<types::boundary_id, double> coefficients;
     std::vector<BoundaryNode<dim>>       nodes;
     std::vector<double>                  pressed; ///< per node, this step
-    double                               work = 0;
   };
 } // namespace dealmpm

@@ -1,6 +1,6 @@
 #pragma once
 
-#include <dealmpm/effects/effect.h>
+#include <dealmpm/effects/effect_with_work.h>
 
 namespace dealmpm
 {
@@ -22,7 +22,7 @@ namespace dealmpm
    * the test of the free block).
    */
   template <int dim>
-  class RotatingFrame : public Effect<dim>
+  class RotatingFrame : public EffectWithWork<dim>
   {
   public:
     /** @p omega in 3D components (2D: only z counts), @p ramp_time 0: at
@@ -30,7 +30,8 @@ namespace dealmpm
     RotatingFrame(const Tensor<1, 3> &omega,
                   const Point<dim>   &axis_point,
                   const double        ramp_time)
-      : omega(omega)
+      : EffectWithWork<dim>("rotating_frame_work")
+      , omega(omega)
       , axis_point(axis_point)
       , ramp_time(ramp_time)
     {}
@@ -48,34 +49,9 @@ namespace dealmpm
     add_nodal_forces(const EffectContext<dim> &state,
                      NodalFields<dim>         &fields) override;
 
-    double
-    work_done() const override
-    {
-      return work;
-    }
-
-    std::vector<std::pair<std::string, double>>
-    statistics_columns() const override
-    {
-      return {{"rotating_frame_work", work}};
-    }
-
-    std::vector<double>
-    saved_state() const override
-    {
-      return {work};
-    }
-
-    void
-    restore_state(const std::vector<double> &state) override
-    {
-      work = state.at(0);
-    }
-
   private:
     Tensor<1, 3> omega;
     Point<dim>   axis_point;
     double       ramp_time;
-    double       work = 0;
   };
 } // namespace dealmpm

@@ -2,7 +2,7 @@
 
 #include <deal.II/base/function_parser.h>
 
-#include <dealmpm/effects/effect.h>
+#include <dealmpm/effects/effect_with_work.h>
 #include <dealmpm/effects/load_curve.h>
 #include <dealmpm/grid/boundary_nodes.h>
 
@@ -34,7 +34,7 @@ namespace dealmpm
    * energy balance (column traction_work).
    */
   template <int dim>
-  class Traction : public Effect<dim>
+  class Traction : public EffectWithWork<dim>
   {
   public:
     struct Settings
@@ -73,30 +73,6 @@ namespace dealmpm
     after_grid_update(const EffectContext<dim> &state,
                       NodalFields<dim>         &fields) override;
 
-    double
-    work_done() const override
-    {
-      return work;
-    }
-
-    std::vector<std::pair<std::string, double>>
-    statistics_columns() const override
-    {
-      return {{"traction_work", work}};
-    }
-
-    std::vector<double>
-    saved_state() const override
-    {
-      return {work};
-    }
-
-    void
-    restore_state(const std::vector<double> &state) override
-    {
-      work = state.at(0);
-    }
-
   private:
     /** factor (|A| t(x) - p(x) a), at the expressions' time. */
     Tensor<1, dim>
@@ -113,6 +89,5 @@ namespace dealmpm
     const BackgroundGrid<dim>     *grid   = nullptr;
     std::vector<BoundaryNode<dim>> nodes;
     std::array<NodalVector, dim>   nodal_load;
-    double                         work = 0;
   };
 } // namespace dealmpm
