@@ -578,6 +578,16 @@ namespace dealmpm
             "'mass gradient' along g_b alone (Bardenhagen's). The first two "
             "give two bodies opposite normals, so that momentum is kept to "
             "round-off.");
+          prm.declare_entry(
+            "Separation check",
+            "0",
+            Patterns::Double(0, 1),
+            "Contact at a node only where the bodies' particles fill at "
+            "least this fraction of the node's volume (integral of N_i; "
+            "Uintah's volume constraint): bodies that share a node across "
+            "a gap narrower than a cell then do not touch before the gap "
+            "closes. 0: off (contact wherever two bodies have mass at a "
+            "node); 0.9 is a usual value. Costs a sweep over the particles.");
         },
         [](SceneReader &reader) -> std::unique_ptr<Effect<dim>> {
           return std::make_unique<FrictionalContact<dim>>(
@@ -587,7 +597,8 @@ namespace dealmpm
               FrictionalContact<dim>::Normals::own_mass_gradient :
             reader.get("Normals") == "difference of bodies" ?
               FrictionalContact<dim>::Normals::difference_of_bodies :
-              FrictionalContact<dim>::Normals::steepest_mass_gradient);
+              FrictionalContact<dim>::Normals::steepest_mass_gradient,
+            reader.get_double("Separation check"));
         });
     }
 

@@ -1,4 +1,5 @@
 #include <dealmpm/effects/frictional_contact.h>
+#include <dealmpm/transfer/stencil_order.h>
 
 #include <string>
 
@@ -10,6 +11,7 @@ namespace dealmpm
                                 SceneReader            &reader)
   {
     conditions = &setup.conditions;
+    grid_changed(setup.grid);
     for (const auto &item : pair_friction)
       if (item.first.second >= setup.n_bodies)
         reader.fail("Pair friction coefficients",
@@ -17,6 +19,66 @@ namespace dealmpm
                       std::to_string(setup.n_bodies) +
                       " ('Number of bodies'), not " +
                       std::to_string(item.first.second + 1));
+  }
+
+  template <int dim>
+  void
+  FrictionalContact<dim>::grid_changed(const BackgroundGrid<dim> &grid)
+  {
+    if (!(separation_check > 0))
+      return;
+    // integral N_i dx: each cell gives each vertex its measure / 2^dim
+    // (exact on parallelograms), passed on to the effective nodes.
+    full_volume.reinit(grid.partitioner);
+    constexpr unsigned int n_vertices = GridCell<dim>::n_vertices;
+    for (const GridCell<dim> &c : grid.cells)
+      for (unsigned int j = 0; j < c.n_nodes; ++j)
+        {
+          double share = 0;
+          for (unsigned int v = 0; v < n_vertices; ++v)
+            share +=
+              c.first_weight == numbers::invalid_unsigned_int ?
+                (v == j ? 1. : 0.) :
+                grid.cell_node_weights[c.first_weight + j * n_vertices + v];
+          full_volume.local_element(grid.cell_nodes[c.first_node + j]) +=
+            share * c.measure / n_vertices;
+        }
+    full_volume.compress(VectorOperation::add);
+  }
+
+  template <int dim>
+  void
+  FrictionalContact<dim>::add_nodal_forces(const EffectContext<dim> &state,
+                                           NodalFields<dim> & /*fields*/)
+  {
+    if (!(separation_check > 0))
+      return;
+    NodalFieldSet<dim>        &set      = state.field_set;
+    const unsigned int         n_bodies = set.body.size();
+    std::vector<NodalVector *> volumes;
+    for (unsigned int b = 0; b < n_bodies; ++b)
+      {
+        volumes.push_back(&set.per_body("contact volume", b, 0));
+        *volumes.back() = 0;
+      }
+    const CoreFields &f = state.particles.fields;
+    for_each_particle_in_stencil_order(
+      state.grid,
+      state.particles.handler,
+      [&](const std::size_t k, const auto &p, const GridCell<dim> &) {
+        const auto   props = p.get_properties();
+        const double V =
+          props[f.initial_volume] *
+          determinant(read_tensor<dim>(&props[f.deformation_gradient]));
+        NodalVector &volume =
+          *volumes[static_cast<unsigned int>(props[f.body])];
+        for (unsigned int e = state.stencil.begin[k];
+             e < state.stencil.begin[k + 1];
+             ++e)
+          volume.local_element(state.stencil.node[e]) += V * state.stencil.N[e];
+      });
+    for (NodalVector *volume : volumes)
+      volume->compress(VectorOperation::add);
   }
 
   template <int dim>
@@ -120,6 +182,10 @@ namespace dealmpm
     const unsigned int        n_owned  = set.core.mass.locally_owned_size();
     double                    taken = 0, by_friction = 0;
     std::vector<unsigned int> present;
+    std::vector<const NodalVector *> volumes;
+    if (separation_check > 0)
+      for (unsigned int b = 0; b < n_bodies; ++b)
+        volumes.push_back(&set.per_body("contact volume", b, 0));
     for (unsigned int i = 0; i < n_owned; ++i)
       {
         present.clear();
@@ -128,6 +194,16 @@ namespace dealmpm
             present.push_back(b);
         if (present.size() < 2)
           continue;
+        if (separation_check > 0)
+          {
+            // A gap at the node: the bodies' particles leave part of it
+            // empty, and they do not touch there yet.
+            double filled = 0;
+            for (const unsigned int b : present)
+              filled += volumes[b]->local_element(i);
+            if (filled < separation_check * full_volume.local_element(i))
+              continue;
+          }
         Tensor<1, dim> v_cm, gradient_sum;
         for (unsigned int d = 0; d < dim; ++d)
           {

@@ -53,11 +53,32 @@ namespace dealmpm
     FrictionalContact(
       const double                                            friction,
       std::map<std::pair<unsigned int, unsigned int>, double> pair_friction,
-      const Normals                                           normals)
+      const Normals                                           normals,
+      const double separation_check = 0)
       : friction(friction)
       , pair_friction(std::move(pair_friction))
       , normals(normals)
+      , separation_check(separation_check)
     {}
+
+    /** With the separation check: each body's particle volume at the
+     * nodes. */
+    std::vector<FieldDescription>
+    nodal_fields_per_body() const override
+    {
+      if (separation_check > 0)
+        return {{"contact volume", 1}};
+      return {};
+    }
+
+    /** With the separation check: each body's particle volume at the
+     * nodes, sum_p V_p N_ip. */
+    void
+    add_nodal_forces(const EffectContext<dim> &state,
+                     NodalFields<dim>         &fields) override;
+
+    void
+    grid_changed(const BackgroundGrid<dim> &grid) override;
 
     bool
     needs_body_fields() const override
@@ -147,6 +168,12 @@ namespace dealmpm
     double                                                  friction;
     std::map<std::pair<unsigned int, unsigned int>, double> pair_friction;
     Normals                                                 normals;
+    /** Contact at a node only where the bodies' particles fill this
+     * fraction of its volume, integral N_i dx (0: everywhere two bodies
+     * have mass): Uintah's volume constraint. */
+    double separation_check;
+    /** integral N_i dx over the grid, per locally owned node. */
+    NodalVector                    full_volume;
     const BoundaryConditions<dim> *conditions    = nullptr;
     double                         work          = 0;
     double                         friction_part = 0;
