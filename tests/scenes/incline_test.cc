@@ -198,9 +198,10 @@ TEST(Incline, FrictionlessBlockSlidesAtGSinTheta)
 }
 
 // A disk on a 60 deg incline with mu = 0.3 < tan(60 deg) / 3 slips at
-// g (sin theta - mu cos theta) = 7.0242 m/s^2. (Rolling, at 30 deg, wants
-// 2/3 g sin theta and gets 73 % of it at h = 1/80: PIC, which the wall's
-// friction needs, damps the disk's spin; see README, Effects.)
+// g (sin theta - mu cos theta) = 7.0242 m/s^2. (Rolling, at 30 deg with
+// mu >= tan(30 deg) / 3, wants 2/3 g sin theta; the disk does not roll:
+// it slides at the Coulomb rate while mu < tan theta and sticks above;
+// see README, Effects.)
 TEST(Incline, DiskSlipsAtTheCoulombRate)
 {
   const double end      = 0.4;
