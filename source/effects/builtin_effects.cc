@@ -344,6 +344,15 @@ namespace dealmpm
                             "0",
                             Patterns::Double(0),
                             "Coulomb's mu between it and the material.");
+          prm.declare_entry(
+            "Touch check",
+            "false",
+            Patterns::Bool(),
+            "true: it acts only on the nodes of particles whose domain "
+            "(half a particle spacing around them) reaches it, not on "
+            "every node with mass inside it: a disk rolling on it is held "
+            "at its contact point only, not on a cell-wide patch. Costs a "
+            "sweep over the particles.");
         },
         [](SceneReader &reader) -> std::unique_ptr<Effect<dim>> {
           typename RigidBody<dim>::Settings settings;
@@ -381,7 +390,8 @@ namespace dealmpm
           const std::vector<double> mask = reader.get_doubles("Direction mask");
           for (unsigned int d = 0; d < dim; ++d)
             settings.mask[d] = mask.at(d) != 0.;
-          settings.friction = reader.get_nonnegative("Friction coefficient");
+          settings.friction    = reader.get_nonnegative("Friction coefficient");
+          settings.touch_check = reader.get_bool("Touch check");
           return std::make_unique<RigidBody<dim>>(settings, reader);
         });
       r.add(

@@ -3,6 +3,7 @@
 #include <dealmpm/effects/coulomb_friction.h>
 #include <dealmpm/effects/expressions.h>
 #include <dealmpm/effects/rigid_body.h>
+#include <dealmpm/transfer/stencil_order.h>
 
 #include <algorithm>
 #include <cmath>
@@ -114,6 +115,8 @@ namespace dealmpm
         const Point<dim> x = state.grid.node_positions[i] - shift;
         if (settings.shape.distance(x) > 0.)
           continue;
+        if (settings.touch_check && !(touched.local_element(i) > 0.))
+          continue;
         Tensor<1, dim> v;
         for (unsigned int d = 0; d < dim; ++d)
           v[d] = fields.velocity[d].local_element(i);
@@ -146,6 +149,43 @@ namespace dealmpm
           fields.velocity_increment[d].update_ghost_values();
       }
     return given;
+  }
+
+  template <int dim>
+  void
+  RigidBody<dim>::add_nodal_forces(const EffectContext<dim> &state,
+                                   NodalFields<dim> & /*fields*/)
+  {
+    if (!settings.touch_check)
+      return;
+    if (touched.size() != state.grid.partitioner->size())
+      touched.reinit(state.grid.partitioner);
+    touched = 0;
+    // Where it will be at the end of the step, in its initial frame.
+    const double   t     = state.time + 0.5 * state.dt;
+    Tensor<1, dim> shift = moved;
+    velocity.set_time(t);
+    for (unsigned int d = 0; d < dim; ++d)
+      shift[d] +=
+        state.dt * settings.curve(t) * velocity.value(Point<dim>(), d);
+    const CoreFields &f = state.particles.fields;
+    for_each_particle_in_stencil_order(
+      state.grid,
+      state.particles.handler,
+      [&](const std::size_t k, const auto &p, const GridCell<dim> &) {
+        const auto   props = p.get_properties();
+        const double size =
+          std::pow(props[f.initial_volume] * determinant(read_tensor<dim>(
+                                               &props[f.deformation_gradient])),
+                   1. / dim);
+        if (settings.shape.distance(p.get_location() - shift) > 0.5 * size)
+          return;
+        for (unsigned int e = state.stencil.begin[k];
+             e < state.stencil.begin[k + 1];
+             ++e)
+          touched.local_element(state.stencil.node[e]) += 1.;
+      });
+    touched.compress(VectorOperation::add);
   }
 
   template <int dim>

@@ -64,9 +64,17 @@ namespace dealmpm
       LoadCurve                curve;
       std::array<bool, dim>    mask;
       double                   friction = 0;
+      /** Act only on the nodes of particles that reach it. */
+      bool touch_check = false;
     };
 
     RigidBody(const Settings &settings, const SceneReader &reader);
+
+    /** With the touch check: mark the nodes of the particles that reach
+     * it. */
+    void
+    add_nodal_forces(const EffectContext<dim> &state,
+                     NodalFields<dim>         &fields) override;
 
     void
     after_grid_update(const EffectContext<dim> &state,
@@ -123,6 +131,8 @@ namespace dealmpm
     Tensor<1, dim>      moved;
     Tensor<1, dim>      V_now; ///< its velocity in the current step
     Tensor<1, dim>      force; ///< of the last step, this rank's share
-    double              work = 0;
+    /** With the touch check: > 0 at the nodes of particles that reach it. */
+    NodalVector touched;
+    double      work = 0;
   };
 } // namespace dealmpm
