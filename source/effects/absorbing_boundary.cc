@@ -1,7 +1,5 @@
 #include <dealmpm/effects/absorbing_boundary.h>
 
-#include <map>
-#include <string>
 
 namespace dealmpm
 {
@@ -10,23 +8,13 @@ namespace dealmpm
   AbsorbingBoundary<dim>::setup(const EffectSetup<dim> &setup,
                                 SceneReader            &reader)
   {
-    std::map<unsigned int, std::string> listed;
-    for (const types::boundary_id id : ids)
-      listed[id] = "";
-    check_grid_has_ids(reader,
-                       "Boundary ids",
-                       listed,
-                       setup.grid.triangulation.get_boundary_ids());
-    for (const types::boundary_id id : ids)
-      {
-        const auto named = setup.conditions.names().find(id);
-        if (named != setup.conditions.names().end() && named->second != "free")
-          reader.fail("Boundary ids",
-                      "ids without a velocity condition (id " +
-                        std::to_string(id) + " is '" + named->second +
-                        "' in 'Grid/Boundary conditions'): the dashpots "
-                        "stand for the ground beyond a free face");
-      }
+    setup.conditions.require(reader,
+                             "Boundary ids",
+                             ids,
+                             setup.grid,
+                             "free",
+                             "the dashpots stand for the ground beyond a "
+                             "free face");
     grid_changed(setup.grid);
   }
 

@@ -13,27 +13,16 @@ namespace dealmpm
   BoundaryFriction<dim>::setup(const EffectSetup<dim> &setup,
                                SceneReader            &reader)
   {
-    const BoundaryConditions<dim>      &conditions = setup.conditions;
-    std::map<unsigned int, std::string> ids;
+    std::set<types::boundary_id> ids;
     for (const auto &item : coefficients)
-      ids[item.first] = "";
-    check_grid_has_ids(reader,
-                       "Coefficients",
-                       ids,
-                       setup.grid.triangulation.get_boundary_ids());
-    for (const auto &item : coefficients)
-      {
-        const auto  named = conditions.names().find(item.first);
-        const auto  id    = std::to_string(item.first);
-        std::string kind =
-          named == conditions.names().end() ? "free" : named->second;
-        if (kind != "slip")
-          reader.fail("Coefficients",
-                      "ids whose 'Grid/Boundary conditions' is 'slip' (id " +
-                        id + " is '" + kind +
-                        "'): friction acts where a slip wall holds the "
-                        "normal velocity");
-      }
+      ids.insert(item.first);
+    setup.conditions.require(reader,
+                             "Coefficients",
+                             ids,
+                             setup.grid,
+                             "slip",
+                             "friction acts where a slip wall holds the "
+                             "normal velocity");
     grid_changed(setup.grid);
   }
 

@@ -63,23 +63,13 @@ namespace dealmpm
                     "body numbers from 1 to the scene's 'Number of bodies' (" +
                       std::to_string(setup.n_bodies) + "), not " +
                       std::to_string(b + 1));
-    std::map<unsigned int, std::string> listed;
-    for (const types::boundary_id id : settings.boundary_ids)
-      listed[id] = "";
-    check_grid_has_ids(reader,
-                       "Boundary ids",
-                       listed,
-                       setup.grid.triangulation.get_boundary_ids());
-    for (const types::boundary_id id : settings.boundary_ids)
-      {
-        const auto named = setup.conditions.names().find(id);
-        if (named != setup.conditions.names().end() && named->second != "free")
-          reader.fail("Boundary ids",
-                      "ids without a velocity condition (id " +
-                        std::to_string(id) + " is '" + named->second +
-                        "' in 'Grid/Boundary conditions'): a wall that "
-                        "prescribes the velocity takes any load itself");
-      }
+    setup.conditions.require(reader,
+                             "Boundary ids",
+                             settings.boundary_ids,
+                             setup.grid,
+                             "free",
+                             "a wall that prescribes the velocity takes any "
+                             "load itself");
     bodies = &setup.bodies;
     grid_changed(setup.grid);
   }

@@ -317,6 +317,40 @@ namespace dealmpm
     return without;
   }
 
+  template <int dim>
+  void
+  BoundaryConditions<dim>::require(const SceneReader                  &reader,
+                                   const std::string                  &entry,
+                                   const std::set<types::boundary_id> &ids,
+                                   const BackgroundGrid<dim>          &grid,
+                                   const std::string &condition,
+                                   const std::string &why) const
+  {
+    std::map<unsigned int, std::string> listed;
+    for (const types::boundary_id id : ids)
+      listed[id] = "";
+    check_grid_has_ids(reader,
+                       entry,
+                       listed,
+                       grid.triangulation.get_boundary_ids());
+    for (const types::boundary_id id : ids)
+      {
+        const auto        named = condition_names.find(id);
+        const std::string kind =
+          named == condition_names.end() ? "free" : named->second;
+        if (kind == condition)
+          continue;
+        const std::string found =
+          "(id " + std::to_string(id) + " is '" + kind + "'";
+        reader.fail(entry,
+                    condition == "free" ?
+                      "ids without a velocity condition " + found +
+                        " in 'Grid/Boundary conditions'): " + why :
+                      "ids whose 'Grid/Boundary conditions' is '" + condition +
+                        "' " + found + "): " + why);
+      }
+  }
+
   template class BoundaryConditions<2>;
   template class BoundaryConditions<3>;
 } // namespace dealmpm

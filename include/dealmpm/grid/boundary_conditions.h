@@ -91,6 +91,17 @@ namespace dealmpm
       return condition_names;
     }
 
+    /** Fail on @p entry unless every id of @p ids is on @p grid and has
+     * the condition @p condition ("free" where the scene names none),
+     * saying @p why. */
+    void
+    require(const SceneReader                  &reader,
+            const std::string                  &entry,
+            const std::set<types::boundary_id> &ids,
+            const BackgroundGrid<dim>          &grid,
+            const std::string                  &condition,
+            const std::string                  &why) const;
+
     /** The ids whose condition constrains the nodes (slip, no-slip): walls
      * that particles do not cross (hold_particles_at_walls()). */
     std::set<types::boundary_id>
