@@ -4,6 +4,8 @@
 
 #include <dealmpm/core/simulation.h>
 
+#include <gtest/gtest.h>
+
 #include <memory>
 #include <random>
 #include <string>
@@ -28,6 +30,28 @@ namespace dealmpm::test
                                              "test.prm",
                                              shape,
                                              MPI_COMM_WORLD);
+  }
+
+  /** Advance to time @p end (the last step shortened to land on it). */
+  template <int dim>
+  Statistics
+  run_to(Simulation<dim> &simulation, const double end)
+  {
+    while (simulation.time() < end - 1e-12)
+      simulation.advance(
+        std::min(simulation.time_step(), end - simulation.time()));
+    return simulation.statistics();
+  }
+
+  /** An effect's statistics column by name (a test failure if none). */
+  inline double
+  effect_column(const Statistics &s, const std::string &name)
+  {
+    for (unsigned int c = 0; c < s.effect_columns.size(); ++c)
+      if (s.effect_columns[c] == name)
+        return s.effect_values[c];
+    ADD_FAILURE() << "no statistics column " << name;
+    return 0;
   }
 
   /** Move every particle to a random point of its cell. */

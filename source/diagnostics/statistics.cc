@@ -21,9 +21,17 @@ namespace dealmpm
         exact = effect.get();
     double            squared_error = 0, volume = 0, max_error = 0;
     const CoreFields &f = particles.fields;
-    // n, mass, momentum (3), kinetic, strain, gravitational, dissipated work
-    std::array<double, 9> sums{};
-    bool                  dissipates = false;
+    // n, mass, momentum (3), kinetic, strain, gravitational, dissipated
+    // work, the mass and momentum (3) effects removed
+    std::array<double, 13> sums{};
+    for (const auto &effect : effects)
+      {
+        sums[9] += effect->removed_mass();
+        const Tensor<1, dim> P = effect->removed_momentum();
+        for (unsigned int d = 0; d < dim; ++d)
+          sums[10 + d] += P[d];
+      }
+    bool dissipates = false;
     for (const auto &material : materials)
       dissipates = dissipates || material->dissipates();
     for (const auto &p : particles.handler)
@@ -75,21 +83,8 @@ namespace dealmpm
     s.gravitational_energy = sums[7];
     s.has_dissipated_work  = dissipates;
     s.dissipated_work      = sums[8];
-    // Removed mass and momentum (this rank's), then summed.
-    std::array<double, 4> removed{};
-    for (const auto &effect : effects)
-      {
-        removed[0] += effect->removed_mass();
-        const Tensor<1, dim> P = effect->removed_momentum();
-        for (unsigned int d = 0; d < dim; ++d)
-          removed[1 + d] += P[d];
-      }
-    if (!effects.empty())
-      Utilities::MPI::sum(ArrayView<const double>(removed.data(), 4),
-                          comm,
-                          ArrayView<double>(removed.data(), 4));
-    s.removed_mass     = removed[0];
-    s.removed_momentum = {{removed[1], removed[2], removed[3]}};
+    s.removed_mass         = sums[9];
+    s.removed_momentum     = {{sums[10], sums[11], sums[12]}};
     for (const auto &effect : effects)
       for (const auto &[name, value] : effect->statistics_columns())
         {

@@ -152,22 +152,36 @@ namespace dealmpm
   }
 
   template <int dim>
+  Tensor<1, dim>
+  RigidBody<dim>::velocity_at(const double t)
+  {
+    velocity.set_time(t);
+    const double   factor = settings.curve(t);
+    Tensor<1, dim> V;
+    for (unsigned int d = 0; d < dim; ++d)
+      V[d] = factor * velocity.value(Point<dim>(), d);
+    return V;
+  }
+
+  template <int dim>
+  void
+  RigidBody<dim>::grid_changed(const BackgroundGrid<dim> &grid)
+  {
+    if (settings.touch_check)
+      touched.reinit(grid.partitioner);
+  }
+
+  template <int dim>
   void
   RigidBody<dim>::add_nodal_forces(const EffectContext<dim> &state,
                                    NodalFields<dim> & /*fields*/)
   {
     if (!settings.touch_check)
       return;
-    if (touched.size() != state.grid.partitioner->size())
-      touched.reinit(state.grid.partitioner);
     touched = 0;
     // Where it will be at the end of the step, in its initial frame.
-    const double   t     = state.time + 0.5 * state.dt;
-    Tensor<1, dim> shift = moved;
-    velocity.set_time(t);
-    for (unsigned int d = 0; d < dim; ++d)
-      shift[d] +=
-        state.dt * settings.curve(t) * velocity.value(Point<dim>(), d);
+    const Tensor<1, dim> shift =
+      moved + state.dt * velocity_at(state.time + 0.5 * state.dt);
     const CoreFields &f = state.particles.fields;
     for_each_particle_in_stencil_order(
       state.grid,
@@ -193,11 +207,7 @@ namespace dealmpm
   RigidBody<dim>::after_grid_update(const EffectContext<dim> &state,
                                     NodalFields<dim>         &fields)
   {
-    const double t = state.time + 0.5 * state.dt;
-    velocity.set_time(t);
-    const double factor = settings.curve(t);
-    for (unsigned int d = 0; d < dim; ++d)
-      V_now[d] = factor * velocity.value(Point<dim>(), d);
+    V_now = velocity_at(state.time + 0.5 * state.dt);
     moved += state.dt * V_now;
     force = -hold(state, fields, V_now, true) / state.dt;
   }

@@ -142,12 +142,10 @@ namespace dealmpm
     const SymmetricTensor<2, dim> &stress,
     ArrayView<const double>        internal) const
   {
-    const ArrayView<const double> own =
-      make_array_view(internal.begin(), internal.begin() + n_inner);
     return (1. - internal[n_inner]) *
            inner->out_of_plane_stress(F,
                                       effective_stress(stress, internal),
-                                      own);
+                                      inner_variables(internal));
   }
 
   template <int dim>
@@ -157,12 +155,10 @@ namespace dealmpm
     const SymmetricTensor<2, dim> &stress,
     ArrayView<const double>        internal) const
   {
-    const ArrayView<const double> own =
-      make_array_view(internal.begin(), internal.begin() + n_inner);
     return (1. - internal[n_inner]) *
            inner->strain_energy_density(F,
                                         effective_stress(stress, internal),
-                                        own);
+                                        inner_variables(internal));
   }
 
   template <int dim>

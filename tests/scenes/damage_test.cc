@@ -48,16 +48,6 @@ namespace
     return s.str();
   }
 
-  double
-  column(const Statistics &s, const std::string &name)
-  {
-    for (unsigned int c = 0; c < s.effect_columns.size(); ++c)
-      if (s.effect_columns[c] == name)
-        return s.effect_values[c];
-    ADD_FAILURE() << "no column " << name;
-    return 0;
-  }
-
   /** Run until the first particle fails; its time, and the lowest
    * particle of the failed ones' row is above what is left. */
   double
@@ -66,7 +56,7 @@ namespace
     while (simulation.time() < T)
       {
         simulation.advance(simulation.time_step());
-        if (column(simulation.statistics(), count) > 0)
+        if (test::effect_column(simulation.statistics(), count) > 0)
           return simulation.time();
       }
     return -1;
@@ -84,19 +74,19 @@ TEST(Damage, BarBreaksAtItsTopWhenTheStrainReachesFailure)
   for (const auto &p : simulation->particle_set().handler)
     highest = std::max(highest, p.get_location()[1]);
   std::cout << "damage: the bar broke at t = " << t << " s (expected "
-            << expected << "), " << column(s, "eroded_particles")
+            << expected << "), " << test::effect_column(s, "eroded_particles")
             << " particles removed, the highest left at y = " << highest
             << std::endl;
   EXPECT_NEAR(t, expected, 0.015 * expected);
   // The top cell's two rows went, eight particles each.
-  EXPECT_EQ(column(s, "eroded_particles"), 16.);
+  EXPECT_EQ(test::effect_column(s, "eroded_particles"), 16.);
   EXPECT_LT(highest, L - 2 * l);
   EXPECT_GT(highest, L - 3 * l);
   // What left is in the eroded columns.
-  EXPECT_NEAR(s.mass + column(s, "eroded_mass"),
+  EXPECT_NEAR(s.mass + test::effect_column(s, "eroded_mass"),
               before.mass,
               1e-13 * before.mass);
-  EXPECT_NEAR(column(s, "eroded_mass"), 16 * rho * l * l, 1e-12);
+  EXPECT_NEAR(test::effect_column(s, "eroded_mass"), 16 * rho * l * l, 1e-12);
 
   // Nothing holds the rest: it falls, slowed by the damping (which takes
   // 0.3 of a free body's unbalanced force; measured 0.68 of free fall).
@@ -109,7 +99,7 @@ TEST(Damage, BarBreaksAtItsTopWhenTheStrainReachesFailure)
             << later.momentum[1] << " (free fall " << -free_fall << ")"
             << std::endl;
   EXPECT_LT(later.momentum[1], -0.6 * free_fall);
-  EXPECT_EQ(column(later, "eroded_particles"), 16.);
+  EXPECT_EQ(test::effect_column(later, "eroded_particles"), 16.);
 }
 
 TEST(Damage, KeptFailedParticlesCarryNoStressAndKeepTheMass)
@@ -119,7 +109,8 @@ TEST(Damage, KeptFailedParticlesCarryNoStressAndKeepTheMass)
   const double     t = run_to_first_failure(*simulation, "failed_particles");
   const Statistics s = simulation->statistics();
   std::cout << "damage: kept, first failure at t = " << t << " s, "
-            << column(s, "failed_particles") << " failed" << std::endl;
+            << test::effect_column(s, "failed_particles") << " failed"
+            << std::endl;
   EXPECT_GT(t, 0.);
   EXPECT_EQ(s.mass, before.mass);
   EXPECT_EQ(s.n_particles, before.n_particles);
@@ -134,7 +125,7 @@ TEST(Damage, KeptFailedParticlesCarryNoStressAndKeepTheMass)
         for (unsigned int i = 0; i < 3; ++i)
           EXPECT_EQ(p.get_properties()[f.stress + i], 0.);
       }
-  EXPECT_EQ(failed, column(s, "failed_particles"));
+  EXPECT_EQ(failed, test::effect_column(s, "failed_particles"));
 }
 
 // Undamped (FLIP), the energy balance closes through the break: the
@@ -160,9 +151,10 @@ TEST(Damage, EnergyBalanceClosesThroughTheBreak)
       std::cout << "damage (" << failed << "): energy balance drift "
                 << (E - E0) / scale << " of kinetic + strain energy " << scale
                 << " J, dissipated " << s.dissipated_work << " J, eroded "
-                << column(s, "eroded_energy") << " J" << std::endl;
+                << test::effect_column(s, "eroded_energy") << " J" << std::endl;
       EXPECT_GT(t, 0.);
-      EXPECT_GT(s.dissipated_work + column(s, "eroded_energy"), 0.);
+      EXPECT_GT(s.dissipated_work + test::effect_column(s, "eroded_energy"),
+                0.);
       EXPECT_NEAR(E, E0, 0.02 * scale);
     }
 }

@@ -20,24 +20,6 @@ namespace
 {
   constexpr double g = 9.81;
 
-  void
-  run_to(Simulation<2> &simulation, const double end)
-  {
-    while (simulation.time() < end - 1e-12)
-      simulation.advance(
-        std::min(simulation.time_step(), end - simulation.time()));
-  }
-
-  double
-  column(const Statistics &s, const std::string &name)
-  {
-    for (unsigned int c = 0; c < s.effect_columns.size(); ++c)
-      if (s.effect_columns[c] == name)
-        return s.effect_values[c];
-    ADD_FAILURE() << "no column " << name;
-    return 0;
-  }
-
   double
   centre_of_mass_x(Simulation<2> &simulation)
   {
@@ -114,19 +96,19 @@ subsection Body 1
   set Upper corner = 1, 1
 end
 )");
-  run_to(*simulation, 1.);
+  test::run_to(*simulation, 1.);
   const Statistics s        = simulation->statistics();
   const double     M        = 1e6 * 0.7 / (1.3 * 0.4);
   const double     expected = M * 0.009 / 1.;
-  const double     force    = column(s, "rigid_force_y");
+  const double     force    = test::effect_column(s, "rigid_force_y");
   std::cout << "rigid body: punch force " << force << " N/m (oedometer "
             << expected << "), displacement "
-            << column(s, "rigid_displacement_y") << " m, sideways "
-            << column(s, "rigid_force_x") << " N/m" << std::endl;
+            << test::effect_column(s, "rigid_displacement_y") << " m, sideways "
+            << test::effect_column(s, "rigid_force_x") << " N/m" << std::endl;
   // The midpoint rule is exact but in the step across the ramp's kink.
-  EXPECT_NEAR(column(s, "rigid_displacement_y"), -0.009, 1e-8);
+  EXPECT_NEAR(test::effect_column(s, "rigid_displacement_y"), -0.009, 1e-8);
   EXPECT_NEAR(force, expected, 0.03 * expected);
-  EXPECT_NEAR(column(s, "rigid_force_x"), 0, 1e-6 * expected);
+  EXPECT_NEAR(test::effect_column(s, "rigid_force_x"), 0, 1e-6 * expected);
 }
 
 namespace
@@ -162,7 +144,8 @@ namespace
       {
         simulation->advance(
           std::min(simulation->time_step(), 0.5 - simulation->time()));
-        normal_sum += column(simulation->statistics(), "rigid_force_y");
+        normal_sum +=
+          test::effect_column(simulation->statistics(), "rigid_force_y");
         ++n_steps;
       }
     return {centre_of_mass_x(*simulation) - x0, -normal_sum / n_steps};
@@ -230,9 +213,7 @@ TEST(RigidBody, DiskRollsDownARigidInclineWithTheTouchCheck)
           << " set Radius = 0.1\nend\n";
     auto         simulation = test::make_simulation<2>(scene.str());
     const double x0         = centre_of_mass_x(*simulation);
-    while (simulation->time() < end - 1e-12)
-      simulation->advance(
-        std::min(simulation->time_step(), end - simulation->time()));
+    test::run_to(*simulation, end);
     return (centre_of_mass_x(*simulation) - x0) / rolling;
   };
   const double patch = roll(80, false), coarse = roll(80, true),

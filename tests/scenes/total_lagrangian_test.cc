@@ -39,15 +39,6 @@ namespace
   }
 
   /** Run to @p end; the final statistics. */
-  Statistics
-  run_to(Simulation<2> &simulation, const double end)
-  {
-    while (simulation.time() < end - 1e-12)
-      simulation.advance(
-        std::min(simulation.time_step(), end - simulation.time()));
-    return simulation.statistics();
-  }
-
   double
   vortex_error(const unsigned int n, const std::string &kernel)
   {
@@ -58,7 +49,7 @@ namespace
          << "subsection Time\n set CFL number = 0.2\nend\n";
     auto simulation = test::make_simulation<2>(
       scene_text("generalized_vortex.prm", more.str()));
-    const Statistics end = run_to(*simulation, 1.);
+    const Statistics end = test::run_to(*simulation, 1.);
     EXPECT_EQ(simulation->n_lost_particles(), 0) << kernel;
     return end.error_L2;
   }
@@ -91,7 +82,7 @@ TEST(TotalLagrangian, ManufacturedSolutionConvergesWithLinearShapeFunctions)
     auto simulation = test::make_simulation<2>(
       scene_text("manufactured_solution_2d.prm", more.str()));
     EXPECT_LT(simulation->statistics().error_max, 1e-15);
-    return run_to(*simulation, 0.02).error_L2;
+    return test::run_to(*simulation, 0.02).error_L2;
   };
   const double e16 = error(16), e32 = error(32), e64 = error(64);
   std::cout << "manufactured solution, total Lagrangian, linear: L2 error at "
@@ -136,7 +127,7 @@ TEST(TotalLagrangian, APICUsesTheReferencePositions)
        << "subsection MPM\n set Velocity update = APIC\nend\n";
   auto simulation =
     test::make_simulation<2>(scene_text("generalized_vortex.prm", more.str()));
-  const double error = run_to(*simulation, 1.).error_L2;
+  const double error = test::run_to(*simulation, 1.).error_L2;
   std::cout << "generalized vortex A = 1, total Lagrangian, APIC, 48 cells: "
             << error << std::endl;
   // FLIP: 0.116, PIC: 0.145.
@@ -153,7 +144,7 @@ TEST(TotalLagrangian, ParticlesKeepTheirCellsAndTheStepFollowsTheDeformation)
   for (const auto &p : simulation->particle_set().handler)
     cell_at_start[p.get_id()] = p.get_surrounding_cell()->id();
   const double dt_start = simulation->time_step();
-  run_to(*simulation, 0.5);
+  test::run_to(*simulation, 0.5);
   double largest_move = 0;
   for (const auto &p : simulation->particle_set().handler)
     {

@@ -48,14 +48,6 @@ namespace
     return s.str();
   }
 
-  void
-  run_to(Simulation<2> &simulation, const double end)
-  {
-    while (simulation.time() < end - 1e-12)
-      simulation.advance(
-        std::min(simulation.time_step(), end - simulation.time()));
-  }
-
   /** Volume-weighted mean of the particles' stress (xx, yy, xy). */
   std::array<double, 3>
   mean_stress(Simulation<2> &simulation)
@@ -153,7 +145,7 @@ TEST(Traction, UniformPressureGivesMinusPInTheBlock)
 {
   auto simulation =
     test::make_simulation<2>(pressed_block(", local damping", false));
-  run_to(*simulation, 0.3);
+  test::run_to(*simulation, 0.3);
   const auto s = mean_stress(*simulation);
   std::cout << "traction: pressed block mean stress " << s[0] / p0 << ", "
             << s[1] / p0 << ", " << s[2] / p0 << " of p" << std::endl;
@@ -167,7 +159,7 @@ TEST(Traction, UniformPressureGivesMinusPInTheBlock)
 TEST(Traction, LoadWorkIsStrainAndKineticEnergy)
 {
   auto simulation = test::make_simulation<2>(pressed_block("", false, "FLIP"));
-  run_to(*simulation, 0.1);
+  test::run_to(*simulation, 0.1);
   const Statistics s = simulation->statistics();
   const double     W = simulation->external_work();
   std::cout << "traction: work " << W << " J, energy "
@@ -192,7 +184,7 @@ TEST(Traction, FollowerPressureExertsNoTorque)
         test::make_simulation<2>(pressed_block("", follower, "FLIP"));
       spin(*simulation, 2);
       const double L0 = angular_momentum(*simulation);
-      run_to(*simulation, 0.25);
+      test::run_to(*simulation, 0.25);
       change[follower ? 0 : 1] =
         std::abs(angular_momentum(*simulation) - L0) / L0;
       if (follower)
@@ -247,7 +239,7 @@ subsection Body 1
   set Upper corner = 1, 0.1
 end
 )");
-  run_to(*simulation, 0.4);
+  test::run_to(*simulation, 0.4);
   const auto s = mean_stress(*simulation);
   std::cout << "traction: bar pushed through a grid boundary, sigma_xx "
             << s[0] / p0 << " of the traction" << std::endl;

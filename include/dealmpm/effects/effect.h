@@ -61,8 +61,10 @@ namespace dealmpm
    * no timer section. Effects act at named points of the step (the stages
    * in schemes/stages.h call them), on the locally owned nodes: after P2G
    * (external forces, then adjustments of the total force), after the grid
-   * update and its boundary conditions (where contact and coupling will act
-   * on v*), and after G2P. The hooks may change the effect's own state (its
+   * update and its boundary conditions (contact, rigid bodies, dashpots act
+   * on v*), after USF's and MUSL's re-map, and at the end of the step
+   * (erosion). Before any of that an effect may replace materials
+   * (wrap_materials). The hooks may change the effect's own state (its
    * accumulators).
    */
   template <int dim>
@@ -174,7 +176,7 @@ namespace dealmpm
                 NodalFields<dim> & /*fields*/)
     {}
 
-    /** After G2P moved the particles (erosion, rigid bodies). */
+    /** At the end of the step, after G2P and the stress update (erosion). */
     virtual void
     after_g2p(const EffectContext<dim> & /*state*/,
               ParticleSet<dim> & /*particles*/)

@@ -70,6 +70,15 @@ namespace dealmpm
 
     RigidBody(const Settings &settings, const SceneReader &reader);
 
+    void
+    setup(const EffectSetup<dim> &setup, SceneReader &) override
+    {
+      grid_changed(setup.grid);
+    }
+
+    void
+    grid_changed(const BackgroundGrid<dim> &grid) override;
+
     /** With the touch check: mark the nodes of the particles that reach
      * it. */
     void
@@ -119,6 +128,10 @@ namespace dealmpm
     }
 
   private:
+    /** Its velocity at time @p t: the expressions times the load curve. */
+    Tensor<1, dim>
+    velocity_at(double t);
+
     /** Hold the nodes inside it; returns the momentum given to them. */
     Tensor<1, dim>
     hold(const EffectContext<dim> &state,

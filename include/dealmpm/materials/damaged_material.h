@@ -104,6 +104,13 @@ namespace dealmpm
     }
 
   private:
+    /** The wrapped model's own internal variables. */
+    ArrayView<const double>
+    inner_variables(const ArrayView<const double> &internal) const
+    {
+      return make_array_view(internal.begin(), internal.begin() + n_inner);
+    }
+
     /** The effective stress: the stored one while undamaged. */
     SymmetricTensor<2, dim>
     effective_stress(const SymmetricTensor<2, dim> &stress,
