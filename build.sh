@@ -8,7 +8,7 @@ cd "$(dirname "$0")"
 mode=${1:-run}
 case "$mode" in run|test) ;; *) echo "usage: ./build.sh [run|test]" >&2; exit 1 ;; esac
 
-packages="cmake g++ make libdeal.ii-dev libeigen3-dev libgtest-dev openmpi-bin libopenmpi-dev ccache python3 python3-matplotlib clang-format"
+packages="cmake g++ binutils make libdeal.ii-dev libeigen3-dev libgtest-dev openmpi-bin libopenmpi-dev ccache python3 python3-matplotlib clang-format"
 missing=""
 for p in $packages; do
   # No "| grep -q": under pipefail its early exit can fail the pipeline.

@@ -58,6 +58,7 @@ namespace dealmpm
     MethodSettings::declare_parameters(prm);
     CheckSettings::declare_parameters(prm);
     OutputSettings::declare_parameters(prm);
+    LoadBalanceSettings::declare_parameters(prm);
   }
 
   template <int dim>
@@ -76,6 +77,15 @@ namespace dealmpm
     read_scene(reader, shape);
     build_grid(reader);
     create_particles(reader);
+    if (run_settings.load_balance.enabled)
+      {
+        particle_weights =
+          connect_particle_weights(grid.triangulation,
+                                   particles->handler,
+                                   run_settings.load_balance.particle_weight);
+        // The cells were shared by count; a compact body sat on few ranks.
+        repartition();
+      }
     for (unsigned int e = 0; e < effects.size(); ++e)
       {
         for (const FieldDescription &field :
@@ -121,10 +131,11 @@ namespace dealmpm
   void
   Simulation<dim>::read_scene(SceneReader &reader, const SceneShape &shape)
   {
-    run_settings.time   = TimeStepping::read(reader);
-    run_settings.method = MethodSettings::read(reader);
-    run_settings.checks = CheckSettings::read(reader);
-    run_settings.output = OutputSettings::read(reader);
+    run_settings.time         = TimeStepping::read(reader);
+    run_settings.method       = MethodSettings::read(reader);
+    run_settings.checks       = CheckSettings::read(reader);
+    run_settings.output       = OutputSettings::read(reader);
+    run_settings.load_balance = LoadBalanceSettings::read(reader);
     {
       MaterialSections<dim> read =
         read_material_sections<dim>(reader, shape.n_materials);
@@ -374,6 +385,33 @@ namespace dealmpm
     particles->handler.prepare_for_coarsening_and_refinement();
     grid.triangulation.execute_coarsening_and_refinement();
     particles->handler.unpack_after_coarsening_and_refinement();
+    rebuild_after_grid_change();
+  }
+
+  template <int dim>
+  void
+  Simulation<dim>::repartition()
+  {
+    if (Utilities::MPI::n_mpi_processes(comm) == 1)
+      return;
+    // Total Lagrangian's reference stencil holds local node indices of the
+    // grid it was made on.
+    if (total_lagrangian() && stencil.reference)
+      throw RunError(step_and_time(loop.step, loop.time) +
+                     ": the grid cannot be repartitioned under 'MPM/"
+                     "Formulation = total Lagrangian' once its reference "
+                     "stencil is made");
+    particles->handler.prepare_for_coarsening_and_refinement();
+    grid.triangulation.repartition();
+    particles->handler.unpack_after_coarsening_and_refinement();
+    rebuild_after_grid_change();
+    ++loop.repartitions;
+  }
+
+  template <int dim>
+  void
+  Simulation<dim>::rebuild_after_grid_change()
+  {
     // The documented order: the grid's own data, then what is cached from
     // it (the shape function's tables, the boundary nodes, the nodal
     // vectors); the stencil is made anew by every step.
@@ -388,7 +426,8 @@ namespace dealmpm
       effect->grid_changed(grid);
     nodal.reinit(grid.partitioner, bodies.size());
     // Smaller cells, smaller stable step.
-    particle_check  = check_particles(grid, materials, *particles);
+    particle_check =
+      check_particles(grid, materials, *particles, total_lagrangian());
     max_signal_rate = Utilities::MPI::max(particle_check.max_signal_rate, comm);
   }
 

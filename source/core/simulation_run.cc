@@ -132,6 +132,7 @@ namespace dealmpm
         throw with_last_output(error);
       }
     loop.particle_steps += n_particles;
+    balance_load();
 
     const bool output_due =
       finished() || (s.output.interval > 0 &&
@@ -164,6 +165,20 @@ namespace dealmpm
         write_output(dt, now, work, progress);
       }
     progress.update(loop.step, loop.time, dt, s.time.end_time, n_particles);
+  }
+
+  template <int dim>
+  void
+  Simulation<dim>::balance_load()
+  {
+    const LoadBalanceSettings &s = run_settings.load_balance;
+    if (!s.enabled || loop.step % s.check_interval != 0 ||
+        Utilities::MPI::n_mpi_processes(comm) == 1 || total_lagrangian())
+      return;
+    TimerOutput::Scope t(*computing_timer, "load balance");
+    if (particle_balance(particles->handler, comm).imbalance() >
+        s.imbalance_limit)
+      repartition();
   }
 
   template <int dim>
@@ -255,6 +270,9 @@ namespace dealmpm
     Utilities::System::MemoryStats used;
     Utilities::System::get_memory_stats(used);
     pcout << ", peak memory " << used.VmHWM / 1024 << " MB on rank 0";
+    if (loop.repartitions > 0)
+      pcout << ", " << static_cast<long long>(loop.repartitions)
+            << " repartition(s) for load balance";
     if (loop.held_particles > 0)
       pcout << ", " << static_cast<long long>(loop.held_particles)
             << " time(s) a particle was put back on a wall";

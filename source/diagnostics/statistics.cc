@@ -103,6 +103,10 @@ namespace dealmpm
                                Utilities::MPI::sum(volume, comm));
         s.error_max = Utilities::MPI::max(max_error, comm);
       }
+    const ParticleBalance balance = particle_balance(particles.handler, comm);
+    s.particles_per_rank_min      = balance.min;
+    s.particles_per_rank_max      = balance.max;
+    s.particles_per_rank_mean     = balance.mean;
     return s;
   }
 

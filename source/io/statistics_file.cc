@@ -30,7 +30,8 @@ namespace dealmpm
     header +=
       ",total_energy,"
       "external_work,energy_drift,momentum_drift,mass_loss,min_J,max_cfl,"
-      "lost_particles,wall_time";
+      "lost_particles,wall_time,particles_per_rank_min,"
+      "particles_per_rank_max,particles_per_rank_mean";
     if (errors)
       header += ",error_L2,error_max";
     for (const std::string &name : first.effect_columns)
@@ -89,7 +90,8 @@ namespace dealmpm
     out << ',' << s.total_energy() << ',' << external_work << ','
         << a.energy_drift << ',' << a.momentum_drift << ',' << a.mass_loss
         << ',' << a.min_J << ',' << a.max_cfl << ',' << n_lost_particles << ','
-        << wall_time;
+        << wall_time << ',' << s.particles_per_rank_min << ','
+        << s.particles_per_rank_max << ',' << s.particles_per_rank_mean;
     if (errors)
       out << ',' << s.error_L2 << ',' << s.error_max;
     for (const double value : s.effect_values)

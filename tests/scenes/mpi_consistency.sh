@@ -18,7 +18,12 @@
 #   its plate, without erosion: the mixed-cell split reads nodes of both
 #   ranks; it read the nodal velocity by global index and crashed on
 #   rank 1 before issue 13).
-# Every run must have particles on both ranks.
+# - load balance: the cube dropped (all on one rank when cells were shared
+#   by count) holds at most 1.2 times the mean particles per rank on 2 and
+#   3 ranks; a block sliding through the grid, repartitioned whenever
+#   the imbalance passes 1.05, on 1, 2 and 3 ranks (nothing lost or
+#   duplicated: n_particles and lost_particles are compared).
+# Every run must have particles on every rank.
 set -euo pipefail
 dealmpm=$1 compare=$2 mpirun=$3 disks=$4 column=$5
 work=$(mktemp -d)
@@ -26,16 +31,27 @@ trap 'rm -rf "$work"' EXIT
 flags=(--oversubscribe)
 [ "$(id -u)" = 0 ] && flags+=(--allow-run-as-root)
 
-compare_ranks() { # name scene overrides...
+ranks=(1 2)
+compare_ranks() { # name scene overrides... (on each of ${ranks[@]})
   local name=$1 scene=$2; shift 2
-  for n in 1 2; do
+  for n in "${ranks[@]}"; do
     "$mpirun" "${flags[@]}" -np $n "$dealmpm" "$scene" -s "Output/Directory=$work/$name$n" \
       -s "Output/Write particles=false" -s "Output/Progress interval=0" "$@" > "$work/$name$n.log"
   done
-  grep -q "2 rank(s) ([1-9][0-9]* to" "$work/${name}2.log" \
-    || { echo "$name: a rank without particles:"; head -1 "$work/${name}2.log"; exit 1; }
-  echo -n "$name: "
-  "$compare" "$work/${name}1/statistics.csv" "$work/${name}2/statistics.csv" 1e-9
+  for n in "${ranks[@]:1}"; do
+    grep -q "$n rank(s) ([1-9][0-9]* to" "$work/$name$n.log" \
+      || { echo "$name: a rank without particles:"; head -1 "$work/$name$n.log"; exit 1; }
+    echo -n "$name, 1 vs $n ranks: "
+    "$compare" "$work/${name}1/statistics.csv" "$work/$name$n/statistics.csv" 1e-9
+  done
+}
+# Every row's particles_per_rank_max / particles_per_rank_mean <= limit.
+balanced() { # statistics.csv limit
+  awk -F, -v limit="$2" 'NR == 1 { for (c = 1; c <= NF; ++c) col[$c] = c; next }
+    { r = $col["particles_per_rank_max"] / $col["particles_per_rank_mean"];
+      if (r > worst) worst = r }
+    END { printf "  largest max / mean particles per rank: %.3f (limit %s)\n", worst, limit;
+          exit !(worst <= limit) }' "$1"
 }
 
 fast=(-s "Body 1/Velocity=0.5, 0.5" -s "Body 2/Velocity=-0.3, -0.4" -s "Time/End time=0.6" -s "Output/Interval=0.05")
@@ -59,3 +75,16 @@ compare_ranks cantilever_tl "$(dirname "$disks")/hard-cases/cantilever.prm" -s "
   -s "Grid/Cells=32, 8"
 compare_ranks mixed "$(dirname "$disks")/projectile_plate.prm" -s "Effects=" -s "Time/End time=2e-5" \
   -s "Output/Interval=5e-6"
+
+dir=$(dirname "$disks")
+ranks=(1 2 3)
+compare_ranks cube "$dir/cube_drop_3d.prm" -s "Time/End time=0.15" -s "Output/Interval=0.01"
+# Checked every 10 steps, and empty cells weigh 1: a little above the 1.2
+# that triggers a repartition is possible between checks.
+for n in 2 3; do balanced "$work/cube$n/statistics.csv" 1.25; done
+compare_ranks sliding "$dir/../tests/data/sliding_block.prm" -s "Load balance/Check interval=1" \
+  -s "Load balance/Imbalance limit=1.05"
+# The start's repartition and at least two more on the way.
+n=$(grep -o "[0-9]* repartition(s)" "$work/sliding3.log" | cut -d' ' -f1)
+echo "sliding: ${n:-0} repartitions on 3 ranks"
+[ "${n:-0}" -ge 3 ] || { echo "sliding: the partition did not follow the block"; exit 1; }

@@ -46,7 +46,7 @@ for p in problems:
     print("FAIL:", p)
 sys.exit(1 if problems else 0)
 PY
-header="step,time,dt,n_particles,mass,momentum_x,momentum_y,kinetic_energy,strain_energy,gravitational_energy,total_energy,external_work,energy_drift,momentum_drift,mass_loss,min_J,max_cfl,lost_particles,wall_time"
+header="step,time,dt,n_particles,mass,momentum_x,momentum_y,kinetic_energy,strain_energy,gravitational_energy,total_energy,external_work,energy_drift,momentum_drift,mass_loss,min_J,max_cfl,lost_particles,wall_time,particles_per_rank_min,particles_per_rank_max,particles_per_rank_mean"
 [ "$(head -1 out/statistics.csv)" = "$header" ] || fail "statistics header: $(head -1 out/statistics.csv)"
 [ "$(wc -l < out/statistics.csv)" = 4 ] || fail "statistics.csv should have 3 rows"
 [ "$(head -1 out/particles_00002.csv)" = "id,x,y,vx,vy,ux,uy,J,body" ] || fail "particle CSV header"

@@ -27,6 +27,7 @@ namespace dealmpm
     double          lost_particles = 0; ///< all ranks
     double          held_particles = 0; ///< put back on a wall, all ranks
     double          last_dt = 0; ///< the last step's size (Newmark needs it)
+    double          repartitions = 0; ///< of the grid among the ranks
     OutputRecord    output;
     AccuracyMonitor accuracy;
     std::vector<std::vector<double>> effect_states;
@@ -35,9 +36,10 @@ namespace dealmpm
     void
     serialize(Archive &archive, const unsigned int /*version*/)
     {
-      archive &time &step &next_output &particle_steps         &stepping_time;
-      archive &lost_particles &held_particles &last_dt &output &accuracy;
-      archive                                                  &effect_states;
+      archive &time &step &next_output &particle_steps &stepping_time;
+      archive &lost_particles &held_particles &last_dt &repartitions &output;
+      archive                                                        &accuracy;
+      archive &effect_states;
     }
 
     /** As text with every double to the last bit. */

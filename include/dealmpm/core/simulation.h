@@ -13,6 +13,7 @@
 #include <dealmpm/effects/effect_list.h>
 #include <dealmpm/grid/background_grid.h>
 #include <dealmpm/grid/boundary_conditions.h>
+#include <dealmpm/grid/load_balance.h>
 #include <dealmpm/grid/nodal_field_set.h>
 #include <dealmpm/io/output_settings.h>
 #include <dealmpm/io/output_writer.h>
@@ -47,10 +48,11 @@ namespace dealmpm
   /** A run's settings, each section read by the part it belongs to. */
   struct RunSettings
   {
-    TimeStepping   time;
-    MethodSettings method;
-    CheckSettings  checks;
-    OutputSettings output;
+    TimeStepping        time;
+    MethodSettings      method;
+    CheckSettings       checks;
+    OutputSettings      output;
+    LoadBalanceSettings load_balance;
   };
 
   /**
@@ -104,6 +106,13 @@ namespace dealmpm
      */
     void
     change_grid(const std::function<void(Triangulation<dim> &)> &set_flags);
+
+    /** Share the cells among the ranks by their particle weights (see
+     * LoadBalanceSettings), the particles going with their cells, and
+     * rebuild what change_grid() rebuilds. Collective; nothing changes on
+     * one rank. */
+    void
+    repartition();
 
     /** The CFL time step of the current state (or the fixed one). */
     double
@@ -216,6 +225,14 @@ namespace dealmpm
     check_total_lagrangian(SceneReader &reader);
     void
     relocate_particles();
+    /** After the cells changed (refinement or repartition): rebuild every
+     * part that keeps grid data, in change_grid()'s order. */
+    void
+    rebuild_after_grid_change();
+    /** In the loop: repartition when the particle imbalance passes the
+     * limit (checked every few steps). */
+    void
+    balance_load();
     /** One step of the loop with its checks and, when due, an output. */
     void
     take_step(const double dt, Progress &progress);
@@ -260,11 +277,14 @@ namespace dealmpm
     std::vector<std::string>                    effect_names;
     std::vector<Body<dim>>                      bodies;
     std::unique_ptr<ParticleSet<dim>>           particles;
-    NodalFieldSet<dim>                          nodal;
-    Kernel<dim>                                 kernel;
-    MemoryEstimate                              memory;
-    Stencil<dim>                                stencil;
-    std::vector<Stage<dim>>                     stages;
+    /** The cells' particle weights on the triangulation's weight signal;
+     * after particles, so that it is disconnected before they go. */
+    boost::signals2::scoped_connection particle_weights;
+    NodalFieldSet<dim>                 nodal;
+    Kernel<dim>                        kernel;
+    MemoryEstimate                     memory;
+    Stencil<dim>                       stencil;
+    std::vector<Stage<dim>>            stages;
     /** Only when the scene's materials differ in stiffness. */
     std::unique_ptr<MixedCellSplit<dim>> mixed_cells;
     double                               mass_threshold = 0;

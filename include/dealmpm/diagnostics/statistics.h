@@ -2,6 +2,7 @@
 
 #include <dealmpm/effects/effect.h>
 #include <dealmpm/grid/background_grid.h>
+#include <dealmpm/grid/load_balance.h>
 #include <dealmpm/materials/material.h>
 #include <dealmpm/particles/particle_set.h>
 
@@ -39,6 +40,11 @@ namespace dealmpm
      * summed over the ranks: names and values. */
     std::vector<std::string> effect_columns;
     std::vector<double>      effect_values;
+    /** Particles per rank: the fewest, the most and the mean (the load
+     * balance; the only numbers that depend on the rank count). */
+    double particles_per_rank_min  = 0;
+    double particles_per_rank_max  = 0;
+    double particles_per_rank_mean = 0;
 
     double
     total_energy() const
@@ -58,7 +64,9 @@ namespace dealmpm
       archive &removed_mass &removed_momentum[0] & removed_momentum[1] &
         removed_momentum[2];
       // Needs <boost/serialization/{vector,string}.hpp>.
-      archive &effect_columns &effect_values;
+      archive &effect_columns         &effect_values;
+      archive &particles_per_rank_min &particles_per_rank_max;
+      archive                         &particles_per_rank_mean;
     }
   };
 

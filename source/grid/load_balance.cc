@@ -1,0 +1,117 @@
+#include <deal.II/base/mpi.h>
+
+#include <dealmpm/grid/load_balance.h>
+
+namespace dealmpm
+{
+  void
+  LoadBalanceSettings::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Load balance");
+    prm.declare_entry(
+      "Enabled",
+      "true",
+      Patterns::Bool(),
+      "On more than one rank: share the cells so that each rank holds about "
+      "as many particles as the others (at the start and whenever the "
+      "imbalance passes the limit). 'false': cells are shared by count, "
+      "which puts a compact body on few ranks.");
+    prm.declare_entry(
+      "Particle weight",
+      "10",
+      Patterns::Integer(1, 100000),
+      "A cell weighs 1 + this times its particles when the cells are "
+      "shared: what a particle costs per step compared with an empty cell.");
+    prm.declare_entry(
+      "Imbalance limit",
+      "1.2",
+      Patterns::Double(),
+      "Repartition when the most loaded rank holds more than this times the "
+      "mean number of particles per rank (> 1).");
+    prm.declare_entry("Check interval",
+                      "10",
+                      Patterns::Integer(1),
+                      "Steps between imbalance checks (one reduction each).");
+    prm.leave_subsection();
+  }
+
+  LoadBalanceSettings
+  LoadBalanceSettings::read(SceneReader &reader)
+  {
+    LoadBalanceSettings s;
+    SectionScope        section(reader, "Load balance");
+    s.enabled         = reader.get_bool("Enabled");
+    s.particle_weight = reader.get_integer("Particle weight");
+    s.imbalance_limit = reader.get_double("Imbalance limit");
+    s.check_interval  = reader.get_integer("Check interval");
+    if (!(s.imbalance_limit > 1))
+      reader.fail("Imbalance limit", "a number > 1");
+    return s;
+  }
+
+  template <int dim>
+  ParticleBalance
+  particle_balance(const Particles::ParticleHandler<dim> &handler,
+                   const MPI_Comm                         comm)
+  {
+    const double local = handler.n_locally_owned_particles();
+    // One reduction: min of (n, -n).
+    double extremes[2] = {local, -local};
+    Utilities::MPI::min(ArrayView<const double>(extremes, 2),
+                        comm,
+                        ArrayView<double>(extremes, 2));
+    ParticleBalance balance;
+    balance.min  = extremes[0];
+    balance.max  = -extremes[1];
+    balance.mean = double(handler.n_global_particles()) /
+                   Utilities::MPI::n_mpi_processes(comm);
+    return balance;
+  }
+
+  template <int dim>
+  boost::signals2::connection
+  connect_particle_weights(parallel::distributed::Triangulation<dim> &tria,
+                           const Particles::ParticleHandler<dim>     &handler,
+                           const unsigned int particle_weight)
+  {
+    using CellStatus = typename Triangulation<dim>::CellStatus;
+    return tria.signals.weight.connect(
+      [&handler,
+       particle_weight](const typename Triangulation<dim>::cell_iterator &cell,
+                        const CellStatus status) -> unsigned int {
+        types::particle_index n = 0;
+        switch (status)
+          {
+            case CellStatus::CELL_PERSIST:
+              n = handler.n_particles_in_cell(cell);
+              break;
+            case CellStatus::CELL_REFINE:
+              // Called once per child, with the parent: a child's share.
+              n = (handler.n_particles_in_cell(cell) +
+                   GeometryInfo<dim>::max_children_per_cell - 1) /
+                  GeometryInfo<dim>::max_children_per_cell;
+              break;
+            case CellStatus::CELL_COARSEN:
+              for (const auto &child : cell->child_iterators())
+                n += handler.n_particles_in_cell(child);
+              break;
+            default:
+              break;
+          }
+        return 1 + particle_weight * static_cast<unsigned int>(n);
+      });
+  }
+
+  template ParticleBalance
+  particle_balance(const Particles::ParticleHandler<2> &, const MPI_Comm);
+  template ParticleBalance
+  particle_balance(const Particles::ParticleHandler<3> &, const MPI_Comm);
+  template boost::signals2::connection
+  connect_particle_weights(parallel::distributed::Triangulation<2> &,
+                           const Particles::ParticleHandler<2> &,
+                           const unsigned int);
+  template boost::signals2::connection
+  connect_particle_weights(parallel::distributed::Triangulation<3> &,
+                           const Particles::ParticleHandler<3> &,
+                           const unsigned int);
+} // namespace dealmpm
