@@ -172,12 +172,16 @@ namespace dealmpm
   Simulation<dim>::balance_load()
   {
     const LoadBalanceSettings &s = run_settings.load_balance;
-    if (!s.enabled || loop.step % s.check_interval != 0 ||
-        Utilities::MPI::n_mpi_processes(comm) == 1 || total_lagrangian())
+    if (!s.enabled || Utilities::MPI::n_mpi_processes(comm) == 1 ||
+        total_lagrangian())
+      return;
+    const bool due =
+      s.repartition_interval > 0 && loop.step % s.repartition_interval == 0;
+    if (!due && loop.step % s.check_interval != 0)
       return;
     TimerOutput::Scope t(*computing_timer, "load balance");
-    if (particle_balance(particles->handler, comm).imbalance() >
-        s.imbalance_limit)
+    if (due || particle_balance(particles->handler, comm).imbalance() >
+                 s.imbalance_limit)
       repartition();
   }
 

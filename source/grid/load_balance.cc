@@ -32,6 +32,12 @@ namespace dealmpm
                       "10",
                       Patterns::Integer(1),
                       "Steps between imbalance checks (one reduction each).");
+    prm.declare_entry("Repartition interval",
+                      "0",
+                      Patterns::Integer(0),
+                      "Also repartition every this many steps, whatever the "
+                      "imbalance; 0: only when the imbalance passes the "
+                      "limit.");
     prm.leave_subsection();
   }
 
@@ -40,10 +46,11 @@ namespace dealmpm
   {
     LoadBalanceSettings s;
     SectionScope        section(reader, "Load balance");
-    s.enabled         = reader.get_bool("Enabled");
-    s.particle_weight = reader.get_integer("Particle weight");
-    s.imbalance_limit = reader.get_double("Imbalance limit");
-    s.check_interval  = reader.get_integer("Check interval");
+    s.enabled              = reader.get_bool("Enabled");
+    s.particle_weight      = reader.get_integer("Particle weight");
+    s.imbalance_limit      = reader.get_double("Imbalance limit");
+    s.check_interval       = reader.get_integer("Check interval");
+    s.repartition_interval = reader.get_integer("Repartition interval");
     if (!(s.imbalance_limit > 1))
       reader.fail("Imbalance limit", "a number > 1");
     return s;

@@ -88,3 +88,12 @@ compare_ranks sliding "$dir/../tests/data/sliding_block.prm" -s "Load balance/Ch
 n=$(grep -o "[0-9]* repartition(s)" "$work/sliding3.log" | cut -d' ' -f1)
 echo "sliding: ${n:-0} repartitions on 3 ranks"
 [ "${n:-0}" -ge 3 ] || { echo "sliding: the partition did not follow the block"; exit 1; }
+# Every 7 steps whatever the imbalance (the limit out of reach): 53 steps,
+# the start's and 7 more.
+ranks=(1 2)
+compare_ranks interval "$dir/../tests/data/sliding_block.prm" -s "Load balance/Repartition interval=7" \
+  -s "Load balance/Imbalance limit=100" -s "Time/End time=0.2"
+grep -o "[0-9]* steps to\|[0-9]* repartition(s)" "$work/interval2.log" | tr '\n' ' '; echo
+steps=$(grep -o "[0-9]* steps to" "$work/interval2.log" | cut -d' ' -f1)
+n=$(grep -o "[0-9]* repartition(s)" "$work/interval2.log" | cut -d' ' -f1)
+[ "${n:-0}" = $((1 + steps / 7)) ] || { echo "interval: ${n:-0} repartitions, expected $((1 + steps / 7))"; exit 1; }

@@ -24,7 +24,9 @@ namespace dealmpm
     unsigned int particle_weight = 10;  ///< w: a particle's cost in cells
     double       imbalance_limit = 1.2; ///< max / mean particles per rank
     unsigned int check_interval  = 10;  ///< steps between checks
-    bool         enabled         = true;
+    /** Steps between repartitions whatever the imbalance; 0: never. */
+    unsigned int repartition_interval = 0;
+    bool         enabled              = true;
 
     static void
     declare_parameters(ParameterHandler &prm);
