@@ -67,9 +67,7 @@ namespace dealmpm
       state.particles.handler,
       [&](const std::size_t k, const auto &p, const GridCell<dim> &) {
         const auto   props = p.get_properties();
-        const double V =
-          props[f.initial_volume] *
-          determinant(read_tensor<dim>(&props[f.deformation_gradient]));
+        const double V     = current_volume<dim>(&props[0], f);
         NodalVector &volume =
           *volumes[static_cast<unsigned int>(props[f.body])];
         for (unsigned int e = state.stencil.begin[k];

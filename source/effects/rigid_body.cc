@@ -189,9 +189,7 @@ namespace dealmpm
       [&](const std::size_t k, const auto &p, const GridCell<dim> &) {
         const auto   props = p.get_properties();
         const double size =
-          std::pow(props[f.initial_volume] * determinant(read_tensor<dim>(
-                                               &props[f.deformation_gradient])),
-                   1. / dim);
+          std::pow(current_volume<dim>(&props[0], f), 1. / dim);
         if (settings.shape.distance(p.get_location() - shift) > 0.5 * size)
           return;
         for (unsigned int e = state.stencil.begin[k];

@@ -113,11 +113,11 @@ end
 
 namespace
 {
-  /** A block (0.2 x 0.1 m) on a rigid half-space under gravity tilted by
-   * 30 deg, friction mu, PIC, cells of 1 / n m: the slide of its centre of
-   * mass in 0.5 s and the mean normal force on the half-space. */
-  std::pair<double, double>
-  slide_on_rigid_incline(const double mu, const unsigned int n)
+  /** The start of a scene on a rigid half-space (the plane y = 0.1) under
+   * gravity tilted by 30 deg, with Coulomb friction mu and @p more entries
+   * of the rigid body's section. */
+  std::string
+  on_rigid_incline(const double mu, const std::string &more)
   {
     const double       theta = M_PI / 6;
     std::ostringstream scene;
@@ -127,7 +127,18 @@ namespace
           << ", " << -g * std::cos(theta) << "\nend\n"
           << "subsection Rigid body\n set Shape = half-space\n"
           << " set Point = 0, 0.1\n set Normal = 0, 1\n"
-          << " set Friction coefficient = " << mu << "\nend\n"
+          << more << " set Friction coefficient = " << mu << "\nend\n";
+    return scene.str();
+  }
+
+  /** A block (0.2 x 0.1 m) on a rigid half-space under gravity tilted by
+   * 30 deg, friction mu, PIC, cells of 1 / n m: the slide of its centre of
+   * mass in 0.5 s and the mean normal force on the half-space. */
+  std::pair<double, double>
+  slide_on_rigid_incline(const double mu, const unsigned int n)
+  {
+    std::ostringstream scene;
+    scene << on_rigid_incline(mu, "")
           << "subsection MPM\n set Velocity update = PIC\nend\n"
           << "subsection Grid\n set Upper corner = 1.2, 0.3\n"
           << " set Cells = " << 1.2 * n << ", " << 0.3 * n << "\nend\n"
@@ -195,14 +206,9 @@ TEST(RigidBody, DiskRollsDownARigidInclineWithTheTouchCheck)
   const double rolling = g * std::sin(theta) * end * end / 3;
   const auto   roll    = [&](const unsigned int n, const bool touch) {
     std::ostringstream scene;
-    scene.precision(17);
-    scene << "set Effects = gravity, rigid body\n"
-          << "subsection Gravity\n set Acceleration = " << g * std::sin(theta)
-          << ", " << -g * std::cos(theta) << "\nend\n"
-          << "subsection Rigid body\n set Shape = half-space\n"
-          << " set Point = 0, 0.1\n set Normal = 0, 1\n"
-          << " set Touch check = " << (touch ? "true" : "false") << "\n"
-          << " set Friction coefficient = 0.5\nend\n"
+    scene << on_rigid_incline(0.5,
+                              std::string(" set Touch check = ") +
+                                (touch ? "true" : "false") + "\n")
           << "subsection MPM\n set Velocity update = FLIP\nend\n"
           << "subsection Grid\n set Upper corner = 1.2, 0.4\n"
           << " set Cells = " << 1.2 * n << ", " << 0.4 * n << "\nend\n"

@@ -99,6 +99,15 @@ namespace dealmpm
     return t;
   }
 
+  /** A particle's volume now, V0 det F, from its properties @p props. */
+  template <int dim>
+  inline double
+  current_volume(const double *props, const CoreFields &f)
+  {
+    return props[f.initial_volume] *
+           determinant(read_tensor<dim>(props + f.deformation_gradient));
+  }
+
   template <int dim>
   inline void
   write_tensor(double *p, const Tensor<2, dim> &t)
