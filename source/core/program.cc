@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <regex>
 
 namespace dealmpm
@@ -33,6 +34,11 @@ namespace dealmpm
       "                          and materials when a scene is given)\n"
       "  -s 'Section/Entry=value'  override an entry (repeatable), e.g.\n"
       "                          -s 'Grid/Cells=40, 40' -s 'Time/End time=0.5'\n"
+      "  --resume [folder]       continue the run saved in the scene's\n"
+      "                          'Checkpoint/Directory' (or in folder: a\n"
+      "                          folder of checkpoints or one of them),\n"
+      "                          on any number of ranks; the output goes on\n"
+      "                          where the saved run's stopped\n"
       "  --study study.prm [--jobs N]\n"
       "                          run every combination of a study's axes on\n"
       "                          its base scene (N at a time; without\n"
@@ -41,7 +47,7 @@ namespace dealmpm
       "                          benchmarks/accuracy-cost/README.md)\n"
       "\n"
       "SIGTERM or SIGINT (Ctrl-C) end a run after its current step with a\n"
-      "last output; a second one ends it at once.\n"
+      "last output and a checkpoint; a second one ends it at once.\n"
       "\n"
       "exit codes: 0 done, 1 bad command line, 2 bad scene input,\n"
       "            3 run stopped (instability, particles lost), 4 internal error,\n"
@@ -52,9 +58,10 @@ namespace dealmpm
     /** Returns the signal that stopped the run, or 0. */
     template <int dim>
     int
-    run_scene(const std::string              &file,
-              const std::vector<std::string> &overrides,
-              const SceneShape               &shape)
+    run_scene(const std::string                &file,
+              const std::vector<std::string>   &overrides,
+              const SceneShape                 &shape,
+              const std::optional<std::string> &resume)
     {
       ParameterHandler prm;
       Simulation<dim>::declare_parameters(prm, shape);
@@ -65,7 +72,8 @@ namespace dealmpm
       std::exception_ptr error;
       int                signal = 0;
       {
-        Simulation<dim> simulation(prm, file, shape, MPI_COMM_WORLD, overrides);
+        Simulation<dim> simulation(
+          prm, file, shape, MPI_COMM_WORLD, overrides, resume);
         try
           {
             simulation.run();
@@ -146,6 +154,8 @@ namespace dealmpm
       std::string              file;
       std::vector<std::string> overrides;
       bool                     print_parameters = false;
+      /** --resume: the folder given, or "" (the scene's). */
+      std::optional<std::string> resume;
     };
 
     /**
@@ -172,6 +182,16 @@ namespace dealmpm
             command.print_parameters = true;
           else if (arg == "-s" && i + 1 < argc)
             command.overrides.push_back(argv[++i]);
+          else if (arg == "--resume")
+            {
+              // The folder is optional: a folder after it is its, a scene
+              // file is not.
+              command.resume = "";
+              std::error_code error;
+              if (i + 1 < argc &&
+                  std::filesystem::is_directory(argv[i + 1], error))
+                command.resume = argv[++i];
+            }
           else if (arg.rfind("-", 0) == 0 || !command.file.empty())
             {
               if (root)
@@ -226,8 +246,9 @@ namespace dealmpm
           return 0;
         }
       const int signal =
-        shape.dim == 2 ? run_scene<2>(command.file, command.overrides, shape) :
-                         run_scene<3>(command.file, command.overrides, shape);
+        shape.dim == 2 ?
+          run_scene<2>(command.file, command.overrides, shape, command.resume) :
+          run_scene<3>(command.file, command.overrides, shape, command.resume);
       return signal != 0 ? 128 + signal : 0;
     }
   } // namespace

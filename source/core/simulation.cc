@@ -59,14 +59,16 @@ namespace dealmpm
     CheckSettings::declare_parameters(prm);
     OutputSettings::declare_parameters(prm);
     LoadBalanceSettings::declare_parameters(prm);
+    CheckpointSettings::declare_parameters(prm);
   }
 
   template <int dim>
-  Simulation<dim>::Simulation(ParameterHandler               &prm,
-                              const std::string              &scene_file,
-                              const SceneShape               &shape,
-                              const MPI_Comm                  comm,
-                              const std::vector<std::string> &overrides)
+  Simulation<dim>::Simulation(ParameterHandler                 &prm,
+                              const std::string                &scene_file,
+                              const SceneShape                 &shape,
+                              const MPI_Comm                    comm,
+                              const std::vector<std::string>   &overrides,
+                              const std::optional<std::string> &resume)
     : comm(comm)
     , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
     , scene_file(scene_file)
@@ -75,16 +77,24 @@ namespace dealmpm
   {
     SceneReader reader(prm, scene_file, overrides);
     read_scene(reader, shape);
-    build_grid(reader);
-    create_particles(reader);
+    scene_entry_list = scene_entries(prm);
+    std::optional<CheckpointInfo> saved;
+    if (resume)
+      saved = find_saved_run(
+        reader, resume->empty() ? run_settings.checkpoint.directory : *resume);
+    const CheckpointInfo *saved_run = saved ? &*saved : nullptr;
+    build_grid(reader, saved_run);
+    create_particles(reader, saved_run);
     if (run_settings.load_balance.enabled)
       {
         particle_weights =
           connect_particle_weights(grid.triangulation,
                                    particles->handler,
                                    run_settings.load_balance.particle_weight);
-        // The cells were shared by count; a compact body sat on few ranks.
-        repartition();
+        // The cells were shared by count (a compact body sat on few ranks),
+        // or a saved run's were shared among another number of ranks.
+        if (!saved || saved->n_ranks != Utilities::MPI::n_mpi_processes(comm))
+          repartition();
       }
     for (unsigned int e = 0; e < effects.size(); ++e)
       {
@@ -121,6 +131,8 @@ namespace dealmpm
     particle_check =
       check_particles(grid, materials, *particles, total_lagrangian());
     max_signal_rate = Utilities::MPI::max(particle_check.max_signal_rate, comm);
+    if (saved)
+      restore_saved_run(*saved);
     computing_timer = std::make_unique<TimerOutput>(comm,
                                                     pcout,
                                                     TimerOutput::never,
@@ -136,6 +148,8 @@ namespace dealmpm
     run_settings.checks       = CheckSettings::read(reader);
     run_settings.output       = OutputSettings::read(reader);
     run_settings.load_balance = LoadBalanceSettings::read(reader);
+    run_settings.checkpoint =
+      CheckpointSettings::read(reader, run_settings.output.directory);
     {
       MaterialSections<dim> read =
         read_material_sections<dim>(reader, shape.n_materials);
@@ -154,14 +168,20 @@ namespace dealmpm
 
   template <int dim>
   void
-  Simulation<dim>::build_grid(SceneReader &reader)
+  Simulation<dim>::build_grid(SceneReader &reader, const CheckpointInfo *saved)
   {
-    grid.create(reader, [&](const GridSize<dim> &size) {
-      memory = check_memory(reader.file_name(),
-                            estimate_memory(size, bodies),
-                            run_settings.checks.memory_limit,
-                            comm);
-    });
+    SavedGrid saved_grid;
+    if (saved != nullptr)
+      saved_grid = {resumed_checkpoint + "/grid", saved->coarse_grid};
+    grid.create(
+      reader,
+      [&](const GridSize<dim> &size) {
+        memory = check_memory(reader.file_name(),
+                              estimate_memory(size, bodies),
+                              run_settings.checks.memory_limit,
+                              comm);
+      },
+      saved != nullptr ? &saved_grid : nullptr);
     const std::string problem =
       kernel.setup(run_settings.method.shape_function, grid);
     if (!problem.empty())
@@ -193,7 +213,8 @@ namespace dealmpm
 
   template <int dim>
   void
-  Simulation<dim>::create_particles(SceneReader &reader)
+  Simulation<dim>::create_particles(SceneReader          &reader,
+                                    const CheckpointInfo *saved)
   {
     std::vector<std::vector<FieldDescription>> internal;
     for (const auto &m : materials)
@@ -218,6 +239,17 @@ namespace dealmpm
              const typename Triangulation<dim>::active_cell_iterator &) {
         lost_this_step.emplace_back(p->get_id(), p->get_location());
       });
+    if (saved != nullptr)
+      {
+        // Each particle's doubles are read back as they were written.
+        if (saved->particle_layout != layout_description(particles->layout))
+          throw InputError(
+            resumed_checkpoint +
+            ": the particles' properties differ from this run's (the "
+            "checkpoint was written by another version of dealmpm)");
+        particles->handler.deserialize();
+        return;
+      }
 
     std::vector<double>              densities;
     std::vector<std::vector<double>> initial;

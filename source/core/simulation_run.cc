@@ -191,42 +191,63 @@ namespace dealmpm
   {
     const RunSettings       &s = run_settings;
     const StopSignalHandlers signal_handlers;
-    const Statistics         initial = statistics();
-    const unsigned int n_removed     = output_writer.open(scene_file, initial);
-    Progress           progress(std::cout,
+    const bool               resumed   = !resumed_checkpoint.empty();
+    const Statistics         initial   = statistics();
+    const unsigned int       n_removed = open_output(initial);
+    Progress                 progress(std::cout,
                       s.output.progress_interval,
                       Utilities::MPI::this_mpi_process(comm) == 0 &&
                         s.output.verbose);
     if (s.output.verbose)
       print_start(initial, n_removed);
-    // The grid output at t = 0 shows the particles' mass and velocity p / m
-    // on the nodes, as every later one does, instead of zeros.
-    if (s.output.write_grid)
-      map_particles_for_grid_output();
-    loop.accuracy.start(initial);
-    write_output(0., initial, 0., progress);
+    if (!resumed)
+      {
+        // The grid output at t = 0 shows the particles' mass and velocity
+        // p / m on the nodes, as every later one does, instead of zeros.
+        if (s.output.write_grid)
+          map_particles_for_grid_output();
+        loop.accuracy.start(initial);
+        write_output(0., initial, 0., progress);
+        loop.next_output = s.output.interval;
+      }
 
-    loop.next_output = s.output.interval;
-    double dt        = 0;
+    double dt = 0;
     while (!finished())
       {
         // mpirun passes the signal to every rank, but not at the same
-        // moment: the ranks stop at the same step only if they agree.
-        stopped_by_signal = Utilities::MPI::max(stop_signal(), comm);
+        // moment: the ranks stop at the same step only if they agree, and
+        // save at the same step only if they agree on the time too.
+        int flags[2] = {stop_signal(), checkpoint_due_by_time() ? 1 : 0};
+        Utilities::MPI::max(ArrayView<const int>(flags, 2),
+                            comm,
+                            ArrayView<int>(flags, 2));
+        stopped_by_signal = flags[0];
         if (stopped_by_signal != 0)
           break;
+        if (flags[1] != 0 && last_checkpoint_step != loop.step)
+          write_checkpoint();
         if (particles->handler.n_global_particles() == 0)
           throw RunError(step_and_time(loop.step, loop.time) +
                          ": no particles are left in the grid");
         dt = std::min(time_step(), s.time.end_time - loop.time);
         take_step(dt, progress);
+        if (s.checkpoint.step_interval > 0 &&
+            loop.step % s.checkpoint.step_interval == 0)
+          write_checkpoint();
       }
-    if (stopped_by_signal != 0 && loop.output.last_step != loop.step)
+    std::string saved;
+    if (stopped_by_signal != 0)
       {
-        const Statistics now  = statistics();
-        const double     work = external_work();
-        loop.accuracy.observe(now, work);
-        write_output(dt, now, work, progress);
+        if (loop.output.last_step != loop.step)
+          {
+            const Statistics now  = statistics();
+            const double     work = external_work();
+            loop.accuracy.observe(now, work);
+            write_output(dt, now, work, progress);
+          }
+        if (s.checkpoint.on_stop_signal)
+          saved = last_checkpoint_step == loop.step ? s.checkpoint.directory :
+                                                      write_checkpoint();
       }
     if (s.output.verbose)
       print_summary();
@@ -235,6 +256,9 @@ namespace dealmpm
             << " at step " << loop.step << " (t = " << loop.time
             << "); output in " << s.output.directory << "/ is complete"
             << std::endl;
+    if (!saved.empty())
+      pcout << "dealmpm: saved in " << saved << "/; continue with: dealmpm "
+            << scene_file << " --resume" << std::endl;
   }
 
   template <int dim>
@@ -255,8 +279,16 @@ namespace dealmpm
           << short_number(memory.bytes / 1e9) << " GB estimated; output in "
           << run_settings.output.directory << "/";
     if (n_removed > 0)
-      pcout << " (removed " << n_removed << " files of an earlier run)";
+      pcout << " (removed " << n_removed
+            << (resumed_checkpoint.empty() ?
+                  " files of an earlier run)" :
+                  " files the interrupted run wrote after its checkpoint)");
     pcout << std::endl;
+    if (!resume_warning.empty())
+      pcout << "warning: " << resume_warning << std::endl;
+    if (!resumed_checkpoint.empty())
+      pcout << "dealmpm: resumed from " << resumed_checkpoint << " at step "
+            << loop.step << " (t = " << loop.time << ")" << std::endl;
   }
 
   template <int dim>

@@ -11,9 +11,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <map>
+#include <sstream>
 
 namespace dealmpm
 {
@@ -85,7 +88,8 @@ namespace dealmpm
   void
   BackgroundGrid<dim>::create(
     SceneReader                                      &reader,
-    const std::function<void(const GridSize<dim> &)> &before_allocating)
+    const std::function<void(const GridSize<dim> &)> &before_allocating,
+    const SavedGrid                                  *saved)
   {
     SectionScope grid(reader, "Grid");
     if (reader.get("Type") == "rectangle")
@@ -142,9 +146,51 @@ namespace dealmpm
                        BoundingBox<dim>(serial.get_vertices())));
         triangulation.copy_triangulation(serial);
       }
-    triangulation.refine_global(reader.get_integer("Global refinements"));
-    refine_box(reader);
+    coarse_checksum = checksum_of_coarse_grid();
+    if (saved != nullptr)
+      {
+        if (saved->coarse_checksum != coarse_checksum)
+          throw InputError(reader.file_name() +
+                           ": the coarse grid (section 'Grid', its mesh "
+                           "file) differs from the saved run's (" +
+                           saved->file + ")");
+        // The saved cells and partition; a different number of ranks
+        // gets the cells shared by count (the caller repartitions).
+        triangulation.load(saved->file);
+      }
+    else
+      {
+        triangulation.refine_global(reader.get_integer("Global refinements"));
+        refine_box(reader);
+      }
     setup();
+  }
+
+  template <int dim>
+  std::string
+  BackgroundGrid<dim>::checksum_of_coarse_grid() const
+  {
+    // FNV-1a over the vertices' bits and each cell's vertex indices.
+    std::uint64_t hash = 14695981039346656037ull;
+    const auto    add  = [&hash](const void *data, const std::size_t n) {
+      for (std::size_t i = 0; i < n; ++i)
+        {
+          hash ^= static_cast<const unsigned char *>(data)[i];
+          hash *= 1099511628211ull;
+        }
+    };
+    for (const Point<dim> &v : triangulation.get_vertices())
+      for (unsigned int d = 0; d < dim; ++d)
+        add(&v[d], sizeof(double));
+    for (const auto &cell : triangulation.cell_iterators_on_level(0))
+      for (const unsigned int v : cell->vertex_indices())
+        {
+          const unsigned int index = cell->vertex_index(v);
+          add(&index, sizeof(index));
+        }
+    std::ostringstream out;
+    out << std::hex << std::setw(16) << std::setfill('0') << hash;
+    return out.str();
   }
 
   template <int dim>

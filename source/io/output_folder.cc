@@ -43,4 +43,31 @@ namespace dealmpm
                           " of an earlier run: " + error.message());
     return series.size();
   }
+
+  unsigned int
+  remove_later_output(const std::string &directory,
+                      const unsigned int first_counter)
+  {
+    namespace fs = std::filesystem;
+    static const std::regex numbered("(particles|grid)_([0-9]+)\\..*");
+    std::vector<fs::path>   later;
+    std::error_code         error;
+    for (const fs::directory_entry &entry :
+         fs::directory_iterator(directory, error))
+      {
+        const std::string name = entry.path().filename().string();
+        std::smatch       match;
+        if (is_run_output_file(name) &&
+            std::regex_match(name, match, numbered) &&
+            std::stoul(match[2]) >= first_counter)
+          later.push_back(entry.path());
+      }
+    if (error)
+      throw OutputError("cannot list " + directory + ": " + error.message());
+    for (const fs::path &file : later)
+      if (!fs::remove(file, error) && error)
+        throw OutputError("cannot remove " + file.string() + ": " +
+                          error.message());
+    return later.size();
+  }
 } // namespace dealmpm

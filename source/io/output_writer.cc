@@ -22,8 +22,10 @@ namespace dealmpm
 
   template <int dim>
   unsigned int
-  OutputWriter<dim>::open(const std::string &scene_file,
-                          const Statistics  &first)
+  OutputWriter<dim>::open(const std::string  &scene_file,
+                          const Statistics   &first,
+                          const OutputRecord *resumed,
+                          const unsigned int  step)
   {
     // Every rank learns whether rank 0 could make the folder: a rank that
     // throws alone would leave the others waiting. The broadcast also keeps
@@ -41,11 +43,25 @@ namespace dealmpm
               // An earlier run's series beside the new one (its later
               // steps, its grid files) would mislead whoever opens the
               // folder.
-              n_removed = remove_earlier_output(dir);
-              statistics_file =
-                std::make_unique<StatisticsFile>(dir + "/statistics.csv",
-                                                 dim,
-                                                 first);
+              if (resumed == nullptr)
+                {
+                  n_removed = remove_earlier_output(dir);
+                  statistics_file =
+                    std::make_unique<StatisticsFile>(dir + "/statistics.csv",
+                                                     dim,
+                                                     first);
+                }
+              else
+                {
+                  // The series first: none may list a removed file.
+                  if (!resumed->particle_series.empty())
+                    resumed->particle_series.write(dir + "/particles.pvd");
+                  if (!resumed->grid_series.empty())
+                    resumed->grid_series.write(dir + "/grid.pvd");
+                  n_removed       = remove_later_output(dir, resumed->counter);
+                  statistics_file = std::make_unique<StatisticsFile>(
+                    dir + "/statistics.csv", dim, first, step);
+                }
             }
           catch (const OutputError &e)
             {

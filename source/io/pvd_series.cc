@@ -12,6 +12,20 @@ namespace dealmpm
                            const std::string &pvd_path)
   {
     entries.emplace_back(time, file);
+    try
+      {
+        write(pvd_path);
+      }
+    catch (...)
+      {
+        entries.pop_back();
+        throw;
+      }
+  }
+
+  void
+  PvdSeries::write(const std::string &pvd_path) const
+  {
     std::ostringstream xml;
     // Enough digits to tell apart the times of outputs a step apart.
     xml << std::setprecision(12)
@@ -22,16 +36,8 @@ namespace dealmpm
       xml << "    <DataSet timestep=\"" << t
           << "\" group=\"\" part=\"0\" file=\"" << name << "\"/>\n";
     xml << "  </Collection>\n</VTKFile>\n";
-    try
-      {
-        OutputFile out(pvd_path);
-        out.write(xml.str());
-        out.commit();
-      }
-    catch (...)
-      {
-        entries.pop_back();
-        throw;
-      }
+    OutputFile out(pvd_path);
+    out.write(xml.str());
+    out.commit();
   }
 } // namespace dealmpm

@@ -2,8 +2,10 @@
 #include <dealmpm/io/statistics_file.h>
 
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
+#include <fstream>
 #include <iomanip>
 #include <sstream>
 #include <unistd.h>
@@ -12,15 +14,13 @@ namespace dealmpm
 {
   StatisticsFile::StatisticsFile(const std::string &path,
                                  const unsigned int dim,
-                                 const Statistics  &first)
+                                 const Statistics  &first,
+                                 const long long    keep_up_to_step)
     : path(path)
     , dim(dim)
     , errors(first.has_error)
     , dissipated_work(first.has_dissipated_work)
   {
-    fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-    if (fd < 0)
-      throw OutputError("cannot write " + path + ": " + std::strerror(errno));
     std::string header = "step,time,dt,n_particles,mass,momentum_x,momentum_y";
     if (dim == 3)
       header += ",momentum_z";
@@ -36,7 +36,33 @@ namespace dealmpm
       header += ",error_L2,error_max";
     for (const std::string &name : first.effect_columns)
       header += "," + name;
-    append(header + '\n');
+    header += '\n';
+
+    // A resumed run keeps the rows up to its checkpoint and drops those the
+    // interrupted run wrote after it.
+    std::size_t kept = 0;
+    if (keep_up_to_step >= 0)
+      {
+        std::ifstream in(path);
+        std::string   line;
+        if (std::getline(in, line) && line + '\n' == header)
+          {
+            kept = header.size();
+            while (std::getline(in, line) && in.good())
+              {
+                const long long step = std::atoll(line.c_str());
+                if (line.empty() || step > keep_up_to_step)
+                  break;
+                kept += line.size() + 1;
+              }
+          }
+      }
+    fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC, 0644);
+    if (fd < 0 || ::ftruncate(fd, kept) != 0 || ::lseek(fd, kept, SEEK_SET) < 0)
+      throw OutputError("cannot write " + path + ": " + std::strerror(errno));
+    size = kept;
+    if (kept == 0)
+      append(header);
   }
 
   StatisticsFile::~StatisticsFile()

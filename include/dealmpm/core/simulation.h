@@ -15,6 +15,7 @@
 #include <dealmpm/grid/boundary_conditions.h>
 #include <dealmpm/grid/load_balance.h>
 #include <dealmpm/grid/nodal_field_set.h>
+#include <dealmpm/io/checkpoint.h>
 #include <dealmpm/io/output_settings.h>
 #include <dealmpm/io/output_writer.h>
 #include <dealmpm/io/progress.h>
@@ -30,8 +31,10 @@
 #include <dealmpm/transfer/kernel.h>
 #include <dealmpm/transfer/mixed_cell_split.h>
 
+#include <chrono>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -53,6 +56,7 @@ namespace dealmpm
     CheckSettings       checks;
     OutputSettings      output;
     LoadBalanceSettings load_balance;
+    CheckpointSettings  checkpoint;
   };
 
   /**
@@ -70,12 +74,17 @@ namespace dealmpm
     declare_parameters(ParameterHandler &prm, const SceneShape &shape);
 
     /** @p overrides: the command line's "Section/Entry=value" items
-     * (already applied to @p prm), for messages. */
-    Simulation(ParameterHandler               &prm,
-               const std::string              &scene_file,
-               const SceneShape               &shape,
-               const MPI_Comm                  comm,
-               const std::vector<std::string> &overrides = {});
+     * (already applied to @p prm), for messages. With @p resume the run
+     * starts from a checkpoint instead of the scene's initial state: the
+     * one in that folder (see find_checkpoint()), or with "" in the
+     * scene's 'Checkpoint/Directory'; a checkpoint that does not fit the
+     * scene is refused with InputError. */
+    Simulation(ParameterHandler                 &prm,
+               const std::string                &scene_file,
+               const SceneShape                 &shape,
+               const MPI_Comm                    comm,
+               const std::vector<std::string>   &overrides = {},
+               const std::optional<std::string> &resume    = std::nullopt);
 
     /** The whole run: output at t = 0, every interval and at the end, a
      * progress line, the timing table. SIGTERM or SIGINT end it after the
@@ -113,6 +122,18 @@ namespace dealmpm
      * one rank. */
     void
     repartition();
+
+    /** Save the run as a checkpoint in 'Checkpoint/Directory' (see
+     * io/checkpoint.h) and return its folder. Collective. */
+    std::string
+    write_checkpoint();
+
+    /** The checkpoint this run was resumed from, or "". */
+    const std::string &
+    resumed_from() const
+    {
+      return resumed_checkpoint;
+    }
 
     /** The CFL time step of the current state (or the fixed one). */
     double
@@ -203,9 +224,25 @@ namespace dealmpm
     /** The grid (after the memory check), the shape function's grid data
      * and the boundary conditions. */
     void
-    build_grid(SceneReader &reader);
+    build_grid(SceneReader &reader, const CheckpointInfo *saved);
+    /** The particle set: filled from the bodies, or loaded from the
+     * @p saved run's checkpoint (after the grid was). */
     void
-    create_particles(SceneReader &reader);
+    create_particles(SceneReader &reader, const CheckpointInfo *saved);
+    /** The checkpoint to resume from, checked against the scene. */
+    CheckpointInfo
+    find_saved_run(SceneReader &reader, const std::string &where);
+    /** Take the loop's state, the effects' and the numbers of @p saved
+     * from the checkpoint. */
+    void
+    restore_saved_run(const CheckpointInfo &saved);
+    /** The output folder opened for a new or a resumed run; rank 0's
+     * count of the earlier run's files removed. */
+    unsigned int
+    open_output(const Statistics &initial);
+    /** Whether a checkpoint is due by wall time (this rank's clock). */
+    bool
+    checkpoint_due_by_time() const;
     bool
     total_lagrangian() const
     {
@@ -299,6 +336,12 @@ namespace dealmpm
     std::vector<std::pair<types::particle_index, Point<dim>>> lost_this_step;
     int               stopped_by_signal = 0;
     OutputWriter<dim> output_writer;
+    /** The scene's entries a resume must keep (scene_entries()). */
+    std::vector<std::string>              scene_entry_list;
+    std::string                           resumed_checkpoint;
+    std::string                           resume_warning;
+    long long                             last_checkpoint_step = -1;
+    std::chrono::steady_clock::time_point last_checkpoint_time;
   };
 
   /** Read Dimension, Number of bodies and Number of materials (pass one of

@@ -69,6 +69,14 @@ namespace dealmpm
     BoundingBox<dim> box;
   };
 
+  /** A grid saved in a checkpoint: the file Triangulation::save() wrote
+   * and the coarse_checksum of the grid it refined. */
+  struct SavedGrid
+  {
+    std::string file;
+    std::string coarse_checksum;
+  };
+
   /**
    * The background grid: a distributed triangulation (a subdivided rectangle
    * or a Gmsh mesh, optionally refined), FE_Q(1) nodes, hanging-node
@@ -87,12 +95,15 @@ namespace dealmpm
     /** Read the "Grid" section, build and refine the mesh, set up nodes.
      * The reader must be at the top level. @p before_allocating sees the
      * grid's size before its cells are made (and may refuse it by
-     * throwing). */
+     * throwing). A @p saved grid (a resumed run's) replaces the scene's
+     * refinement with its own cells and partition, after its coarse grid
+     * is found to be this scene's (else InputError). */
     void
     create(
       SceneReader                                      &reader,
       const std::function<void(const GridSize<dim> &)> &before_allocating =
-        [](const GridSize<dim> &) {});
+        [](const GridSize<dim> &) {},
+      const SavedGrid *saved = nullptr);
 
     /** (Re)build DoFs, constraints, the node layout and the cell data, and
      * forget the neighbour tables (the shape function asks for them again),
@@ -112,6 +123,9 @@ namespace dealmpm
     std::unique_ptr<Mapping<dim>> mapping;
     bool                          cartesian = true;
     BoundingBox<dim>              bounding_box;
+    /** A hash of the coarse grid's vertices and cells (the same on every
+     * rank), which a checkpoint records. */
+    std::string coarse_checksum;
 
     /** Locally owned active cells, in the order every kernel visits them. */
     std::vector<GridCell<dim>> cells;
@@ -142,6 +156,9 @@ namespace dealmpm
   private:
     void
     refine_box(SceneReader &reader);
+    /** coarse_checksum of the triangulation before it is refined. */
+    std::string
+    checksum_of_coarse_grid() const;
     /** The cell data of one owned or ghost cell; @p box: whether it is an
      * axis-aligned box. */
     GridCell<dim>

@@ -21,4 +21,13 @@ namespace dealmpm
    */
   unsigned int
   remove_earlier_output(const std::string &directory);
+
+  /**
+   * Remove the numbered output files (particles_NNNNN*, grid_NNNNN*) from
+   * @p first_counter on: a resumed run's files after its checkpoint, which
+   * it writes again. Returns how many; throws OutputError.
+   */
+  unsigned int
+  remove_later_output(const std::string &directory,
+                      const unsigned int first_counter);
 } // namespace dealmpm

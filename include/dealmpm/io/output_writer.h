@@ -32,9 +32,18 @@ namespace dealmpm
      * statistics.csv (its columns from the @p first statistics). Collective;
      * throws InputError naming @p scene_file when the folder cannot be
      * made, OutputError on every rank when a file cannot be written.
-     * Returns the number of files removed (rank 0). */
+     * Returns the number of files removed (rank 0).
+     *
+     * A resumed run gives the @p resumed record of its checkpoint at step
+     * @p step instead: the folder keeps the earlier outputs, statistics.csv
+     * its rows up to that step, the series their entries up to the record's
+     * (rewritten at once), and the files the interrupted run wrote after
+     * the checkpoint are removed. */
     unsigned int
-    open(const std::string &scene_file, const Statistics &first);
+    open(const std::string  &scene_file,
+         const Statistics   &first,
+         const OutputRecord *resumed = nullptr,
+         const unsigned int  step    = 0);
 
     /** The parts of a run an output shows. */
     struct Scene

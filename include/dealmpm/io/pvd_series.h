@@ -22,6 +22,17 @@ namespace dealmpm
                   const std::string &file,
                   const std::string &pvd_path);
 
+    /** Write the series as it is (a resumed run's, from its checkpoint);
+     * throws OutputError. */
+    void
+    write(const std::string &pvd_path) const;
+
+    bool
+    empty() const
+    {
+      return entries.empty();
+    }
+
     bool
     operator==(const PvdSeries &other) const
     {

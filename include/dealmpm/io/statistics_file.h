@@ -19,10 +19,13 @@ namespace dealmpm
   public:
     /** Create the file with its header. The columns that not every scene
      * has come with the first statistics: dissipated_work (a material
-     * dissipates), error_L2,error_max (an exact solution). */
+     * dissipates), error_L2,error_max (an exact solution). With
+     * @p keep_up_to_step >= 0 (a resumed run) an existing file with the
+     * same header keeps its rows up to that step and is appended to. */
     StatisticsFile(const std::string &path,
                    const unsigned int dim,
-                   const Statistics  &first);
+                   const Statistics  &first,
+                   const long long    keep_up_to_step = -1);
 
     ~StatisticsFile();
 

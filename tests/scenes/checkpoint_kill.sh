@@ -1,0 +1,170 @@
+#!/usr/bin/env bash
+# Checkpoints survive what kills a run: a run killed with SIGKILL at
+# several moments (also in the middle of a checkpoint write) and resumed
+# with --resume ends exactly where the uninterrupted run ends (statistics
+# and final particles; 1 rank bit for bit, 2 ranks to round-off), with
+# statistics.csv and particles.pvd as the uninterrupted run's (no
+# duplicate rows or entries, every listed file there). A checkpoint of 2
+# ranks resumes on 3 and on 1, one of 1 rank on 2 (repartitioned). SIGTERM
+# saves one. A scene changed in what matters is refused with one line, a
+# damaged newest checkpoint is passed over for the one before, a folder
+# without checkpoints is refused, and a run that does not resume removes
+# the earlier checkpoints.
+# Arguments: dealmpm, the colliding disks, mpirun, compare_statistics.
+here=$(cd "$(dirname "$0")" && pwd)
+source "$here/check_lib.sh"
+mpirun=$3 compare=$4
+flags=("${mpirun_flags[@]}")
+# 350 steps of 6456 particles (about 1.5 s), a checkpoint every 40, an
+# output every 0.05 s; a total momentum that is not zero, so that it
+# compares meaningfully.
+run=(-s "Body 1/Velocity=0.5, 0.5" -s "Body 2/Velocity=-0.3, -0.4" -s "Grid/Global refinements=2"
+     -s "Time/End time=1" -s "Output/Interval=0.05" -s "Output/Progress interval=0"
+     -s "Output/Particle CSV=true" -s "Output/Write particles=true"
+     -s "Checkpoint/Steps between checkpoints=40")
+
+# The step of the checkpoint "latest" in $1 names, or 0.
+latest_step() {
+  local named
+  named=$(cat "$1/checkpoints/latest" 2> /dev/null) || { echo 0; return; }
+  echo $((10#${named#checkpoint-}))
+}
+
+# Folder $1 holds the run of reference folder $2, to tolerance $3: the
+# statistics, the final particles, and a whole series. (The reference is
+# the uninterrupted run on the rank count the checkpoint was written on:
+# particle ids depend on it.)
+same_run() {
+  local folder=$1 ref=$2 tolerance=$3
+  echo -n "$folder vs $ref: "
+  "$compare" "$ref/statistics.csv" "$folder/statistics.csv" "$tolerance" \
+    || fail "$folder: statistics differ from $ref's"
+  local last
+  last=$(cd "$ref" && ls particles_*.csv | tail -1)
+  python3 "$here/same_particles.py" "$ref/$last" "$folder/$last" "$tolerance" \
+    || fail "$folder: final particles differ from $ref's"
+  cmp -s "$ref/particles.pvd" "$folder/particles.pvd" || fail "$folder: particles.pvd differs from $ref's"
+  [ "$(cd "$ref" && ls particles_*.pvtu | wc -l)" = "$(cd "$folder" && ls particles_*.pvtu | wc -l)" ] \
+    || fail "$folder: not the particle files of $ref"
+  PYTHONPATH="$here" python3 -c "
+import sys
+from vtk_files import check_series
+problems = check_series('$folder', 'particles.pvd')
+sys.exit('\n'.join(problems) if problems else 0)" || fail "$folder: particles.pvd lists missing files"
+}
+
+# Start "$@" in the background writing to folder $1, SIGKILL it (or, with
+# $2 = ranks, the processes mpirun started) once its latest checkpoint is
+# of step $3 or later.
+kill_after_checkpoint() {
+  local folder=$1 whom=$2 step=$3; shift 3
+  "$@" -s "Output/Directory=$folder" "${run[@]}" >> "$folder.log" 2>&1 &
+  local pid=$!
+  for _ in $(seq 1200); do
+    [ "$(latest_step "$folder")" -ge "$step" ] && break
+    kill -0 $pid 2> /dev/null || break
+    sleep 0.05
+  done
+  if [ "$whom" = ranks ]; then pkill -KILL -P $pid; else kill -KILL $pid; fi
+  wait $pid 2> /dev/null
+  [ "$(latest_step "$folder")" -ge "$step" ] || fail "$folder: no checkpoint of step $step before the kill"
+  grep -q "^dealmpm: [0-9]* steps to" "$folder.log" && fail "$folder: the run ended before it was killed"
+}
+
+"$dealmpm" "$scene" -s "Output/Directory=ref1" "${run[@]}" > ref1.log 2>&1 || fail "the uninterrupted run failed"
+"$mpirun" "${flags[@]}" -np 2 "$dealmpm" "$scene" -s "Output/Directory=ref2" "${run[@]}" > ref2.log 2>&1 \
+  || fail "the uninterrupted run on 2 ranks failed"
+
+# 1 rank, killed twice, resumed twice.
+kill_after_checkpoint killed self 80 "$dealmpm" "$scene"
+kill_after_checkpoint killed self 240 "$dealmpm" "$scene" --resume
+"$dealmpm" "$scene" -s "Output/Directory=killed" "${run[@]}" --resume >> killed.log 2>&1 || fail "killed: the resume failed"
+[ "$(grep -c "^dealmpm: resumed from killed/checkpoints/checkpoint-" killed.log)" = 2 ] || fail "killed: not resumed twice"
+same_run killed ref1 0
+
+# Killed in the middle of its third checkpoint write: the .tmp folder is
+# there, "latest" still names the second, from which the run resumes.
+DEALMPM_KILL_IN_CHECKPOINT=3 "$dealmpm" "$scene" -s "Output/Directory=mid" "${run[@]}" > mid.log 2>&1
+[ $? = 137 ] || fail "mid: not killed in its checkpoint"
+[ -d mid/checkpoints/checkpoint-00000120.tmp ] || fail "mid: no checkpoint being written"
+[ "$(latest_step mid)" = 80 ] || fail "mid: latest names step $(latest_step mid), expected 80"
+"$dealmpm" "$scene" -s "Output/Directory=mid" "${run[@]}" --resume > mid-resumed.log 2>&1 || fail "mid: the resume failed"
+grep -q "resumed from mid/checkpoints/checkpoint-00000080 at step 80 " mid-resumed.log || fail "mid: not resumed from step 80"
+[ -d mid/checkpoints/checkpoint-00000120.tmp ] && fail "mid: the unfinished checkpoint was left"
+same_run mid ref1 0
+
+# 2 ranks, killed, resumed on 2; killed mid-write, resumed on 3 and on 1.
+kill_after_checkpoint killed2 ranks 120 "$mpirun" "${flags[@]}" -np 2 "$dealmpm" "$scene"
+"$mpirun" "${flags[@]}" -np 2 "$dealmpm" "$scene" -s "Output/Directory=killed2" "${run[@]}" --resume \
+  >> killed2.log 2>&1 || fail "killed2: the resume failed"
+same_run killed2 ref2 1e-12
+DEALMPM_KILL_IN_CHECKPOINT=4 "$mpirun" "${flags[@]}" -np 2 "$dealmpm" "$scene" -s "Output/Directory=mid2" \
+  "${run[@]}" > mid2.log 2>&1 && fail "mid2: not killed in its checkpoint"
+[ "$(latest_step mid2)" = 120 ] || fail "mid2: latest names step $(latest_step mid2), expected 120"
+cp -r mid2 mid2-on1
+"$mpirun" "${flags[@]}" -np 3 "$dealmpm" "$scene" -s "Output/Directory=mid2" "${run[@]}" --resume \
+  > mid2-on3.log 2>&1 || fail "mid2: the resume on 3 ranks failed"
+same_run mid2 ref2 1e-9
+"$dealmpm" "$scene" -s "Output/Directory=mid2-on1" "${run[@]}" --resume > mid2-on1.log 2>&1 \
+  || fail "mid2: the resume on 1 rank failed"
+same_run mid2-on1 ref2 1e-9
+# And 1 rank's checkpoint on 2 ranks.
+cp -r ref1 from1 && rm -rf from1/checkpoints/checkpoint-00000320 from1/checkpoints/latest
+"$mpirun" "${flags[@]}" -np 2 "$dealmpm" "$scene" -s "Output/Directory=from1" "${run[@]}" --resume \
+  > from1.log 2>&1 || fail "from1: the resume on 2 ranks failed"
+grep -q "warning: from1/checkpoints/latest is missing; resuming from the newest whole checkpoint, checkpoint-00000280" from1.log \
+  || fail "from1: no warning about the missing pointer"
+same_run from1 ref1 1e-9
+
+# SIGTERM saves the run (after its current step), which then resumes.
+"$dealmpm" "$scene" -s "Output/Directory=term" "${run[@]}" -s "Checkpoint/Steps between checkpoints=0" \
+  > term.log 2>&1 &
+pid=$!
+for _ in $(seq 600); do
+  [ "$(cat term/statistics.csv 2> /dev/null | wc -l)" -ge 4 ] && break
+  sleep 0.05
+done
+kill -TERM $pid
+wait $pid
+[ $? = 143 ] || fail "term: exit code $?, expected 143"
+grep -q "^dealmpm: saved in term/checkpoints/checkpoint-[0-9]*/; continue with: dealmpm .* --resume$" term.log \
+  || fail "term: no line saying where the run was saved: $(tail -1 term.log)"
+"$dealmpm" "$scene" -s "Output/Directory=term" "${run[@]}" -s "Checkpoint/Steps between checkpoints=0" --resume \
+  > term-resumed.log 2>&1 || fail "term: the resume failed"
+# The stop added an output at its step (unless it was an output step),
+# which the series keeps: without its row, the statistics are the
+# uninterrupted run's; the last particles are its last ones.
+stop=$(grep -o "stopped by SIGTERM at step [0-9]*" term.log | grep -o "[0-9]*$")
+if grep -q "^$stop," ref1/statistics.csv; then
+  cp term/statistics.csv term-statistics.csv
+else
+  grep -v "^$stop," term/statistics.csv > term-statistics.csv
+fi
+echo -n "term vs ref1: "
+"$compare" ref1/statistics.csv term-statistics.csv 0 || fail "term: statistics differ from ref1's"
+python3 "$here/same_particles.py" "ref1/$(cd ref1 && ls particles_*.csv | tail -1)" \
+  "term/$(cd term && ls particles_*.csv | tail -1)" 0 || fail "term: final particles differ from ref1's"
+
+# A changed scene is refused with one line naming the entry.
+"$dealmpm" "$scene" -s "Output/Directory=mid" "${run[@]}" -s "Material 1/Density=2000" --resume \
+  > changed.log 2>&1
+[ $? = 2 ] || fail "changed: exit code $?, expected 2"
+[ "$(wc -l < changed.log)" = 1 ] && grep -q "error: .*cannot resume .*entry 'Material 1/Density' = '2000' differs from the saved run's '1000'" changed.log \
+  || fail "changed: $(cat changed.log)"
+# Changing the end time (or the output) is allowed.
+"$dealmpm" "$scene" -s "Output/Directory=mid" "${run[@]}" -s "Time/End time=1.2" --resume > longer.log 2>&1 \
+  || fail "longer: $(tail -1 longer.log)"
+# No checkpoint there.
+"$dealmpm" "$scene" -s "Output/Directory=none" "${run[@]}" --resume > none.log 2>&1
+[ $? = 2 ] && grep -q "error: none/checkpoints: no such folder of checkpoints" none.log || fail "none: $(cat none.log)"
+# The newest is damaged: the one before is taken, with a warning.
+rm killed/checkpoints/checkpoint-00000320/run_state.txt
+"$dealmpm" "$scene" -s "Output/Directory=killed" "${run[@]}" --resume > damaged.log 2>&1 || fail "damaged: the resume failed"
+grep -q "warning: killed/checkpoints/latest names checkpoint-00000320, which is missing or damaged; resuming from checkpoint-00000280" damaged.log \
+  || fail "damaged: $(head -3 damaged.log)"
+same_run killed ref1 0
+# A run that does not resume removes the earlier checkpoints.
+"$dealmpm" "$scene" -s "Output/Directory=killed" "${run[@]}" -s "Checkpoint/Steps between checkpoints=0" > fresh.log 2>&1
+[ -z "$(ls killed/checkpoints)" ] || fail "fresh: earlier checkpoints left: $(ls killed/checkpoints)"
+
+finish "checkpoint kill"
