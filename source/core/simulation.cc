@@ -60,6 +60,7 @@ namespace dealmpm
     OutputSettings::declare_parameters(prm);
     LoadBalanceSettings::declare_parameters(prm);
     CheckpointSettings::declare_parameters(prm);
+    AdaptivitySettings<dim>::declare_parameters(prm);
   }
 
   template <int dim>
@@ -85,6 +86,8 @@ namespace dealmpm
     const CheckpointInfo *saved_run = saved ? &*saved : nullptr;
     build_grid(reader, saved_run);
     create_particles(reader, saved_run);
+    if (adaptivity.enabled())
+      start_adaptivity(reader);
     if (run_settings.load_balance.enabled)
       {
         particle_weights =
@@ -150,6 +153,7 @@ namespace dealmpm
     run_settings.load_balance = LoadBalanceSettings::read(reader);
     run_settings.checkpoint =
       CheckpointSettings::read(reader, run_settings.output.directory);
+    adaptivity = AdaptivitySettings<dim>::read(reader);
     {
       MaterialSections<dim> read =
         read_material_sections<dim>(reader, shape.n_materials);
@@ -407,7 +411,7 @@ namespace dealmpm
   Simulation<dim>::change_grid(
     const std::function<void(Triangulation<dim> &)> &set_flags)
   {
-    TimerOutput::Scope t(*computing_timer, "grid change");
+    const auto t = timed("grid change");
     if (total_lagrangian())
       throw RunError(step_and_time(loop.step, loop.time) +
                      ": the grid cannot change under 'MPM/Formulation = total "

@@ -132,6 +132,8 @@ namespace dealmpm
         throw with_last_output(error);
       }
     loop.particle_steps += n_particles;
+    if (adaptivity.enabled() && loop.step % adaptivity.step_interval == 0)
+      adapt_grid();
     balance_load();
 
     const bool output_due =
@@ -309,6 +311,13 @@ namespace dealmpm
     if (loop.repartitions > 0)
       pcout << ", " << static_cast<long long>(loop.repartitions)
             << " repartition(s) for load balance";
+    if (loop.adaptations > 0)
+      pcout << ", " << static_cast<long long>(loop.adaptations)
+            << " grid adaptation(s) ("
+            << grid.triangulation.n_global_active_cells() << " cells now)";
+    if (loop.split_particles > 0)
+      pcout << ", " << static_cast<long long>(loop.split_particles)
+            << " particle(s) split";
     if (loop.held_particles > 0)
       pcout << ", " << static_cast<long long>(loop.held_particles)
             << " time(s) a particle was put back on a wall";

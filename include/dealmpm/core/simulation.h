@@ -11,6 +11,7 @@
 #include <dealmpm/diagnostics/statistics.h>
 #include <dealmpm/effects/effect.h>
 #include <dealmpm/effects/effect_list.h>
+#include <dealmpm/grid/adaptivity.h>
 #include <dealmpm/grid/background_grid.h>
 #include <dealmpm/grid/boundary_conditions.h>
 #include <dealmpm/grid/load_balance.h>
@@ -115,6 +116,12 @@ namespace dealmpm
      */
     void
     change_grid(const std::function<void(Triangulation<dim> &)> &set_flags);
+
+    /** Adapt the grid to the scene's 'Adaptivity' criteria (see
+     * grid/adaptivity.h), then split the particles too large for their
+     * new cells. Returns whether any cell was flagged. Collective. */
+    bool
+    adapt_grid();
 
     /** Share the cells among the ranks by their particle weights (see
      * LoadBalanceSettings), the particles going with their cells, and
@@ -266,6 +273,13 @@ namespace dealmpm
      * part that keeps grid data, in change_grid()'s order. */
     void
     rebuild_after_grid_change();
+    /** Refuse what adaptivity cannot run with, then adapt the grid to the
+     * initial particles, a level per round. */
+    void
+    start_adaptivity(SceneReader &reader);
+    /** A timer section, or nothing while the timer is not made yet. */
+    std::unique_ptr<TimerOutput::Scope>
+    timed(const std::string &section);
     /** In the loop: repartition when the particle imbalance passes the
      * limit (checked every few steps). */
     void
@@ -306,6 +320,8 @@ namespace dealmpm
     ConditionalOStream                          pcout;
     std::string                                 scene_file;
     RunSettings                                 run_settings;
+    AdaptivitySettings<dim>                     adaptivity;
+    bool                                        cell_limit_warned = false;
     BackgroundGrid<dim>                         grid;
     BoundaryConditions<dim>                     boundary_conditions;
     std::vector<std::unique_ptr<Material<dim>>> materials;

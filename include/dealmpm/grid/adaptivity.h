@@ -1,0 +1,106 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <dealmpm/base/registry.h>
+#include <dealmpm/base/scene_reader.h>
+#include <dealmpm/grid/background_grid.h>
+#include <dealmpm/particles/particle_set.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace dealmpm
+{
+  using namespace dealii;
+
+  /** What a refinement criterion sees: the grid, the particles and the
+   * levels the scene allows. */
+  template <int dim>
+  struct AdaptivityContext
+  {
+    const BackgroundGrid<dim> &grid;
+    const ParticleSet<dim>    &particles;
+    unsigned int               min_level;
+    unsigned int               max_level;
+    MPI_Comm                   comm;
+  };
+
+  /**
+   * A reason to refine or coarsen the background grid, chosen by name in
+   * 'Adaptivity/Criteria'. It gives each locally owned cell the level it
+   * should have; the grid then takes, per cell, the largest level any
+   * criterion asks for (so a cell is refined if one criterion wants it and
+   * coarsened only if all allow it), within the scene's minimum and
+   * maximum level.
+   */
+  template <int dim>
+  class RefinementCriterion
+  {
+  public:
+    virtual ~RefinementCriterion() = default;
+
+    /** @p levels has one entry per cell of context.grid.cells, in that
+     * order; the criterion writes the level it wants (values outside the
+     * scene's levels are clamped). Collective. */
+    virtual void
+    target_levels(const AdaptivityContext<dim> &context,
+                  std::vector<int>             &levels) const = 0;
+  };
+
+  /** The registered criteria; each reads its parameters from
+   * 'Adaptivity/<Name>' (section_title of its name). Register your own
+   * before the scene is read (see examples/custom_refinement.cc). */
+  template <int dim>
+  Registry<RefinementCriterion<dim>> &
+  refinement_criterion_registry();
+
+  /** The "Adaptivity" section. */
+  template <int dim>
+  struct AdaptivitySettings
+  {
+    std::vector<std::unique_ptr<RefinementCriterion<dim>>> criteria;
+    std::vector<std::string>                               names;
+    unsigned int                                           step_interval = 10;
+    unsigned int                                           min_level     = 0;
+    unsigned int                                           max_level     = 2;
+    double                                                 max_cells     = 1e6;
+    bool                                                   split         = true;
+    unsigned int particles_per_direction                                 = 2;
+
+    bool
+    enabled() const
+    {
+      return !criteria.empty();
+    }
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /** Read and check the section (the reader at the top level). */
+    static AdaptivitySettings
+    read(SceneReader &reader);
+  };
+
+  /**
+   * The level each locally owned cell should have: the largest of the
+   * criteria's, clamped to [min_level, max_level]. Collective.
+   */
+  template <int dim>
+  std::vector<int>
+  target_levels(const AdaptivitySettings<dim> &settings,
+                const AdaptivityContext<dim>  &context);
+
+  /**
+   * Flag the cells of @p grid whose level differs from @p levels (from
+   * target_levels()); refinement flags are dropped when the grid would
+   * have more than @p max_cells cells. Returns whether they were dropped.
+   * Collective.
+   */
+  template <int dim>
+  bool
+  flag_cells(const BackgroundGrid<dim> &grid,
+             const std::vector<int>    &levels,
+             const double               max_cells);
+} // namespace dealmpm

@@ -1,0 +1,219 @@
+// The grid adapting to the particles: splitting keeps what it must, the
+// criteria refine where they should and nowhere else, a run conserves
+// through refinement, coarsening and splitting, and what adaptivity
+// cannot run with is refused. Runs on 1 rank and, through ctest, on 2.
+#include <deal.II/base/mpi.h>
+
+#include <dealmpm/particles/split_particles.h>
+
+#include <gtest/gtest.h>
+
+#include <set>
+#include <utility>
+
+#include "test_scene.h"
+
+using namespace dealmpm;
+
+namespace
+{
+  /** Mass, momentum, first moment of mass and volume of all particles. */
+  template <int dim>
+  std::vector<double>
+  moments(Simulation<dim> &simulation)
+  {
+    const CoreFields   &f = simulation.particle_set().fields;
+    std::vector<double> m(2 + 2 * dim, 0.);
+    for (const auto &p : simulation.particle_set().handler)
+      {
+        const auto props = p.get_properties();
+        m[0] += props[f.mass];
+        m[1] += props[f.initial_volume];
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            m[2 + d] += props[f.mass] * props[f.velocity + d];
+            m[2 + dim + d] += props[f.mass] * p.get_location()[d];
+          }
+      }
+    std::vector<double> total(m.size());
+    Utilities::MPI::sum(make_array_view(std::as_const(m)),
+                        MPI_COMM_WORLD,
+                        make_array_view(total));
+    return total;
+  }
+
+  template <int dim>
+  void
+  split_after_refinement(const std::string &kernel)
+  {
+    SCOPED_TRACE(kernel + " in " + std::to_string(dim) + "D");
+    const std::string grid =
+      dim == 2 ? "set Cells = 8, 8\n" : "set Cells = 4, 4, 4\n";
+    const std::string box =
+      dim == 2 ? " set Lower corner = 0.3, 0.3\n set Upper corner = 0.6, "
+                 "0.55\n set Velocity = 1, 0.5\n" :
+                 " set Lower corner = 0.3, 0.3, 0.3\n set Upper corner = "
+                 "0.6, 0.55, 0.7\n set Velocity = 1, 0.5, -0.2\n";
+    auto simulation = test::make_simulation<dim>(
+      "set Dimension = " + std::to_string(dim) + "\nsubsection Grid\n" + grid +
+      "end\nsubsection MPM\n set Shape function = " + kernel +
+      "\nend\nsubsection Body 1\n" + box + "end\n");
+    // A deformed state, so that F maps the parts' offsets.
+    for (unsigned int i = 0; i < 3; ++i)
+      simulation->advance(simulation->time_step());
+    const std::vector<double> before = moments(*simulation);
+    const Statistics          s0     = simulation->statistics();
+    simulation->change_grid([&](Triangulation<dim> &) {
+      for (const GridCell<dim> &c : simulation->background_grid().cells)
+        c.cell->set_refine_flag();
+    });
+    const double     n_split = split_particles(simulation->background_grid(),
+                                           simulation->particle_set(),
+                                           2);
+    const Statistics s1      = simulation->statistics();
+    // Every particle filled a quarter (an eighth) of its old cell, which
+    // is now its new cell's whole: all split.
+    EXPECT_EQ(n_split, s0.n_particles);
+    EXPECT_EQ(s1.n_particles, s0.n_particles * (1u << dim));
+    const std::vector<double> after = moments(*simulation);
+    for (unsigned int i = 0; i < before.size(); ++i)
+      EXPECT_NEAR(after[i], before[i], 1e-13 * std::abs(before[0] + 1.))
+        << "moment " << i;
+    EXPECT_NEAR(s1.kinetic_energy,
+                s0.kinetic_energy,
+                1e-13 * s0.kinetic_energy);
+    EXPECT_NEAR(s1.strain_energy,
+                s0.strain_energy,
+                1e-12 * s0.strain_energy + 1e-300);
+    // Ids unique on all ranks.
+    std::vector<double> ids;
+    for (const auto &p : simulation->particle_set().handler)
+      ids.push_back(p.get_id());
+    const std::vector<std::vector<double>> all =
+      Utilities::MPI::all_gather(MPI_COMM_WORLD, ids);
+    std::set<double> unique;
+    std::size_t      n = 0;
+    for (const auto &rank : all)
+      {
+        unique.insert(rank.begin(), rank.end());
+        n += rank.size();
+      }
+    EXPECT_EQ(unique.size(), n);
+    // A step on: the nodes carry all the mass.
+    simulation->advance(simulation->time_step());
+    EXPECT_NEAR(simulation->nodal_fields().mass.l1_norm(),
+                s0.mass,
+                1e-12 * s0.mass);
+  }
+} // namespace
+
+TEST(Adaptivity, SplittingKeepsMassVolumeMomentumAndFirstMoment)
+{
+  split_after_refinement<2>("linear");
+  split_after_refinement<2>("cpGIMP");
+  split_after_refinement<2>("CPDI");
+  split_after_refinement<3>("uGIMP");
+}
+
+namespace
+{
+  const std::string corner_block =
+    "subsection Grid\n set Cells = 8, 8\nend\n"
+    "subsection Body 1\n set Lower corner = 0.05, 0.05\n"
+    " set Upper corner = 0.3, 0.3\n set Velocity = 0.2, 0.1\nend\n"
+    "subsection Adaptivity\n set Criteria = particles\n set Minimum level = 0\n"
+    " set Maximum level = 2\nend\n";
+}
+
+TEST(Adaptivity, ParticlesCriterionRefinesTheMaterialAndItsBufferOnly)
+{
+  auto                     simulation = test::make_simulation<2>(corner_block);
+  const BackgroundGrid<2> &grid       = simulation->background_grid();
+  const auto              &handler    = simulation->particle_set().handler;
+  // The block's 8 x 8 coarse cells... the block covers 2 x 2 coarse cells
+  // of 1/8; with a buffer of one cell around it.
+  for (const GridCell<2> &c : grid.cells)
+    {
+      const Point<2> x      = c.cell->center();
+      const bool     filled = handler.n_particles_in_cell(c.cell) > 0;
+      if (filled)
+        {
+          EXPECT_EQ(c.cell->level(), 2) << x;
+          // Split to 2 x 2 per cell again.
+          EXPECT_EQ(handler.n_particles_in_cell(c.cell), 4u) << x;
+        }
+      if (x[0] > 0.55 || x[1] > 0.55)
+        EXPECT_EQ(c.cell->level(), 0) << x;
+    }
+  // The same mass as the unrefined block.
+  auto uniform = test::make_simulation<2>(
+    corner_block + "subsection Adaptivity\n set Criteria =\nend\n");
+  EXPECT_NEAR(simulation->statistics().mass, uniform->statistics().mass, 1e-13);
+  EXPECT_EQ(simulation->statistics().n_particles,
+            16 * uniform->statistics().n_particles);
+}
+
+TEST(Adaptivity, RunConservesThroughRefinementCoarseningAndSplitting)
+{
+  // The block flies across the grid: cells are refined ahead of it and
+  // coarsened behind it every 5 steps.
+  auto simulation = test::make_simulation<2>(
+    corner_block + "subsection Adaptivity\n set Steps between adaptations = 5\n"
+                   " set Maximum level = 1\nend\n"
+                   "subsection Body 1\n set Velocity = 2, 1\nend\n");
+  const Statistics start = simulation->statistics();
+  const double     cells_before =
+    simulation->background_grid().triangulation.n_global_active_cells();
+  double n_cells_changed = 0;
+  while (simulation->time() < 0.2)
+    {
+      simulation->advance(simulation->time_step());
+      if (simulation->step_number() % 5 == 0)
+        {
+          simulation->adapt_grid();
+          n_cells_changed +=
+            simulation->background_grid()
+              .triangulation.n_global_active_cells() != cells_before;
+        }
+    }
+  const Statistics end = simulation->statistics();
+  EXPECT_GT(n_cells_changed, 0);
+  EXPECT_GE(end.n_particles, start.n_particles);
+  EXPECT_NEAR(end.mass, start.mass, 1e-13 * start.mass);
+  for (unsigned int d = 0; d < 2; ++d)
+    EXPECT_NEAR(end.momentum[d], start.momentum[d], 1e-12 * start.mass);
+  EXPECT_NEAR(end.kinetic_energy + end.strain_energy,
+              start.kinetic_energy,
+              0.02 * start.kinetic_energy);
+}
+
+TEST(Adaptivity, VelocityJumpRefinesWhereTheBodiesMeet)
+{
+  // Two blocks side by side, moving apart, meet in the cells around
+  // x = 0.5: only those differ in velocity.
+  auto simulation = test::make_simulation<2>(
+    "set Number of bodies = 2\nsubsection Grid\n set Cells = 5, 5\nend\n"
+    "subsection Body 1\n set Lower corner = 0.1, 0.1\n"
+    " set Upper corner = 0.5, 0.9\n set Velocity = -0.1, 0\nend\n"
+    "subsection Body 2\n set Lower corner = 0.5, 0.1\n"
+    " set Upper corner = 0.9, 0.9\n set Velocity = 0.1, 0\nend\n"
+    "subsection Adaptivity\n set Criteria = velocity jump\n"
+    " set Maximum level = 1\nend\n",
+    2);
+  for (const GridCell<2> &c : simulation->background_grid().cells)
+    {
+      const double x = c.cell->center()[0];
+      EXPECT_EQ(c.cell->level(), (x > 0.4 && x < 0.6) ? 1 : 0) << x;
+    }
+}
+
+TEST(Adaptivity, RefusedWhereItCannotWork)
+{
+  const std::string with = corner_block + "subsection MPM\n set ";
+  EXPECT_THROW(test::make_simulation<2>(
+                 with + "Shape function = quadratic B-spline\nend\n"),
+               InputError);
+  EXPECT_THROW(test::make_simulation<2>(
+                 with + "Formulation = total Lagrangian\nend\n"),
+               InputError);
+}
