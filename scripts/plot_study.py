@@ -100,17 +100,23 @@ def main(study_csv, folder):
 
 
 def kernel_label(r):
-    """The shape function, marked TL for total-Lagrangian runs (studies
-    written before the formulation axis have no such column)."""
+    """The shape function, marked TL for total-Lagrangian runs and
+    "adaptive" for runs on an adaptive grid (studies written before those
+    axes have no such columns)."""
     total = r.get("formulation") == "total Lagrangian"
-    return ("TL " if total else "") + r["shape_function"]
+    adaptive = r.get("adaptivity") == "on"
+    return ("TL " if total else "") + r["shape_function"] + (" adaptive" if adaptive else "")
 
 
 def marker_style(r):
-    """The shape function's marker, hollow for total-Lagrangian runs."""
+    """The shape function's marker, hollow for total-Lagrangian runs, with
+    a thick black edge on an adaptive grid."""
     total = r.get("formulation") == "total Lagrangian"
-    return dict(marker=MARKERS.get(r["shape_function"], "x"),
-                fillstyle="none" if total else "full")
+    style = dict(marker=MARKERS.get(r["shape_function"], "x"),
+                 fillstyle="none" if total else "full")
+    if r.get("adaptivity") == "on":
+        style.update(markeredgecolor="black", markeredgewidth=1.8)
+    return style
 
 
 def write_rates(groups, path):

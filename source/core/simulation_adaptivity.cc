@@ -58,6 +58,7 @@ namespace dealmpm
   bool
   Simulation<dim>::adapt_grid()
   {
+    bool changed = false;
     {
       const auto             t = timed("adaptivity: criteria");
       const std::vector<int> levels =
@@ -78,18 +79,21 @@ namespace dealmpm
       double flagged = 0;
       for (const GridCell<dim> &c : grid.cells)
         flagged += c.cell->refine_flag_set() || c.cell->coarsen_flag_set();
-      if (Utilities::MPI::sum(flagged, comm) == 0)
-        return false;
+      changed = Utilities::MPI::sum(flagged, comm) > 0;
     }
-    change_grid([](Triangulation<dim> &) {});
-    ++loop.adaptations;
+    if (changed)
+      {
+        change_grid([](Triangulation<dim> &) {});
+        ++loop.adaptations;
+      }
+    // Also on an unchanged grid: particles may have moved into finer cells.
     if (adaptivity.split)
       {
         const auto t = timed("adaptivity: split");
         loop.split_particles +=
           split_particles(grid, *particles, adaptivity.particles_per_direction);
       }
-    return true;
+    return changed;
   }
 
   template void

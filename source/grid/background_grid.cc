@@ -24,9 +24,12 @@ namespace dealmpm
   BackgroundGrid<dim>::BackgroundGrid(const MPI_Comm comm)
     : comm(comm)
     , triangulation(comm,
-                    typename Triangulation<dim>::MeshSmoothing(
-                      Triangulation<dim>::smoothing_on_refinement |
-                      Triangulation<dim>::smoothing_on_coarsening))
+                    // The level difference of cells sharing a vertex is
+                    // at most one (what the kernels across hanging nodes
+                    // assume). Smoothing beyond that (islands, patches)
+                    // acts on each rank's own cells and made the same
+                    // adaptation give different grids on 1 and 2 ranks.
+                    Triangulation<dim>::limit_level_difference_at_vertices)
     , fe(1)
     , dof_handler(triangulation)
   {}

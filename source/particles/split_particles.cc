@@ -28,21 +28,11 @@ namespace dealmpm
             0.5 * c.measure / per_cell)
           parents.push_back(p);
 
-    // Ids above every id in use, in rank order.
+    // Ids above every id in use, each parent's parts in a range of its
+    // own: the same ids on any number of ranks.
     const types::particle_index n_new = parents.size() * (n_parts - 1);
-    types::particle_index       first_id =
+    const types::particle_index first_id =
       particles.handler.get_next_free_particle_index();
-    {
-      types::particle_index before = 0;
-      MPI_Exscan(&n_new,
-                 &before,
-                 1,
-                 Utilities::MPI::mpi_type_id_for_type<types::particle_index>,
-                 MPI_SUM,
-                 grid.comm);
-      if (Utilities::MPI::this_mpi_process(grid.comm) > 0)
-        first_id += before;
-    }
 
     struct Part
     {
@@ -52,6 +42,8 @@ namespace dealmpm
     };
     std::vector<Part> parts;
     parts.reserve(n_new);
+    std::vector<types::particle_index> ids;
+    ids.reserve(n_new);
     for (auto &p : parents)
       {
         const auto           props = p->get_properties();
@@ -87,6 +79,7 @@ namespace dealmpm
             write_vector<dim>(&part.properties[f.displacement],
                               displacement + strain * o);
             parts.push_back(std::move(part));
+            ids.push_back(first_id + p->get_id() * (n_parts - 1) + k - 1);
           }
         // The parent becomes part 0.
         const Tensor<1, dim> o = offset(0);
@@ -96,7 +89,7 @@ namespace dealmpm
     for (std::size_t i = 0; i < parts.size(); ++i)
       particles.handler.insert_particle(parts[i].location,
                                         Point<dim>(),
-                                        first_id + i,
+                                        ids[i],
                                         parts[i].cell,
                                         make_array_view(parts[i].properties));
     // The parts may lie in a neighbouring cell (or rank).

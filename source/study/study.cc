@@ -101,30 +101,32 @@ namespace dealmpm
               const std::string &folder)
     {
       std::vector<StudyRun> runs;
-      for (const auto &formulation : list(reader.get("Formulations")))
-        for (const auto &kernel : list(reader.get("Shape functions")))
-          for (const auto &scheme : list(reader.get("Stress updates")))
-            for (const auto &velocity : list(reader.get("Velocity updates")))
-              for (const auto &ppc : list(reader.get("Particles per cell")))
-                for (const auto &cfl : list(reader.get("CFL numbers")))
-                  for (const auto &level : list(reader.get("Refinements")))
-                    {
-                      StudyRun r;
-                      r.index              = runs.size() + 1;
-                      r.formulation        = formulation;
-                      r.shape_function     = kernel;
-                      r.stress_update      = scheme;
-                      r.velocity_update    = velocity;
-                      r.particles_per_cell = std::stoi(ppc);
-                      r.cfl_number         = std::stod(cfl);
-                      r.refinement         = std::stoi(level);
-                      r.h = (h > 0 ? h : 1.) / std::pow(2., r.refinement);
-                      std::ostringstream name;
-                      name << folder << "/runs/" << std::setw(3)
-                           << std::setfill('0') << r.index;
-                      r.folder = name.str();
-                      runs.push_back(r);
-                    }
+      for (const auto &adaptivity : list(reader.get("Adaptivity")))
+        for (const auto &formulation : list(reader.get("Formulations")))
+          for (const auto &kernel : list(reader.get("Shape functions")))
+            for (const auto &scheme : list(reader.get("Stress updates")))
+              for (const auto &velocity : list(reader.get("Velocity updates")))
+                for (const auto &ppc : list(reader.get("Particles per cell")))
+                  for (const auto &cfl : list(reader.get("CFL numbers")))
+                    for (const auto &level : list(reader.get("Refinements")))
+                      {
+                        StudyRun r;
+                        r.index              = runs.size() + 1;
+                        r.formulation        = formulation;
+                        r.adaptive           = adaptivity == "on";
+                        r.shape_function     = kernel;
+                        r.stress_update      = scheme;
+                        r.velocity_update    = velocity;
+                        r.particles_per_cell = std::stoi(ppc);
+                        r.cfl_number         = std::stod(cfl);
+                        r.refinement         = std::stoi(level);
+                        r.h = (h > 0 ? h : 1.) / std::pow(2., r.refinement);
+                        std::ostringstream name;
+                        name << folder << "/runs/" << std::setw(3)
+                             << std::setfill('0') << r.index;
+                        r.folder = name.str();
+                        runs.push_back(r);
+                      }
       return runs;
     }
 
@@ -237,6 +239,14 @@ namespace dealmpm
                       Patterns::List(
                         Patterns::Selection(formulation_pattern())),
                       "Axis: 'MPM/Formulation'.");
+    prm.declare_entry(
+      "Adaptivity",
+      "off",
+      Patterns::List(Patterns::Selection("off|on")),
+      "Axis: 'on' adapts the grid to the particles ('Adaptivity/Criteria = "
+      "particles'): cells with particles (and one cell around them) one "
+      "level finer than the run's refinement, the others at it; compare "
+      "with the uniform grid one refinement finer.");
     prm.declare_entry("Particles per cell",
                       "2",
                       Patterns::List(Patterns::Integer(1, 20)),

@@ -51,7 +51,8 @@ namespace dealmpm
         s << r.formulation << ", ";
       s << r.shape_function << ", " << r.stress_update << ", "
         << r.velocity_update << ", " << r.particles_per_cell
-        << " ppc, refinement " << r.refinement << ", CFL " << r.cfl_number;
+        << " ppc, refinement " << r.refinement
+        << (r.adaptive ? " (adaptive)" : "") << ", CFL " << r.cfl_number;
       return s.str();
     }
 
@@ -113,6 +114,14 @@ namespace dealmpm
       settings.push_back("MPM/Stress update=" + r.stress_update);
       settings.push_back("MPM/Velocity update=" + r.velocity_update);
       settings.push_back("Time/CFL number=" + number(r.cfl_number, 12));
+      if (r.adaptive)
+        {
+          settings.push_back("Adaptivity/Criteria=particles");
+          settings.push_back("Adaptivity/Minimum level=" +
+                             std::to_string(r.refinement));
+          settings.push_back("Adaptivity/Maximum level=" +
+                             std::to_string(r.refinement + 1));
+        }
       for (unsigned int b = 1; b <= plan.n_bodies; ++b)
         settings.push_back(
           "Body " + std::to_string(b) +

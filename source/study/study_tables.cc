@@ -49,7 +49,7 @@ namespace dealmpm
              "particles_per_cell,refinement,h,cfl_number,error_L2,error_max,"
              "wall_time,steps,particles,particle_steps_per_second,"
              "peak_memory_MB,energy_drift,momentum_drift,min_J,max_cfl,"
-             "pareto_optimal,reason\n";
+             "pareto_optimal,reason,adaptivity\n";
       csv << std::setprecision(8);
       for (const StudyRun &r : runs)
         csv << r.index << ',' << r.status << ',' << r.formulation << ','
@@ -63,7 +63,8 @@ namespace dealmpm
             << number(r.peak_memory, 6) << ',' << number(r.energy_drift, 6)
             << ',' << number(r.momentum_drift, 6) << ',' << number(r.min_J, 6)
             << ',' << number(r.max_cfl, 6) << ',' << (r.pareto_optimal ? 1 : 0)
-            << ',' << csv_text(r.reason) << '\n';
+            << ',' << csv_text(r.reason) << ',' << (r.adaptive ? "on" : "off")
+            << '\n';
     }
 
     /** Finished runs by error, then the ones that stopped or failed: the
@@ -104,10 +105,11 @@ namespace dealmpm
          << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
       for (const StudyRun *r : by_error(runs))
         {
-          md << "| " << r->index << " | " << r->formulation << " | "
-             << r->shape_function << " | " << r->stress_update << " | "
-             << r->velocity_update << " | " << r->particles_per_cell << " | "
-             << number(r->h, 3) << " | " << r->cfl_number << " | ";
+          md << "| " << r->index << " | " << r->formulation
+             << (r->adaptive ? ", adaptive" : "") << " | " << r->shape_function
+             << " | " << r->stress_update << " | " << r->velocity_update
+             << " | " << r->particles_per_cell << " | " << number(r->h, 3)
+             << " | " << r->cfl_number << " | ";
           if (r->status == "ok")
             md << number(r->error_L2, 3) << " | " << number(r->error_max, 3)
                << " | " << number(r->wall_time, 3) << " | "

@@ -169,6 +169,20 @@ expect 2 "Damage/Failure.*expected a value >= 'Onset'" \
   "$scene" "${s[@]}" "${d[@]}" -s "Damage/Onset=0.2" -s "Damage/Failure=0.1"
 expect 2 "Damage/Onset.*expected a strain > 0" \
   "$scene" "${s[@]}" "${d[@]}" -s "Damage/Onset=0"
+adapt=(-s "Adaptivity/Criteria=particles")
+expect 2 "Adaptivity/Criteria.*expected none with 'MPM/Shape function = quadratic B-spline'" \
+  "$scene" "${s[@]}" "${adapt[@]}" -s "MPM/Shape function=quadratic B-spline"
+expect 2 "Adaptivity/Criteria.*expected none under 'MPM/Formulation = total Lagrangian'" \
+  "$scene" "${s[@]}" "${adapt[@]}" -s "MPM/Formulation=total Lagrangian"
+expect 2 "Adaptivity/Split particles.*expected false with 'traction'" \
+  "$scene" "${s[@]}" "${adapt[@]}" "${t[@]}" -s "Traction/Bodies=1"
+expect 2 "Adaptivity/Maximum level.*expected a level at least 'Minimum level'" \
+  "$scene" "${s[@]}" "${adapt[@]}" -s "Adaptivity/Minimum level=2" -s "Adaptivity/Maximum level=1"
+expect 2 "Adaptivity/Velocity jump/Coarsen fraction.*expected a number below Refine fraction" \
+  "$scene" "${s[@]}" -s "Adaptivity/Criteria=velocity jump" -s "Adaptivity/Velocity jump/Coarsen fraction=0.5"
+expect 2 "Adaptivity/Criteria.*expected a comma-separated list of" "$scene" "${s[@]}" -s "Adaptivity/Criteria=particles, everywhere"
+# Resuming where no run saved itself.
+expect 2 "checkpoints: no such folder of checkpoints" "$scene" "${s[@]}" --resume
 touch afile
 expect 2 "Output/Directory.*expected a folder that can be created and written" "$scene" -s "Output/Directory=afile/sub"
 # The same under MPI must not hang (only rank 0 makes folders).

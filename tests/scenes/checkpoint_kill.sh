@@ -5,7 +5,8 @@
 # and final particles; 1 rank bit for bit, 2 ranks to round-off), with
 # statistics.csv and particles.pvd as the uninterrupted run's (no
 # duplicate rows or entries, every listed file there). A checkpoint of 2
-# ranks resumes on 3 and on 1, one of 1 rank on 2 (repartitioned). SIGTERM
+# ranks resumes on 3 and on 1, one of 1 rank on 2 (repartitioned), also
+# with an adaptive grid. SIGTERM
 # saves one. A scene changed in what matters is refused with one line, a
 # damaged newest checkpoint is passed over for the one before, a folder
 # without checkpoints is refused, and a run that does not resume removes
@@ -115,6 +116,21 @@ cp -r ref1 from1 && rm -rf from1/checkpoints/checkpoint-00000320 from1/checkpoin
 grep -q "warning: from1/checkpoints/latest is missing; resuming from the newest whole checkpoint, checkpoint-00000280" from1.log \
   || fail "from1: no warning about the missing pointer"
 same_run from1 ref1 1e-9
+
+# An adaptive grid (refined around the disks, particles split) saved on 2
+# ranks resumes on 3 and on 1, repartitioned.
+adaptive=(-s "Adaptivity/Criteria=particles" -s "Adaptivity/Steps between adaptations=5")
+"$mpirun" "${flags[@]}" -np 2 "$dealmpm" "$scene" -s "Output/Directory=adapt2" "${run[@]}" "${adaptive[@]}" \
+  > adapt2.log 2>&1 || fail "adapt2: the run failed"
+grep -q "grid adaptation(s)" adapt2.log || fail "adapt2: the grid was not adapted"
+for n in 3 1; do
+  cp -r adapt2 adapt2-on$n && rm -rf adapt2-on$n/checkpoints/checkpoint-00000320
+  "$mpirun" "${flags[@]}" -np $n "$dealmpm" "$scene" -s "Output/Directory=adapt2-on$n" "${run[@]}" "${adaptive[@]}" \
+    --resume > adapt2-on$n.log 2>&1 || fail "adapt2-on$n: the resume failed: $(tail -1 adapt2-on$n.log)"
+  grep -q "resumed from adapt2-on$n/checkpoints/checkpoint-00000280 at step 280" adapt2-on$n.log \
+    || fail "adapt2-on$n: not resumed from step 280"
+  same_run adapt2-on$n adapt2 1e-9
+done
 
 # SIGTERM saves the run (after its current step), which then resumes.
 "$dealmpm" "$scene" -s "Output/Directory=term" "${run[@]}" -s "Checkpoint/Steps between checkpoints=0" \

@@ -88,6 +88,16 @@ compare_ranks sliding "$dir/../tests/data/sliding_block.prm" -s "Load balance/Ch
 n=$(grep -o "[0-9]* repartition(s)" "$work/sliding3.log" | cut -d' ' -f1)
 echo "sliding: ${n:-0} repartitions on 3 ranks"
 [ "${n:-0}" -ge 3 ] || { echo "sliding: the partition did not follow the block"; exit 1; }
+# Adaptivity: the block sliding through the grid refined around it (a
+# buffer of one cell, particles split) and coarsened behind it every 5
+# steps, with the repartitions that come with each change; the disks
+# refined where their velocities jump, cpGIMP.
+compare_ranks adaptive "$dir/../tests/data/sliding_block.prm" -s "Adaptivity/Criteria=particles" \
+  -s "Adaptivity/Steps between adaptations=5" -s "Adaptivity/Maximum level=1"
+grep -q "grid adaptation(s)" "$work/adaptive3.log" || { echo "adaptive: the grid was not adapted"; exit 1; }
+compare_ranks adaptive_jump "$disks" "${fast[@]}" -s "Adaptivity/Criteria=velocity jump, particles" \
+  -s "Adaptivity/Particles/Level=0" -s "Adaptivity/Maximum level=1" -s "MPM/Shape function=cpGIMP"
+grep -q "grid adaptation(s)" "$work/adaptive_jump3.log" || { echo "adaptive_jump: the grid was not adapted"; exit 1; }
 # Every 7 steps whatever the imbalance (the limit out of reach): 53 steps,
 # the start's and 7 more.
 ranks=(1 2)

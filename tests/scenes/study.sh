@@ -28,7 +28,7 @@ grep -q "study: 8 of 8 done" out.txt || fail "study: no progress line for the la
 grep -q "ETA" out.txt || fail "study: progress without ETA"
 csv=tiny/study.csv
 [ -s $csv ] || fail "study: no study.csv"
-header="run,status,formulation,shape_function,stress_update,velocity_update,particles_per_cell,refinement,h,cfl_number,error_L2,error_max,wall_time,steps,particles,particle_steps_per_second,peak_memory_MB,energy_drift,momentum_drift,min_J,max_cfl,pareto_optimal,reason"
+header="run,status,formulation,shape_function,stress_update,velocity_update,particles_per_cell,refinement,h,cfl_number,error_L2,error_max,wall_time,steps,particles,particle_steps_per_second,peak_memory_MB,energy_drift,momentum_drift,min_J,max_cfl,pareto_optimal,reason,adaptivity"
 [ "$(head -1 $csv)" = "$header" ] || fail "study: header $(head -1 $csv)"
 [ "$(wc -l < $csv)" = 9 ] || fail "study: $(($(wc -l < $csv) - 1)) rows, expected 8"
 ok=$(grep -c ",ok,updated Lagrangian,CPDI,.*,APIC," $csv)

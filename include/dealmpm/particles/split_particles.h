@@ -16,7 +16,8 @@ namespace dealmpm
    * volume and the first moment of mass are kept exactly); velocity,
    * stress, F, APIC's B, internal variables and effects' fields are
    * copied, the displacement is the part's own (u + (F - I) offset), GIMP
-   * half-lengths are halved. The parts get new ids above every id in use.
+   * half-lengths are halved. The parts get new ids above every id in use,
+   * from their parent's (the same on any number of ranks).
    * Returns the number of particles split on all ranks. Collective; the
    * particles are sorted into their cells afterwards.
    */

@@ -19,7 +19,10 @@ namespace dealmpm
     unsigned int particles_per_cell = 0;
     std::string  formulation, shape_function, stress_update, velocity_update;
     double       cfl_number = 0;
-    std::string  folder;
+    /** Adaptivity on: cells with particles one level finer than the
+     * run's refinement, the others at it. */
+    bool        adaptive = false;
+    std::string folder;
 
     std::string status = "not run"; ///< ok | stopped | failed
     std::string reason;
