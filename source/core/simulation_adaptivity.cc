@@ -76,6 +76,9 @@ namespace dealmpm
                 << adaptivity.max_cells << " cells" << std::endl;
           cell_limit_warned = true;
         }
+      // Coarsening flags of incomplete families go, and the level rule
+      // may add refinement: count what will change.
+      grid.triangulation.prepare_coarsening_and_refinement();
       double flagged = 0;
       for (const GridCell<dim> &c : grid.cells)
         flagged += c.cell->refine_flag_set() || c.cell->coarsen_flag_set();

@@ -28,6 +28,13 @@ namespace dealmpm
             0.5 * c.measure / per_cell)
           parents.push_back(p);
 
+    // Nothing to split anywhere: no sort either (the usual case between
+    // refinements).
+    const double n_split =
+      Utilities::MPI::sum(double(parents.size()), grid.comm);
+    if (n_split == 0)
+      return 0;
+
     // Ids above every id in use, each parent's parts in a range of its
     // own: the same ids on any number of ranks.
     const types::particle_index n_new = parents.size() * (n_parts - 1);
@@ -94,7 +101,7 @@ namespace dealmpm
                                         make_array_view(parts[i].properties));
     // The parts may lie in a neighbouring cell (or rank).
     particles.handler.sort_particles_into_subdomains_and_cells();
-    return Utilities::MPI::sum(double(parents.size()), grid.comm);
+    return n_split;
   }
 
   template double
