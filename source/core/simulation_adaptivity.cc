@@ -46,17 +46,41 @@ namespace dealmpm
     // A resumed run has its adapted grid from the checkpoint.
     if (!resumed_checkpoint.empty())
       return;
-    // One level per round: the particles criterion refines only the cells
-    // that hold particles now.
+    // One level per round (the particles criterion refines only the cells
+    // that hold particles now); after each, the bodies are filled again on
+    // the new grid: particles made in their cells with the body's and the
+    // effects' exact initial state, where split parts would copy their
+    // parent's.
     for (unsigned int round = 0; round <= adaptivity.max_level; ++round)
-      if (!adapt_grid())
-        break;
+      {
+        if (!change_grid_to_criteria())
+          break;
+        particles.reset();
+        create_particles(reader, nullptr);
+      }
     loop.adaptations = 0;
   }
 
   template <int dim>
   bool
   Simulation<dim>::adapt_grid()
+  {
+    const bool changed = change_grid_to_criteria();
+    if (changed)
+      ++loop.adaptations;
+    // Also on an unchanged grid: particles may have moved into finer cells.
+    if (adaptivity.split)
+      {
+        const auto t = timed("adaptivity: split");
+        loop.split_particles +=
+          split_particles(grid, *particles, adaptivity.particles_per_direction);
+      }
+    return changed;
+  }
+
+  template <int dim>
+  bool
+  Simulation<dim>::change_grid_to_criteria()
   {
     bool changed = false;
     {
@@ -85,17 +109,7 @@ namespace dealmpm
       changed = Utilities::MPI::sum(flagged, comm) > 0;
     }
     if (changed)
-      {
-        change_grid([](Triangulation<dim> &) {});
-        ++loop.adaptations;
-      }
-    // Also on an unchanged grid: particles may have moved into finer cells.
-    if (adaptivity.split)
-      {
-        const auto t = timed("adaptivity: split");
-        loop.split_particles +=
-          split_particles(grid, *particles, adaptivity.particles_per_direction);
-      }
+      change_grid([](Triangulation<dim> &) {});
     return changed;
   }
 
@@ -103,6 +117,10 @@ namespace dealmpm
   Simulation<2>::start_adaptivity(SceneReader &);
   template void
   Simulation<3>::start_adaptivity(SceneReader &);
+  template bool
+  Simulation<2>::change_grid_to_criteria();
+  template bool
+  Simulation<3>::change_grid_to_criteria();
   template bool
   Simulation<2>::adapt_grid();
   template bool

@@ -274,9 +274,14 @@ namespace dealmpm
     void
     rebuild_after_grid_change();
     /** Refuse what adaptivity cannot run with, then adapt the grid to the
-     * initial particles, a level per round. */
+     * initial particles, a level per round, filling the bodies again on
+     * each new grid. */
     void
     start_adaptivity(SceneReader &reader);
+    /** Flag the cells by the criteria and change the grid if any cell
+     * changes; returns whether one did. Collective. */
+    bool
+    change_grid_to_criteria();
     /** A timer section, or nothing while the timer is not made yet. */
     std::unique_ptr<TimerOutput::Scope>
     timed(const std::string &section);
