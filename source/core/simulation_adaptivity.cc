@@ -35,6 +35,13 @@ namespace dealmpm
                     "none with 'MPM/Shape function = quadratic B-spline', "
                     "which needs a uniform grid (refined cells make hanging "
                     "nodes): use linear, uGIMP, cpGIMP or CPDI");
+      if (adaptivity.merge)
+        for (unsigned int e = 0; e < effects.size(); ++e)
+          if (!effects[e]->particle_fields().empty())
+            reader.fail("Merge particles",
+                        "false with '" + effect_names[e] +
+                          "', whose particle fields a merge would average "
+                          "(a surface particle's area is not an average)");
       if (adaptivity.split)
         for (unsigned int e = 0; e < effects.size(); ++e)
           if (!effects[e]->particle_fields().empty())

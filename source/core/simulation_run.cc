@@ -318,6 +318,9 @@ namespace dealmpm
     if (loop.split_particles > 0)
       pcout << ", " << static_cast<long long>(loop.split_particles)
             << " particle(s) split";
+    if (loop.merged_particles > 0)
+      pcout << ", " << static_cast<long long>(loop.merged_particles)
+            << " particle(s) merged away";
     if (loop.held_particles > 0)
       pcout << ", " << static_cast<long long>(loop.held_particles)
             << " time(s) a particle was put back on a wall";

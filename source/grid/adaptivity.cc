@@ -301,6 +301,16 @@ namespace dealmpm
       "moment of mass kept; stress, F and internal variables copied) when "
       "its cell is too small for it (see 'Particles per cell'), so that "
       "refined cells keep enough particles.");
+    prm.declare_entry(
+      "Merge particles",
+      "false",
+      Patterns::Bool(),
+      "Merge the particles of coarsened cells where 2^dim or more of one "
+      "body and material lie in the same of the cell's 'Particles per "
+      "cell'^dim sub-cells (as the parts of a split particle do): they "
+      "become one (mass, momentum, the "
+      "first moment of mass and the current volume kept; F, stress and "
+      "internal variables averaged: their spread is lost).");
     prm.declare_entry("Particles per cell",
                       "2",
                       Patterns::Integer(1, 10),

@@ -2,7 +2,10 @@
 
 #include <dealmpm/particles/split_particles.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <map>
 #include <vector>
 
 namespace dealmpm
@@ -110,6 +113,120 @@ namespace dealmpm
                   const unsigned int);
   template double
   split_particles(const BackgroundGrid<3> &,
+                  ParticleSet<3> &,
+                  const unsigned int);
+} // namespace dealmpm
+
+namespace dealmpm
+{
+  template <int dim>
+  double
+  merge_particles(const BackgroundGrid<dim> &grid,
+                  ParticleSet<dim>          &particles,
+                  const unsigned int         particles_per_direction)
+  {
+    using Iterator =
+      typename Particles::ParticleHandler<dim>::particle_iterator;
+    const CoreFields  &f = particles.fields;
+    const unsigned int n = particles_per_direction;
+    // A sub-cell holding this many particles of one body and material
+    // (the parts of one split particle) is crowded.
+    const unsigned int    crowded      = 1u << dim;
+    const unsigned int    n_properties = particles.layout.size();
+    std::vector<Iterator> removed;
+    for (const GridCell<dim> &c : grid.cells)
+      {
+        if (particles.handler.n_particles_in_cell(c.cell) < crowded)
+          continue;
+        // Groups: (sub-cell, body, material) -> particles, in id order.
+        std::map<std::array<unsigned int, 3>, std::vector<Iterator>> groups;
+        auto range = particles.handler.particles_in_cell(c.cell);
+        for (auto p = range.begin(); p != range.end(); ++p)
+          {
+            const Point<dim> xi  = c.reference_point(p->get_location());
+            unsigned int     sub = 0;
+            for (int d = dim - 1; d >= 0; --d)
+              sub = sub * n + std::min(n - 1,
+                                       static_cast<unsigned int>(
+                                         std::max(0., std::floor(xi[d] * n))));
+            const auto props = p->get_properties();
+            groups[{sub,
+                    static_cast<unsigned int>(props[f.body]),
+                    static_cast<unsigned int>(props[f.material])}]
+              .push_back(p);
+          }
+        for (auto &[key, group] : groups)
+          {
+            if (group.size() < crowded)
+              continue;
+            std::sort(group.begin(),
+                      group.end(),
+                      [](const Iterator &a, const Iterator &b) {
+                        return a->get_id() < b->get_id();
+                      });
+            double              mass = 0, volume = 0;
+            Point<dim>          centre;
+            std::vector<double> by_mass(n_properties, 0.),
+              by_volume(n_properties, 0.);
+            for (const Iterator &p : group)
+              {
+                const auto   props = p->get_properties();
+                const double m     = props[f.mass];
+                const double v     = current_volume<dim>(props.data(), f);
+                mass += m;
+                volume += v;
+                centre += m * p->get_location();
+                for (unsigned int i = 0; i < n_properties; ++i)
+                  {
+                    by_mass[i] += m * props[i];
+                    by_volume[i] += v * props[i];
+                  }
+              }
+            // The first particle of the group becomes the merged one.
+            auto props = group[0]->get_properties();
+            for (unsigned int i = 0; i < n_properties; ++i)
+              props[i] = by_mass[i] / mass;
+            // Volume-weighted: F and stress (mass-weighted: velocity, so
+            // that momentum is kept; everything else).
+            for (unsigned int i = 0; i < dim * dim; ++i)
+              props[f.deformation_gradient + i] =
+                by_volume[f.deformation_gradient + i] / volume;
+            for (unsigned int i = 0;
+                 i < SymmetricTensor<2, dim>::n_independent_components;
+                 ++i)
+              props[f.stress + i] = by_volume[f.stress + i] / volume;
+            props[f.mass] = mass;
+            const Tensor<2, dim> F =
+              read_tensor<dim>(&props[f.deformation_gradient]);
+            // The current volume is kept: V0 det F = sum of the volumes;
+            // the domain grows with V0 from the group's mean.
+            props[f.initial_volume] = volume / determinant(F);
+            if (f.domain_half_length != numbers::invalid_unsigned_int)
+              for (unsigned int d = 0; d < dim; ++d)
+                props[f.domain_half_length + d] *=
+                  std::pow(props[f.initial_volume] /
+                             (by_mass[f.initial_volume] / mass),
+                           1. / dim);
+            group[0]->set_location(centre / mass);
+            removed.insert(removed.end(), group.begin() + 1, group.end());
+          }
+      }
+    const double n_removed =
+      Utilities::MPI::sum(double(removed.size()), grid.comm);
+    if (n_removed == 0)
+      return 0;
+    particles.handler.remove_particles(removed);
+    // The merged particle may sit in a neighbouring cell (a concave cell).
+    particles.handler.sort_particles_into_subdomains_and_cells();
+    return n_removed;
+  }
+
+  template double
+  merge_particles(const BackgroundGrid<2> &,
+                  ParticleSet<2> &,
+                  const unsigned int);
+  template double
+  merge_particles(const BackgroundGrid<3> &,
                   ParticleSet<3> &,
                   const unsigned int);
 } // namespace dealmpm

@@ -6,11 +6,11 @@
 # statistics.csv and particles.pvd as the uninterrupted run's (no
 # duplicate rows or entries, every listed file there). A checkpoint of 2
 # ranks resumes on 3 and on 1, one of 1 rank on 2 (repartitioned), also
-# with an adaptive grid. SIGTERM
-# saves one. A scene changed in what matters is refused with one line, a
-# damaged newest checkpoint is passed over for the one before, a folder
-# without checkpoints is refused, and a run that does not resume removes
-# the earlier checkpoints.
+# with an adaptive grid. SIGTERM saves one, and so does the wall clock.
+# A scene changed in what matters is refused with one line, a damaged
+# newest checkpoint is passed over for the one before, a folder without
+# checkpoints is refused, and a run that does not resume removes the
+# earlier checkpoints.
 # Arguments: dealmpm, the colliding disks, mpirun, compare_statistics.
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/check_lib.sh"
@@ -160,6 +160,14 @@ echo -n "term vs ref1: "
 "$compare" ref1/statistics.csv term-statistics.csv 0 || fail "term: statistics differ from ref1's"
 python3 "$here/same_particles.py" "ref1/$(cd ref1 && ls particles_*.csv | tail -1)" \
   "term/$(cd term && ls particles_*.csv | tail -1)" 0 || fail "term: final particles differ from ref1's"
+
+# By wall time: every 0.2 s of a run of about 1.5 s, each resumable.
+"$dealmpm" "$scene" -s "Output/Directory=clock" "${run[@]}" -s "Checkpoint/Steps between checkpoints=0" \
+  -s "Checkpoint/Seconds between checkpoints=0.2" -s "Checkpoint/Keep=1000" > clock.log 2>&1 \
+  || fail "clock: the run failed"
+n=$(ls -d clock/checkpoints/checkpoint-* 2> /dev/null | wc -l)
+echo "clock: $n checkpoints by wall time"
+[ "$n" -ge 2 ] || fail "clock: $n checkpoints by wall time, expected at least 2"
 
 # A changed scene is refused with one line naming the entry.
 "$dealmpm" "$scene" -s "Output/Directory=mid" "${run[@]}" -s "Material 1/Density=2000" --resume \

@@ -27,9 +27,10 @@ namespace dealmpm
     double          lost_particles = 0; ///< all ranks
     double          held_particles = 0; ///< put back on a wall, all ranks
     double          last_dt = 0; ///< the last step's size (Newmark needs it)
-    double          repartitions    = 0; ///< of the grid among the ranks
-    double          adaptations     = 0; ///< grid changes by 'Adaptivity'
-    double          split_particles = 0; ///< particles split in two^dim
+    double          repartitions     = 0; ///< of the grid among the ranks
+    double          adaptations      = 0; ///< grid changes by 'Adaptivity'
+    double          split_particles  = 0; ///< particles split in two^dim
+    double          merged_particles = 0; ///< removed by merging
     OutputRecord    output;
     AccuracyMonitor accuracy;
     std::vector<std::vector<double>> effect_states;
@@ -40,9 +41,9 @@ namespace dealmpm
     {
       archive &time &step &next_output &particle_steps &stepping_time;
       archive &lost_particles &held_particles &last_dt &repartitions &output;
-      archive &adaptations &split_particles;
-      archive              &accuracy;
-      archive              &effect_states;
+      archive &adaptations &split_particles &merged_particles;
+      archive                               &accuracy;
+      archive                               &effect_states;
     }
 
     /** As text with every double to the last bit. */

@@ -67,7 +67,8 @@ namespace dealmpm
     unsigned int                                           max_level     = 2;
     double                                                 max_cells     = 1e6;
     bool                                                   split         = true;
-    unsigned int particles_per_direction                                 = 2;
+    bool                                                   merge = false;
+    unsigned int particles_per_direction                         = 2;
 
     bool
     enabled() const

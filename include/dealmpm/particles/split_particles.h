@@ -27,3 +27,25 @@ namespace dealmpm
                   ParticleSet<dim>          &particles,
                   const unsigned int         particles_per_direction);
 } // namespace dealmpm
+
+namespace dealmpm
+{
+  /**
+   * Merge the particles of cells that hold too many small ones (after a
+   * coarsening): where at least 2^dim particles of one body and material
+   * lie in the same of a cell's @p particles_per_direction^dim sub-cells
+   * (as the parts of a split particle do), they become one. Kept exactly: mass,
+   * momentum, the first moment of mass (the merged particle sits at the centre
+   * of mass) and the current volume; averaged (volume-weighted): F, stress, and
+   * (mass-weighted) displacement, APIC's B, internal variables and effects'
+   * fields; GIMP half-lengths scaled with the volume. Lost: the spin of the
+   * merged particles about their centre and the spread of their stresses. The
+   * merged particle keeps the smallest id of its group. Returns the number
+   * of particles removed on all ranks. Collective.
+   */
+  template <int dim>
+  double
+  merge_particles(const BackgroundGrid<dim> &grid,
+                  ParticleSet<dim>          &particles,
+                  const unsigned int         particles_per_direction);
+} // namespace dealmpm
