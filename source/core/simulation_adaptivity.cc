@@ -35,20 +35,18 @@ namespace dealmpm
                     "none with 'MPM/Shape function = quadratic B-spline', "
                     "which needs a uniform grid (refined cells make hanging "
                     "nodes): use linear, uGIMP, cpGIMP or CPDI");
-      if (adaptivity.merge)
-        for (unsigned int e = 0; e < effects.size(); ++e)
-          if (!effects[e]->particle_fields().empty())
-            reader.fail("Merge particles",
-                        "false with '" + effect_names[e] +
-                          "', whose particle fields a merge would average "
-                          "(a surface particle's area is not an average)");
-      if (adaptivity.split)
-        for (unsigned int e = 0; e < effects.size(); ++e)
-          if (!effects[e]->particle_fields().empty())
-            reader.fail("Split particles",
-                        "false with '" + effect_names[e] +
-                          "', whose particle fields a split would copy "
-                          "(a surface particle's area is not shared)");
+      // A surface particle's area is neither shared by its parts nor an
+      // average of its group's.
+      for (unsigned int e = 0; e < effects.size(); ++e)
+        if (!effects[e]->particle_fields().empty())
+          for (const auto &[asked, entry] :
+               {std::pair{adaptivity.split, "Split particles"},
+                std::pair{adaptivity.merge, "Merge particles"}})
+            if (asked)
+              reader.fail(entry,
+                          "false with '" + effect_names[e] +
+                            "', whose particle fields (a surface particle's "
+                            "area) cannot be shared or averaged");
     }
     // A resumed run has its adapted grid from the checkpoint.
     if (!resumed_checkpoint.empty())

@@ -26,10 +26,7 @@ namespace dealmpm
   split_particles(const BackgroundGrid<dim> &grid,
                   ParticleSet<dim>          &particles,
                   const unsigned int         particles_per_direction);
-} // namespace dealmpm
 
-namespace dealmpm
-{
   /**
    * Merge the particles of cells that hold too many small ones (after a
    * coarsening): where at least 2^dim particles of one body and material
