@@ -107,18 +107,6 @@ namespace dealmpm
     return n_split;
   }
 
-  template double
-  split_particles(const BackgroundGrid<2> &,
-                  ParticleSet<2> &,
-                  const unsigned int);
-  template double
-  split_particles(const BackgroundGrid<3> &,
-                  ParticleSet<3> &,
-                  const unsigned int);
-} // namespace dealmpm
-
-namespace dealmpm
-{
   template <int dim>
   double
   merge_particles(const BackgroundGrid<dim> &grid,
@@ -221,12 +209,14 @@ namespace dealmpm
     return n_removed;
   }
 
-  template double
-  merge_particles(const BackgroundGrid<2> &,
-                  ParticleSet<2> &,
-                  const unsigned int);
-  template double
-  merge_particles(const BackgroundGrid<3> &,
-                  ParticleSet<3> &,
-                  const unsigned int);
+#define DEALMPM_INSTANTIATE(dim)                               \
+  template double split_particles(const BackgroundGrid<dim> &, \
+                                  ParticleSet<dim> &,          \
+                                  const unsigned int);         \
+  template double merge_particles(const BackgroundGrid<dim> &, \
+                                  ParticleSet<dim> &,          \
+                                  const unsigned int);
+  DEALMPM_INSTANTIATE(2)
+  DEALMPM_INSTANTIATE(3)
+#undef DEALMPM_INSTANTIATE
 } // namespace dealmpm
