@@ -5,10 +5,14 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/grid/grid_tools.h>
 
+#include <dealmpm/base/errors.h>
+#include <dealmpm/base/smallest_stretch.h>
 #include <dealmpm/fem/solid_region.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 namespace dealmpm
 {
@@ -27,11 +31,50 @@ namespace dealmpm
   void
   SolidRegion<dim>::setup(const std::set<types::boundary_id> &fixed)
   {
+    RegionBoundaryConditions<dim> only_fixed;
+    only_fixed.fixed = fixed;
+    setup(only_fixed);
+  }
+
+  namespace
+  {
+    /** The strongest condition of a node on faces with ids @p ids. */
+    template <int dim>
+    void
+    apply_conditions(const RegionBoundaryConditions<dim> &bc,
+                     const types::boundary_id             id,
+                     typename SolidRegion<dim>::Node     &node)
+    {
+      using Kind       = typename SolidRegion<dim>::Node::Kind;
+      const auto raise = [&](const Kind kind, const Tensor<1, dim> &value) {
+        if (static_cast<int>(kind) < static_cast<int>(node.kind) ||
+            node.kind == Kind::free)
+          {
+            node.kind  = kind;
+            node.value = value;
+          }
+      };
+      if (bc.fixed.count(id))
+        raise(Kind::fixed, Tensor<1, dim>());
+      if (bc.displacement.count(id))
+        raise(Kind::displacement, bc.displacement.at(id));
+      if (bc.velocity.count(id))
+        raise(Kind::velocity, bc.velocity.at(id));
+      if (bc.bonded.count(id))
+        raise(Kind::bonded, Tensor<1, dim>());
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  SolidRegion<dim>::setup(const RegionBoundaryConditions<dim> &bc)
+  {
+    conditions = bc;
     dof_handler.distribute_dofs(fe);
     const IndexSet owned = dof_handler.locally_owned_dofs();
     const IndexSet relevant =
       DoFTools::extract_locally_relevant_dofs(dof_handler);
-    for (auto *v : {&displacement, &velocity, &mass, &force})
+    for (auto *v : {&displacement, &velocity, &mass, &force, &traction_force})
       v->reinit(owned, relevant, comm);
 
     // Gauss-Lobatto points are the support points: the mass is diagonal.
@@ -56,14 +99,74 @@ namespace dealmpm
     mass.compress(VectorOperation::add);
     mass.update_ghost_values();
 
-    fixed_dofs.clear();
-    if (!fixed.empty())
+    // The owned nodes: a support point's dofs are owned together. Faces
+    // give their nodes the conditions of their ids.
+    std::map<types::global_dof_index, Node> found;
+    const std::vector<Point<dim>>          &unit = fe.get_unit_support_points();
+    std::vector<types::global_dof_index>    face_dofs(fe.n_dofs_per_face());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_indices(dofs);
+          for (unsigned int i = 0; i < dofs.size(); ++i)
+            {
+              const auto [component, base] = fe.system_to_component_index(i);
+              if (!owned.is_element(dofs[i]))
+                continue;
+              // Keyed by the x dof: the node's other dofs follow it.
+              unsigned int i0   = fe.component_to_system_index(0, base);
+              Node        &node = found[dofs[i0]];
+              node.dof[component] =
+                static_cast<unsigned int>(owned.index_within_set(dofs[i]));
+              node.X = mapping.transform_unit_to_real_cell(cell, unit[i]);
+            }
+        }
+    // Every cell at an owned node is owned or a ghost.
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (!cell->is_artificial())
+        {
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary())
+              {
+                cell->face(f)->get_dof_indices(face_dofs);
+                for (unsigned int j = 0; j < face_dofs.size(); ++j)
+                  if (fe.face_system_to_component_index(j).first == 0 &&
+                      owned.is_element(face_dofs[j]))
+                    apply_conditions<dim>(bc,
+                                          cell->face(f)->boundary_id(),
+                                          found[face_dofs[j]]);
+              }
+        }
+    nodes.clear();
+    for (const auto &item : found)
+      nodes.push_back(item.second);
+
+    // Nominal tractions: int N_i t dA over the reference faces.
+    if (!bc.traction.empty())
       {
-        const IndexSet boundary =
-          DoFTools::extract_boundary_dofs(dof_handler, ComponentMask(), fixed);
-        for (const types::global_dof_index d : boundary)
-          if (owned.is_element(d))
-            fixed_dofs.push_back(d);
+        QGauss<dim - 1>   face_gauss(degree + 1);
+        FEFaceValues<dim> face_values(mapping,
+                                      fe,
+                                      face_gauss,
+                                      update_values | update_JxW_values);
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned())
+            for (const unsigned int f : cell->face_indices())
+              if (cell->face(f)->at_boundary() &&
+                  bc.traction.count(cell->face(f)->boundary_id()))
+                {
+                  const Tensor<1, dim> t =
+                    bc.traction.at(cell->face(f)->boundary_id());
+                  face_values.reinit(cell, f);
+                  cell->get_dof_indices(dofs);
+                  for (unsigned int i = 0; i < dofs.size(); ++i)
+                    for (unsigned int q = 0; q < face_gauss.size(); ++q)
+                      traction_force(dofs[i]) +=
+                        face_values.shape_value(i, q) *
+                        t[fe.system_to_component_index(i).first] *
+                        face_values.JxW(q);
+                }
+        traction_force.compress(VectorOperation::add);
       }
 
     const unsigned int n_q = QGauss<dim>(degree + 1).size();
@@ -78,24 +181,16 @@ namespace dealmpm
       material.initialize_internal_variables(
         ArrayView<double>(internal.data() + k * n_internal, n_internal));
     last_dt = 0;
+    work    = 0;
   }
 
   template <int dim>
   void
   SolidRegion<dim>::set_velocity(const Function<dim> &f)
   {
-    const std::vector<Point<dim>>       &unit = fe.get_unit_support_points();
-    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          cell->get_dof_indices(dofs);
-          for (unsigned int i = 0; i < dofs.size(); ++i)
-            if (dof_handler.locally_owned_dofs().is_element(dofs[i]))
-              velocity(dofs[i]) =
-                f.value(mapping.transform_unit_to_real_cell(cell, unit[i]),
-                        fe.system_to_component_index(i).first);
-        }
+    for (const Node &node : nodes)
+      for (unsigned int d = 0; d < dim; ++d)
+        velocity.local_element(node.dof[d]) = f.value(node.X, d);
     velocity.update_ghost_values();
   }
 
@@ -114,9 +209,14 @@ namespace dealmpm
             c = std::max(c, material.wave_speed(deformation[k]));
           // The smallest node spacing of the cell (Gauss-Lobatto points of
           // degree k are closer than h / k near the vertices; the factor
-          // for k = 1, 2 is 1).
-          rate =
-            std::max(rate, c * fe.degree / cell->minimum_vertex_distance());
+          // for k = 1, 2 is 1), in the current configuration's scale.
+          double stretch = 1;
+          for (unsigned int q = 0; q < n_q; ++q)
+            stretch =
+              std::min(stretch, smallest_stretch(deformation[k - n_q + q]));
+          rate = std::max(rate,
+                          c * fe.degree /
+                            (stretch * cell->minimum_vertex_distance()));
         }
     rate = Utilities::MPI::max(rate, comm);
     return rate > 0 ? cfl / rate : std::numeric_limits<double>::max();
@@ -149,6 +249,16 @@ namespace dealmpm
           for (unsigned int q = 0; q < gauss.size(); ++q, ++k)
             {
               const Tensor<2, dim> F = unit_symmetric_tensor<dim>() + grad_u[q];
+              const double         J = determinant(F);
+              if (!(J > 0))
+                {
+                  std::ostringstream message;
+                  message << "an FEM region's cell at reference position ("
+                          << cell->center() << ") turned inside out (J = " << J
+                          << "); a smaller time step or a finer mesh there "
+                             "may help";
+                  throw RunError(message.str());
+                }
               // The half step that made F: F - F_old = dt grad_X v.
               if (dt > 0)
                 material.update_stress(grad_v[q] * invert(F),
@@ -158,10 +268,9 @@ namespace dealmpm
                                        ArrayView<double>(internal.data() +
                                                            k * n_internal,
                                                          n_internal));
-              deformation[k]         = F;
-              const Tensor<2, dim> P = determinant(F) *
-                                       Tensor<2, dim>(stress[k]) *
-                                       transpose(invert(F));
+              deformation[k] = F;
+              const Tensor<2, dim> P =
+                J * Tensor<2, dim>(stress[k]) * transpose(invert(F));
               for (unsigned int i = 0; i < dofs.size(); ++i)
                 local(i) -=
                   scalar_product(values[u].gradient(i, q), P) * values.JxW(q);
@@ -174,21 +283,118 @@ namespace dealmpm
   }
 
   template <int dim>
-  void
-  SolidRegion<dim>::step(const double dt)
+  Point<dim>
+  SolidRegion<dim>::position(const Node &node) const
   {
-    // The stress of u^n (over the last step's size), then
-    // v^{n+1/2} = v^{n-1/2} + dt f / m and u^{n+1} = u^n + dt v^{n+1/2}.
+    return node.X + node_vector(displacement, node);
+  }
+
+  template <int dim>
+  Tensor<1, dim>
+  SolidRegion<dim>::node_vector(
+    const LinearAlgebra::distributed::Vector<double> &v,
+    const Node                                       &node) const
+  {
+    Tensor<1, dim> value;
+    for (unsigned int d = 0; d < dim; ++d)
+      value[d] = v.local_element(node.dof[d]);
+    return value;
+  }
+
+  template <int dim>
+  void
+  SolidRegion<dim>::compute_forces(const double          time,
+                                   const double          dt,
+                                   const BodyForce<dim> &body_force)
+  {
     internal_force(last_dt);
+    const double t_mid = time + 0.5 * dt;
+    if (!conditions.traction.empty())
+      force.add(conditions.traction_curve(t_mid), traction_force);
+    if (body_force)
+      for (const Node &node : nodes)
+        {
+          const Tensor<1, dim> b = body_force(node.X,
+                                              position(node),
+                                              node_vector(velocity, node),
+                                              t_mid);
+          const double         m = mass.local_element(node.dof[0]);
+          for (unsigned int d = 0; d < dim; ++d)
+            force.local_element(node.dof[d]) += m * b[d];
+        }
+  }
+
+  template <int dim>
+  void
+  SolidRegion<dim>::advance(const double time, const double dt)
+  {
+    using Kind = typename Node::Kind;
     velocity.zero_out_ghost_values();
     displacement.zero_out_ghost_values();
-    for (unsigned int i = 0; i < velocity.locally_owned_size(); ++i)
-      velocity.local_element(i) +=
-        dt * force.local_element(i) / mass.local_element(i);
-    for (const types::global_dof_index d : fixed_dofs)
-      velocity(d) = 0;
-    displacement.add(dt, velocity);
+    const double t_mid = time + 0.5 * dt;
+    for (const Node &node : nodes)
+      {
+        Tensor<1, dim> v;
+        switch (node.kind)
+          {
+            case Kind::free:
+              for (unsigned int d = 0; d < dim; ++d)
+                v[d] = velocity.local_element(node.dof[d]) +
+                       dt * force.local_element(node.dof[d]) /
+                         mass.local_element(node.dof[d]);
+              break;
+            case Kind::fixed:
+              break;
+            case Kind::displacement:
+              v = node.value *
+                  (conditions.displacement_curve(time + dt) -
+                   conditions.displacement_curve(time)) /
+                  dt;
+              break;
+            case Kind::velocity:
+              v = node.value * conditions.velocity_curve(t_mid);
+              break;
+            case Kind::bonded:
+              v = node_vector(velocity, node);
+              break;
+          }
+        // The work of what holds a prescribed node: the force beyond what
+        // the node's own inertia takes, times its path.
+        if (node.kind == Kind::fixed || node.kind == Kind::displacement ||
+            node.kind == Kind::velocity)
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              const double m   = mass.local_element(node.dof[d]);
+              const double v0  = velocity.local_element(node.dof[d]);
+              const double f   = force.local_element(node.dof[d]);
+              const double Rxn = m * (v[d] - v0) / dt - f;
+              work += Rxn * dt * 0.5 * (v[d] + v0);
+            }
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            velocity.local_element(node.dof[d]) = v[d];
+            displacement.local_element(node.dof[d]) += dt * v[d];
+          }
+      }
+    // The tractions' work: f_t . v over the step.
+    if (!conditions.traction.empty())
+      {
+        const double scale = conditions.traction_curve(t_mid);
+        for (unsigned int i = 0; i < velocity.locally_owned_size(); ++i)
+          work += dt * scale * traction_force.local_element(i) *
+                  velocity.local_element(i);
+      }
     last_dt = dt;
+  }
+
+  template <int dim>
+  void
+  SolidRegion<dim>::step(const double          dt,
+                         const double          time,
+                         const BodyForce<dim> &body_force)
+  {
+    compute_forces(time, dt, body_force);
+    advance(time, dt);
   }
 
   template <int dim>
@@ -225,31 +431,81 @@ namespace dealmpm
   }
 
   template <int dim>
-  Tensor<1, dim>
-  SolidRegion<dim>::momentum() const
+  double
+  SolidRegion<dim>::dissipated_work() const
   {
-    Tensor<1, dim>                       p;
-    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    std::vector<bool> counted(velocity.locally_owned_size(), false);
-    const IndexSet   &owned = dof_handler.locally_owned_dofs();
+    if (!material.dissipates())
+      return 0;
+    QGauss<dim>   gauss(fe.degree + 1);
+    FEValues<dim> values(mapping, fe, gauss, update_JxW_values);
+    double        e = 0;
+    std::size_t   k = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          cell->get_dof_indices(dofs);
-          for (unsigned int i = 0; i < dofs.size(); ++i)
-            if (owned.is_element(dofs[i]))
-              {
-                const auto local = owned.index_within_set(dofs[i]);
-                if (counted[local])
-                  continue;
-                counted[local] = true;
-                p[fe.system_to_component_index(i).first] +=
-                  mass.local_element(local) * velocity.local_element(local);
-              }
+          values.reinit(cell);
+          for (unsigned int q = 0; q < gauss.size(); ++q, ++k)
+            e += material.dissipated_energy_density(
+                   ArrayView<const double>(internal.data() + k * n_internal,
+                                           n_internal)) *
+                 values.JxW(q);
         }
+    return Utilities::MPI::sum(e, comm);
+  }
+
+  template <int dim>
+  double
+  SolidRegion<dim>::potential_energy(
+    const std::function<double(const Point<dim> &)> &potential) const
+  {
+    double e = 0;
+    for (const Node &node : nodes)
+      e += mass.local_element(node.dof[0]) * potential(position(node));
+    return Utilities::MPI::sum(e, comm);
+  }
+
+  template <int dim>
+  Tensor<1, dim>
+  SolidRegion<dim>::momentum() const
+  {
+    Tensor<1, dim> p;
+    for (const Node &node : nodes)
+      p += mass.local_element(node.dof[0]) * node_vector(velocity, node);
     for (unsigned int d = 0; d < dim; ++d)
       p[d] = Utilities::MPI::sum(p[d], comm);
     return p;
+  }
+
+  template <int dim>
+  Tensor<1, 3>
+  SolidRegion<dim>::angular_momentum() const
+  {
+    Tensor<1, 3> h;
+    for (const Node &node : nodes)
+      {
+        Tensor<1, 3>         x, mv;
+        const Point<dim>     p = position(node);
+        const Tensor<1, dim> v = node_vector(velocity, node);
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            x[d]  = p[d];
+            mv[d] = mass.local_element(node.dof[0]) * v[d];
+          }
+        h += cross_product_3d(x, mv);
+      }
+    for (unsigned int d = 0; d < 3; ++d)
+      h[d] = Utilities::MPI::sum(h[d], comm);
+    return h;
+  }
+
+  template <int dim>
+  double
+  SolidRegion<dim>::total_mass() const
+  {
+    double m = 0;
+    for (const Node &node : nodes)
+      m += mass.local_element(node.dof[0]);
+    return Utilities::MPI::sum(m, comm);
   }
 
   template <int dim>
@@ -257,24 +513,58 @@ namespace dealmpm
   SolidRegion<dim>::node_velocity(const Point<dim>  &x,
                                   const unsigned int component) const
   {
-    const std::vector<Point<dim>>       &unit = fe.get_unit_support_points();
-    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     const double tolerance = 1e-10 * GridTools::diameter(triangulation);
     double       found     = -std::numeric_limits<double>::max();
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          cell->get_dof_indices(dofs);
-          for (unsigned int i = 0; i < dofs.size(); ++i)
-            if (fe.system_to_component_index(i).first == component &&
-                mapping.transform_unit_to_real_cell(cell, unit[i]).distance(x) <
-                  tolerance)
-              found = velocity(dofs[i]);
-        }
+    for (const Node &node : nodes)
+      if (node.X.distance(x) < tolerance)
+        found = velocity.local_element(node.dof[component]);
     found = Utilities::MPI::max(found, comm);
     return found > -std::numeric_limits<double>::max() ?
              found :
              std::numeric_limits<double>::quiet_NaN();
+  }
+
+  template <int dim>
+  void
+  SolidRegion<dim>::cell_means(
+    std::vector<SymmetricTensor<2, dim>> &cell_stress,
+    std::vector<std::vector<double>>     &cell_internal) const
+  {
+    const unsigned int n_q     = QGauss<dim>(fe.degree + 1).size();
+    const std::size_t  n_cells = stress.size() / n_q;
+    cell_stress.assign(n_cells, SymmetricTensor<2, dim>());
+    cell_internal.assign(n_cells, std::vector<double>(n_internal, 0.));
+    for (std::size_t c = 0; c < n_cells; ++c)
+      for (unsigned int q = 0; q < n_q; ++q)
+        {
+          const std::size_t k = c * n_q + q;
+          cell_stress[c] += stress[k] / n_q;
+          for (unsigned int j = 0; j < n_internal; ++j)
+            cell_internal[c][j] += internal[k * n_internal + j] / n_q;
+        }
+  }
+
+  template <int dim>
+  double
+  SolidRegion<dim>::largest_node_spacing_on(
+    const std::set<types::boundary_id> &ids) const
+  {
+    double spacing = 0;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              ids.count(cell->face(f)->boundary_id()))
+            {
+              if (dim == 2)
+                spacing = std::max(spacing, cell->face(f)->diameter());
+              else
+                for (unsigned int l = 0; l < cell->face(f)->n_lines(); ++l)
+                  spacing =
+                    std::max(spacing, cell->face(f)->line(l)->diameter());
+            }
+    spacing /= fe.degree;
+    return Utilities::MPI::max(spacing, comm);
   }
 
   template class SolidRegion<2>;

@@ -7,8 +7,12 @@
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/lac/la_parallel_vector.h>
 
+#include <dealmpm/effects/load_curve.h>
 #include <dealmpm/materials/material.h>
 
+#include <array>
+#include <functional>
+#include <map>
 #include <set>
 #include <vector>
 
@@ -16,28 +20,79 @@ namespace dealmpm
 {
   using namespace dealii;
 
+  /** Conditions on a region's boundary ids; ids not named are free. A node
+   * on several named ids takes the first of: fixed, displacement,
+   * velocity, bonded (tractions add up). */
+  template <int dim>
+  struct RegionBoundaryConditions
+  {
+    std::set<types::boundary_id> fixed;
+    /** u = value * displacement_curve(t) from the start position. */
+    std::map<types::boundary_id, Tensor<1, dim>> displacement;
+    LoadCurve                                    displacement_curve;
+    /** v = value * velocity_curve(t). */
+    std::map<types::boundary_id, Tensor<1, dim>> velocity;
+    LoadCurve                                    velocity_curve;
+    /** Nominal traction (force per reference area) * traction_curve(t). */
+    std::map<types::boundary_id, Tensor<1, dim>> traction;
+    LoadCurve                                    traction_curve;
+    /** Nodes that move with the background grid (fem/bonded_coupling.h):
+     * their velocity is set from outside before advance(). */
+    std::set<types::boundary_id> bonded;
+  };
+
+  /** Body force per unit mass at reference position X, position x,
+   * velocity v and time t (gravity, a rotating frame). */
+  template <int dim>
+  using BodyForce = std::function<Tensor<1, dim>(const Point<dim>     &X,
+                                                 const Point<dim>     &x,
+                                                 const Tensor<1, dim> &v,
+                                                 const double          t)>;
+
   /**
-   * A finite element solid region (issue 15, first part: the region
-   * alone): its own distributed triangulation in the reference
-   * configuration, vector FE_Q(k) displacement, Gauss-Lobatto lumped mass
-   * and total-Lagrangian explicit dynamics by central differences
-   * (leapfrog: v at half steps, u at whole steps). The stress at each
-   * quadrature point comes from a dealmpm Material, which keeps its
-   * internal variables there: L = grad_X v F^-1 of the half step that
-   * made F, so incremental (hypoelastic, plastic) models see the same
-   * step as on particles. Boundaries: fixed ids (zero displacement), the
-   * others free. RESEARCH.md section 1.4.
+   * A finite element solid region: its own distributed triangulation in
+   * the reference configuration, vector FE_Q(k) displacement, Gauss-Lobatto
+   * lumped mass and total-Lagrangian explicit dynamics by central
+   * differences (leapfrog: v at half steps, u at whole steps), the same
+   * structure as the MPM step (forces of the state at the start, then
+   * v += dt f / m, then x += dt v). The stress at each quadrature point
+   * comes from a dealmpm Material, which keeps its internal variables
+   * there: L = grad_X v F^-1 of the half step that made F, so incremental
+   * (hypoelastic, plastic) models see the same step as on particles.
+   * RESEARCH.md section 1.4.
    */
   template <int dim>
   class SolidRegion
   {
   public:
+    /** A support point of the mesh (all dim components owned here). */
+    struct Node
+    {
+      enum class Kind
+      {
+        free,
+        fixed,
+        displacement,
+        velocity,
+        bonded
+      };
+      std::array<unsigned int, dim> dof; ///< local indices of the owned dofs
+      Point<dim>                    X;   ///< reference position
+      Kind                          kind = Kind::free;
+      Tensor<1, dim>                value; ///< the prescribed u or v
+    };
+
     SolidRegion(const MPI_Comm       comm,
                 const Material<dim> &material,
                 const unsigned int   degree);
 
-    /** After the triangulation is made: DoFs, the lumped mass, the fixed
-     * nodes on boundary ids @p fixed, the quadrature-point state. */
+    /** After the triangulation is made: DoFs, the lumped mass, the nodes
+     * and their conditions, the tractions' nodal forces, the
+     * quadrature-point state. */
+    void
+    setup(const RegionBoundaryConditions<dim> &conditions);
+
+    /** Only fixed ids (the region alone). */
     void
     setup(const std::set<types::boundary_id> &fixed);
 
@@ -50,21 +105,79 @@ namespace dealmpm
     double
     stable_time_step(const double cfl) const;
 
-    /** One central-difference step of size dt. Collective. */
+    /** f = f_int(u) + tractions + m b at the start of a step of size dt
+     * from @p time (the internal force's stress is advanced over the last
+     * step). Collective. */
     void
-    step(const double dt);
+    compute_forces(const double          time,
+                   const double          dt,
+                   const BodyForce<dim> &body_force = {});
+
+    /** v += dt f / m on free nodes, the prescribed velocities, bonded
+     * nodes as set; then u += dt v. */
+    void
+    advance(const double time, const double dt);
+
+    /** compute_forces() and advance(). Collective. */
+    void
+    step(const double          dt,
+         const double          time       = 0,
+         const BodyForce<dim> &body_force = {});
 
     double
     kinetic_energy() const;
     double
     strain_energy() const;
+    /** Energy dissipated by the material (plastic work) so far. */
+    double
+    dissipated_work() const;
+    /** sum_i m_i potential(x_i) (a potential given per unit mass). */
+    double
+    potential_energy(
+      const std::function<double(const Point<dim> &)> &potential) const;
     Tensor<1, dim>
     momentum() const;
+    /** sum_i x_i x m_i v_i (the z component in 2D). */
+    Tensor<1, 3>
+    angular_momentum() const;
+    double
+    total_mass() const;
+    /** Work of the tractions and prescribed motions so far (this rank's
+     * nodes), for the energy balance. */
+    double
+    external_work() const
+    {
+      return work;
+    }
 
     /** Component @p component of the velocity of the node at @p x (within
      * 1e-10 of the region's size), on every rank; NaN if there is none. */
     double
     node_velocity(const Point<dim> &x, const unsigned int component) const;
+
+    /** Current position of an owned node. */
+    Point<dim>
+    position(const Node &node) const;
+    Tensor<1, dim>
+    node_vector(const LinearAlgebra::distributed::Vector<double> &v,
+                const Node                                       &node) const;
+
+    /** Per owned cell, the mean over its quadrature points of the stress
+     * and of each internal variable component (for output). */
+    void
+    cell_means(std::vector<SymmetricTensor<2, dim>> &cell_stress,
+               std::vector<std::vector<double>>     &cell_internal) const;
+
+    const Material<dim> &
+    get_material() const
+    {
+      return material;
+    }
+
+    /** The largest node spacing (edge over degree) on faces with ids
+     * @p ids. Collective. */
+    double
+    largest_node_spacing_on(const std::set<types::boundary_id> &ids) const;
 
     MPI_Comm                                  comm;
     parallel::distributed::Triangulation<dim> triangulation;
@@ -72,7 +185,10 @@ namespace dealmpm
     DoFHandler<dim>                           dof_handler;
     MappingQ1<dim>                            mapping;
     /** Owned, with the ghosts the cells need. */
-    LinearAlgebra::distributed::Vector<double> displacement, velocity, mass;
+    LinearAlgebra::distributed::Vector<double> displacement, velocity, mass,
+      force;
+    /** The owned nodes, ordered by global dof index. */
+    std::vector<Node> nodes;
 
   private:
     /** f = -int grad N : P (F) with the stress advanced over dt. */
@@ -80,8 +196,8 @@ namespace dealmpm
     internal_force(const double dt);
 
     const Material<dim>                       &material;
-    LinearAlgebra::distributed::Vector<double> force;
-    std::vector<types::global_dof_index>       fixed_dofs; ///< owned ones
+    RegionBoundaryConditions<dim>              conditions;
+    LinearAlgebra::distributed::Vector<double> traction_force;
     /** Per owned cell and quadrature point: the stress, F and the
      * material's internal variables. */
     std::vector<SymmetricTensor<2, dim>> stress;
@@ -89,5 +205,6 @@ namespace dealmpm
     std::vector<double>                  internal;
     unsigned int                         n_internal = 0;
     double last_dt = 0; ///< the step that made the current displacement
+    double work    = 0;
   };
 } // namespace dealmpm
