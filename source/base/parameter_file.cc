@@ -184,13 +184,14 @@ namespace dealmpm
   void
   check_scene_text(const std::string &file,
                    const unsigned int n_bodies,
-                   const unsigned int n_materials)
+                   const unsigned int n_materials,
+                   const unsigned int n_fem_regions)
   {
     std::ifstream in(file);
     if (!in)
       throw InputError(file + ": cannot open the scene file");
     const std::regex numbered(
-      "\\s*subsection\\s+(Body|Material)\\s+([0-9]+)\\s*");
+      "\\s*subsection\\s+(Body|Material|FEM region)\\s+([0-9]+)\\s*");
     const std::regex setting("\\s*set\\s.*");
     bool             sets_something = false;
     std::string      line;
@@ -201,10 +202,13 @@ namespace dealmpm
         sets_something = sets_something || std::regex_match(line, setting);
         if (!std::regex_match(line, match, numbered))
           continue;
-        const bool         body  = match[1] == "Body";
-        const unsigned int count = body ? n_bodies : n_materials;
-        const std::string  entry =
-          body ? "Number of bodies" : "Number of materials";
+        const std::string  kind  = match[1];
+        const unsigned int count = kind == "Body"     ? n_bodies :
+                                   kind == "Material" ? n_materials :
+                                                        n_fem_regions;
+        const std::string  entry = kind == "Body"     ? "Number of bodies" :
+                                   kind == "Material" ? "Number of materials" :
+                                                        "Number of FEM regions";
         if (std::stoul(match[2]) > count || std::stoul(match[2]) == 0)
           throw InputError(file + ": line " + std::to_string(number) +
                            ": section '" + std::string(match[1]) + " " +

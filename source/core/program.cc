@@ -239,7 +239,10 @@ namespace dealmpm
       const SceneShape shape =
         read_scene_shape(command.file, command.overrides);
       if (!command.file.empty())
-        check_scene_text(command.file, shape.n_bodies, shape.n_materials);
+        check_scene_text(command.file,
+                         shape.n_bodies,
+                         shape.n_materials,
+                         shape.n_fem_regions);
       if (command.print_parameters)
         {
           print_parameters(command, shape, root);
@@ -320,19 +323,23 @@ namespace dealmpm
     prm.declare_entry("Dimension", "2", Patterns::Integer(2, 3));
     prm.declare_entry("Number of bodies", "1", Patterns::Integer(1, 10000));
     prm.declare_entry("Number of materials", "1", Patterns::Integer(1, 10000));
+    prm.declare_entry("Number of FEM regions", "0", Patterns::Integer(0, 1000));
     if (!file.empty())
       parse_parameter_file(prm, file, true);
     std::vector<std::string> top_level;
     for (const auto &item : overrides)
-      for (const std::string name :
-           {"Dimension", "Number of bodies", "Number of materials"})
+      for (const std::string name : {"Dimension",
+                                     "Number of bodies",
+                                     "Number of materials",
+                                     "Number of FEM regions"})
         if (item.rfind(name + "=", 0) == 0 || item.rfind(name + " =", 0) == 0)
           top_level.push_back(item);
     apply_overrides(prm, top_level);
     SceneShape shape;
-    shape.dim         = prm.get_integer("Dimension");
-    shape.n_bodies    = prm.get_integer("Number of bodies");
-    shape.n_materials = prm.get_integer("Number of materials");
+    shape.dim           = prm.get_integer("Dimension");
+    shape.n_bodies      = prm.get_integer("Number of bodies");
+    shape.n_materials   = prm.get_integer("Number of materials");
+    shape.n_fem_regions = prm.get_integer("Number of FEM regions");
     return shape;
   }
 

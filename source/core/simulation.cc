@@ -53,6 +53,17 @@ namespace dealmpm
         prm.leave_subsection();
       }
     declare_material_sections<dim>(prm, shape.n_materials);
+    prm.declare_entry("Number of FEM regions",
+                      "0",
+                      Patterns::Integer(0, 1000),
+                      "How many 'FEM region N' sections the scene has: "
+                      "finite element solids beside the MPM bodies.");
+    for (unsigned int r = 1; r <= shape.n_fem_regions; ++r)
+      {
+        prm.enter_subsection("FEM region " + std::to_string(r));
+        FemRegionSettings<dim>::declare_parameters(prm);
+        prm.leave_subsection();
+      }
     declare_effect_parameters<dim>(prm);
     TimeStepping::declare_parameters(prm);
     MethodSettings::declare_parameters(prm);
@@ -80,6 +91,10 @@ namespace dealmpm
     read_scene(reader, shape);
     scene_entry_list = scene_entries(prm);
     std::optional<CheckpointInfo> saved;
+    if (resume && shape.n_fem_regions > 0)
+      throw InputError(scene_file +
+                       ": --resume of a scene with FEM regions: their "
+                       "state is not saved in checkpoints yet");
     if (resume)
       saved = find_saved_run(
         reader, resume->empty() ? run_settings.checkpoint.directory : *resume);
@@ -118,6 +133,7 @@ namespace dealmpm
           }
       }
     nodal.reinit(grid.partitioner, bodies.size());
+    create_fem_regions(reader, shape);
     if (total_lagrangian())
       check_total_lagrangian(reader);
     else if (run_settings.method.split_mixed_cells)
@@ -129,11 +145,14 @@ namespace dealmpm
     stages = stages_of<dim>(run_settings.method.scheme,
                             mixed_cells != nullptr,
                             run_settings.method.formulation,
-                            run_settings.method.particle_update.newmark);
+                            run_settings.method.particle_update.newmark,
+                            !regions.empty());
 
     particle_check =
       check_particles(grid, materials, *particles, total_lagrangian());
-    max_signal_rate = Utilities::MPI::max(particle_check.max_signal_rate, comm);
+    max_signal_rate =
+      std::max(Utilities::MPI::max(particle_check.max_signal_rate, comm),
+               fem_signal_rate());
     if (saved)
       restore_saved_run(*saved);
     computing_timer = std::make_unique<TimerOutput>(comm,
@@ -284,7 +303,10 @@ namespace dealmpm
   Statistics
   Simulation<dim>::statistics() const
   {
-    return compute_statistics(*particles, materials, effects, loop.time, comm);
+    Statistics s =
+      compute_statistics(*particles, materials, effects, loop.time, comm);
+    add_fem_statistics(s);
+    return s;
   }
 
   template <int dim>
@@ -294,7 +316,7 @@ namespace dealmpm
     double work = 0;
     for (const auto &effect : effects)
       work += effect->work_done();
-    return Utilities::MPI::sum(work, comm);
+    return Utilities::MPI::sum(work + fem_external_work(), comm);
   }
 
   template <int dim>
@@ -338,6 +360,8 @@ namespace dealmpm
                          dt,
                          *computing_timer);
     state.mixed_cells = mixed_cells.get();
+    if (!regions.empty())
+      state.fem_regions = &regions;
     state.previous_dt = loop.last_dt;
     for (const Stage<dim> &stage : stages)
       stage.run(state, stage.name);
@@ -351,6 +375,8 @@ namespace dealmpm
                           comm,
                           ArrayView<double>(extremes, 2));
       max_signal_rate = -extremes[0];
+      if (!regions.empty())
+        max_signal_rate = std::max(max_signal_rate, fem_signal_rate());
       loop.accuracy.observe_step(extremes[1], dt * max_signal_rate);
     }
     if (Utilities::MPI::logical_or(check.failed, comm))
@@ -460,11 +486,16 @@ namespace dealmpm
     boundary_conditions.rebuild(grid);
     for (const auto &effect : effects)
       effect->grid_changed(grid);
+    for (FemRegion<dim> &region : regions)
+      if (region.bonded)
+        region.bonded->grid_changed(grid);
     nodal.reinit(grid.partitioner, bodies.size());
     // Smaller cells, smaller stable step.
     particle_check =
       check_particles(grid, materials, *particles, total_lagrangian());
-    max_signal_rate = Utilities::MPI::max(particle_check.max_signal_rate, comm);
+    max_signal_rate =
+      std::max(Utilities::MPI::max(particle_check.max_signal_rate, comm),
+               fem_signal_rate());
   }
 
   template <int dim>

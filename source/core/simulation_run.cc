@@ -70,7 +70,7 @@ namespace dealmpm
                                 const Progress   &progress)
   {
     TimerOutput::Scope t(*computing_timer, "output");
-    output_writer.write({*particles, materials, grid, nodal.core},
+    output_writer.write({*particles, materials, grid, nodal.core, regions},
                         loop.time,
                         loop.step,
                         loop.output,

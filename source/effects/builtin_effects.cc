@@ -74,6 +74,15 @@ namespace dealmpm
         return -mass * factor_now * (g * x);
       }
 
+      Tensor<1, dim>
+      body_acceleration(const Point<dim> &,
+                        const Point<dim> &,
+                        const Tensor<1, dim> &,
+                        const double t) const override
+      {
+        return factor(t) * g;
+      }
+
       double
       work_done() const override
       {

@@ -36,15 +36,32 @@ namespace dealmpm
   }
 
   template <int dim>
+  std::pair<Tensor<1, 3>, Tensor<1, 3>>
+  RotatingFrame<dim>::rotation_at(const double t) const
+  {
+    const bool ramping = ramp_time > 0 && t < ramp_time;
+    return {ramping ? t / ramp_time * omega : omega,
+            ramping ? omega / ramp_time : Tensor<1, 3>()};
+  }
+
+  template <int dim>
+  Tensor<1, dim>
+  RotatingFrame<dim>::body_acceleration(const Point<dim> &,
+                                        const Point<dim>     &x,
+                                        const Tensor<1, dim> &v,
+                                        const double          t) const
+  {
+    const auto [w, w_dot] = rotation_at(t);
+    return acceleration(w, w_dot, axis_point, x, v);
+  }
+
+  template <int dim>
   void
   RotatingFrame<dim>::add_nodal_forces(const EffectContext<dim> &state,
                                        NodalFields<dim>         &fields)
   {
     // omega and its rate at mid-step.
-    const double       t       = state.time + 0.5 * state.dt;
-    const bool         ramping = ramp_time > 0 && t < ramp_time;
-    const Tensor<1, 3> w       = ramping ? t / ramp_time * omega : omega;
-    const Tensor<1, 3> w_dot   = ramping ? omega / ramp_time : Tensor<1, 3>();
+    const auto [w, w_dot] = rotation_at(state.time + 0.5 * state.dt);
     this->work +=
       state.dt *
       add_particle_body_force(state,

@@ -198,6 +198,14 @@ namespace dealmpm
   double
   SolidRegion<dim>::stable_time_step(const double cfl) const
   {
+    const double rate = signal_rate();
+    return rate > 0 ? cfl / rate : std::numeric_limits<double>::max();
+  }
+
+  template <int dim>
+  double
+  SolidRegion<dim>::signal_rate() const
+  {
     double             rate = 0;
     const unsigned int n_q  = QGauss<dim>(fe.degree + 1).size();
     std::size_t        k    = 0;
@@ -218,8 +226,7 @@ namespace dealmpm
                           c * fe.degree /
                             (stretch * cell->minimum_vertex_distance()));
         }
-    rate = Utilities::MPI::max(rate, comm);
-    return rate > 0 ? cfl / rate : std::numeric_limits<double>::max();
+    return Utilities::MPI::max(rate, comm);
   }
 
   template <int dim>
@@ -527,18 +534,29 @@ namespace dealmpm
   template <int dim>
   void
   SolidRegion<dim>::cell_means(
-    std::vector<SymmetricTensor<2, dim>> &cell_stress,
-    std::vector<std::vector<double>>     &cell_internal) const
+    std::vector<SymmetricTensor<2, 3>> &cell_stress,
+    std::vector<double>                &cell_von_mises,
+    std::vector<std::vector<double>>   &cell_internal) const
   {
     const unsigned int n_q     = QGauss<dim>(fe.degree + 1).size();
     const std::size_t  n_cells = stress.size() / n_q;
-    cell_stress.assign(n_cells, SymmetricTensor<2, dim>());
+    cell_stress.assign(n_cells, SymmetricTensor<2, 3>());
+    cell_von_mises.assign(n_cells, 0.);
     cell_internal.assign(n_cells, std::vector<double>(n_internal, 0.));
     for (std::size_t c = 0; c < n_cells; ++c)
       for (unsigned int q = 0; q < n_q; ++q)
         {
-          const std::size_t k = c * n_q + q;
-          cell_stress[c] += stress[k] / n_q;
+          const std::size_t           k = c * n_q + q;
+          const SymmetricTensor<2, 3> full =
+            full_stress(material,
+                        deformation[k],
+                        stress[k],
+                        ArrayView<const double>(internal.data() +
+                                                  k * n_internal,
+                                                n_internal));
+          cell_stress[c] += full / n_q;
+          cell_von_mises[c] +=
+            std::sqrt(1.5 * deviator(full) * deviator(full)) / n_q;
           for (unsigned int j = 0; j < n_internal; ++j)
             cell_internal[c][j] += internal[k * n_internal + j] / n_q;
         }

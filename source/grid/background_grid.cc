@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -36,9 +37,8 @@ namespace dealmpm
 
   template <int dim>
   void
-  BackgroundGrid<dim>::declare_parameters(ParameterHandler &prm)
+  declare_mesh_entries(ParameterHandler &prm)
   {
-    prm.enter_subsection("Grid");
     prm.declare_entry("Type",
                       "rectangle",
                       Patterns::Selection("rectangle|mesh file"),
@@ -65,6 +65,96 @@ namespace dealmpm
                       Patterns::FileName(),
                       "Mesh file: path of the Gmsh .msh file, relative to the "
                       "scene file's folder or absolute.");
+  }
+
+  template <int dim>
+  void
+  read_coarse_mesh(
+    const SceneReader                                           &reader,
+    Triangulation<dim>                                          &mesh,
+    const std::function<void(double, const BoundingBox<dim> &)> &before)
+  {
+    if (reader.get("Type") == "rectangle")
+      {
+        const Point<dim>          lower = reader.get_point<dim>("Lower corner");
+        const Point<dim>          upper = reader.get_point<dim>("Upper corner");
+        const std::vector<double> cells = reader.get_doubles("Cells");
+        if (cells.size() != dim)
+          reader.fail("Cells", std::to_string(dim) + " positive integers");
+        std::vector<unsigned int> repetitions;
+        double                    n_coarse = 1;
+        for (const double c : cells)
+          {
+            if (!(c >= 1 && c == static_cast<unsigned int>(c)))
+              reader.fail(
+                "Cells", "positive integers (at least one cell per direction)");
+            repetitions.push_back(static_cast<unsigned int>(c));
+            n_coarse *= c;
+          }
+        for (unsigned int d = 0; d < dim; ++d)
+          if (!(upper[d] > lower[d]))
+            reader.fail("Upper corner",
+                        "each coordinate larger than Lower corner's");
+        before(n_coarse, BoundingBox<dim>({lower, upper}));
+        GridGenerator::subdivided_hyper_rectangle(
+          mesh, repetitions, lower, upper, /*colorize=*/true);
+        return;
+      }
+    std::ifstream in(reader.get_file("Mesh file", "a readable Gmsh .msh file"));
+    // Read serially first: p4est crashes on simplices instead of saying so.
+    Triangulation<dim> serial;
+    GridIn<dim>        grid_in;
+    grid_in.attach_triangulation(serial);
+    try
+      {
+        grid_in.read_msh(in);
+      }
+    catch (const std::exception &e)
+      {
+        reader.fail("Mesh file",
+                    "a Gmsh .msh mesh of quadrilaterals/hexahedra (reading "
+                    "failed)");
+      }
+    if (!serial.all_reference_cells_are_hyper_cube())
+      reader.fail("Mesh file",
+                  "a mesh of quadrilaterals (2D) or hexahedra (3D), not "
+                  "triangles or tetrahedra");
+    for (const auto &cell : serial.active_cell_iterators())
+      {
+        // The Jacobian's sign at every vertex: negative where a cell is
+        // inverted or twisted.
+        double det_min = std::numeric_limits<double>::max();
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            Tensor<2, dim> J;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                const unsigned int w    = v ^ (1u << d);
+                const double       sign = (v >> d) & 1u ? 1. : -1.;
+                J[d] = sign * (cell->vertex(v) - cell->vertex(w));
+              }
+            det_min = std::min(det_min, determinant(J));
+          }
+        if (!(det_min > 0))
+          {
+            std::ostringstream where;
+            where << cell->center();
+            reader.fail("Mesh file",
+                        "a mesh without inverted or twisted cells (the cell "
+                        "at " +
+                          where.str() + " is)");
+          }
+      }
+    before(serial.n_active_cells(), BoundingBox<dim>(serial.get_vertices()));
+    mesh.copy_triangulation(serial);
+  }
+
+  template <int dim>
+  void
+  BackgroundGrid<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Grid");
+    declare_mesh_entries<dim>(prm);
     prm.declare_entry("Global refinements",
                       "0",
                       Patterns::Integer(0, 12),
@@ -95,60 +185,12 @@ namespace dealmpm
     const SavedGrid                                  *saved)
   {
     SectionScope grid(reader, "Grid");
-    if (reader.get("Type") == "rectangle")
-      {
-        const Point<dim>          lower = reader.get_point<dim>("Lower corner");
-        const Point<dim>          upper = reader.get_point<dim>("Upper corner");
-        const std::vector<double> cells = reader.get_doubles("Cells");
-        if (cells.size() != dim)
-          reader.fail("Cells", std::to_string(dim) + " positive integers");
-        std::vector<unsigned int> repetitions;
-        double                    n_coarse = 1;
-        for (const double c : cells)
-          {
-            if (!(c >= 1 && c == static_cast<unsigned int>(c)))
-              reader.fail(
-                "Cells", "positive integers (at least one cell per direction)");
-            repetitions.push_back(static_cast<unsigned int>(c));
-            n_coarse *= c;
-          }
-        for (unsigned int d = 0; d < dim; ++d)
-          if (!(upper[d] > lower[d]))
-            reader.fail("Upper corner",
-                        "each coordinate larger than Lower corner's");
-        before_allocating(
-          refined_size(reader, n_coarse, BoundingBox<dim>({lower, upper})));
-        GridGenerator::subdivided_hyper_rectangle(
-          triangulation, repetitions, lower, upper, /*colorize=*/true);
-      }
-    else
-      {
-        std::ifstream in(
-          reader.get_file("Mesh file", "a readable Gmsh .msh file"));
-        // Read serially first: p4est crashes on simplices instead of saying so.
-        Triangulation<dim> serial;
-        GridIn<dim>        grid_in;
-        grid_in.attach_triangulation(serial);
-        try
-          {
-            grid_in.read_msh(in);
-          }
-        catch (const std::exception &e)
-          {
-            reader.fail("Mesh file",
-                        "a Gmsh .msh mesh of quadrilaterals/hexahedra (reading "
-                        "failed)");
-          }
-        if (!serial.all_reference_cells_are_hyper_cube())
-          reader.fail("Mesh file",
-                      "a mesh of quadrilaterals (2D) or hexahedra (3D), not "
-                      "triangles or tetrahedra");
-        before_allocating(
-          refined_size(reader,
-                       serial.n_active_cells(),
-                       BoundingBox<dim>(serial.get_vertices())));
-        triangulation.copy_triangulation(serial);
-      }
+    read_coarse_mesh<dim>(
+      reader,
+      triangulation,
+      [&](const double n_coarse, const BoundingBox<dim> &box) {
+        before_allocating(refined_size(reader, n_coarse, box));
+      });
     coarse_checksum = checksum_of_coarse_grid();
     if (saved != nullptr)
       {
@@ -492,4 +534,16 @@ namespace dealmpm
 
   template class BackgroundGrid<2>;
   template class BackgroundGrid<3>;
+  template void
+  declare_mesh_entries<2>(ParameterHandler &);
+  template void
+  declare_mesh_entries<3>(ParameterHandler &);
+  template void
+  read_coarse_mesh(const SceneReader &,
+                   Triangulation<2> &,
+                   const std::function<void(double, const BoundingBox<2> &)> &);
+  template void
+  read_coarse_mesh(const SceneReader &,
+                   Triangulation<3> &,
+                   const std::function<void(double, const BoundingBox<3> &)> &);
 } // namespace dealmpm

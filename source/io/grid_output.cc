@@ -83,40 +83,40 @@ namespace dealmpm
           }
     }
 
-    /** This rank's piece <base>.<rank>.vtu and, on rank 0, the record
-     * <base>.pvtu that lists every rank's piece; returns the record's
-     * name. */
-    template <int dim>
-    std::string
-    write_pieces(const DataOut<dim> &data_out,
-                 const std::string  &directory,
-                 const std::string  &base,
-                 const MPI_Comm      comm)
-    {
-      const auto piece = [&](const unsigned int r) {
-        return base + "." + Utilities::int_to_string(r) + ".vtu";
-      };
-      std::ostringstream vtu;
-      data_out.write_vtu(vtu);
-      OutputFile piece_file(directory + "/" +
-                            piece(Utilities::MPI::this_mpi_process(comm)));
-      piece_file.write(vtu.str());
-      piece_file.commit();
-      if (Utilities::MPI::this_mpi_process(comm) == 0)
-        {
-          std::vector<std::string> pieces;
-          for (unsigned int r = 0; r < Utilities::MPI::n_mpi_processes(comm);
-               ++r)
-            pieces.push_back(piece(r));
-          std::ostringstream pvtu;
-          data_out.write_pvtu_record(pvtu, pieces);
-          OutputFile record(directory + "/" + base + ".pvtu");
-          record.write(pvtu.str());
-          record.commit();
-        }
-      return base + ".pvtu";
-    }
   } // namespace
+
+  /** This rank's piece <base>.<rank>.vtu and, on rank 0, the record
+   * <base>.pvtu that lists every rank's piece; returns the record's
+   * name. */
+  template <int dim>
+  std::string
+  write_pieces(const DataOut<dim> &data_out,
+               const std::string  &directory,
+               const std::string  &base,
+               const MPI_Comm      comm)
+  {
+    const auto piece = [&](const unsigned int r) {
+      return base + "." + Utilities::int_to_string(r) + ".vtu";
+    };
+    std::ostringstream vtu;
+    data_out.write_vtu(vtu);
+    OutputFile piece_file(directory + "/" +
+                          piece(Utilities::MPI::this_mpi_process(comm)));
+    piece_file.write(vtu.str());
+    piece_file.commit();
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      {
+        std::vector<std::string> pieces;
+        for (unsigned int r = 0; r < Utilities::MPI::n_mpi_processes(comm); ++r)
+          pieces.push_back(piece(r));
+        std::ostringstream pvtu;
+        data_out.write_pvtu_record(pvtu, pieces);
+        OutputFile record(directory + "/" + base + ".pvtu");
+        record.write(pvtu.str());
+        record.commit();
+      }
+    return base + ".pvtu";
+  }
 
   template <int dim>
   std::string
@@ -160,7 +160,11 @@ namespace dealmpm
   template std::string write_grid_output(const BackgroundGrid<dim> &, \
                                          const NodalFields<dim> &,    \
                                          const std::string &,         \
-                                         unsigned int);
+                                         unsigned int);               \
+  template std::string write_pieces(const DataOut<dim> &,             \
+                                    const std::string &,              \
+                                    const std::string &,              \
+                                    MPI_Comm);
   DEALMPM_INSTANTIATE(2)
   DEALMPM_INSTANTIATE(3)
 #undef DEALMPM_INSTANTIATE

@@ -12,7 +12,7 @@ namespace dealmpm
   is_run_output_file(const std::string &file_name)
   {
     static const std::regex pattern(
-      "(((particles|grid)_[0-9]+(\\.[0-9]+)?\\.(vtu|pvtu))|particles_[0-9]+"
+      "(((particles|grid|fem_region_[0-9]+)_[0-9]+(\\.[0-9]+)?\\.(vtu|pvtu))|particles_[0-9]+"
       "\\.csv|statistics\\.csv|.+\\.pvd)(\\.tmp)?");
     return std::regex_match(file_name, pattern);
   }

@@ -6,6 +6,7 @@
 #include <dealmpm/io/output_folder.h>
 #include <dealmpm/io/output_writer.h>
 #include <dealmpm/io/particle_csv.h>
+#include <dealmpm/io/region_output.h>
 
 #include <filesystem>
 #include <iomanip>
@@ -128,6 +129,15 @@ namespace dealmpm
         grid_file =
           write_grid_output(scene.grid, scene.fields, dir, record.counter);
       });
+    std::vector<std::string> region_files(scene.regions.size());
+    for (unsigned int r = 0; r < scene.regions.size(); ++r)
+      attempt([&] {
+        region_files[r] =
+          write_region_output(*scene.regions[r].solid,
+                              dir,
+                              "fem_region_" + std::to_string(r + 1) + "_" +
+                                Utilities::int_to_string(record.counter, 5));
+      });
     if (settings.write_particle_csv)
       attempt([&] {
         std::ostringstream name;
@@ -145,6 +155,14 @@ namespace dealmpm
                                                dir + "/particles.pvd");
         if (!grid_file.empty())
           record.grid_series.add_and_write(time, grid_file, dir + "/grid.pvd");
+        record.region_series.resize(region_files.size());
+        for (unsigned int r = 0; r < region_files.size(); ++r)
+          if (!region_files[r].empty())
+            record.region_series[r].add_and_write(time,
+                                                  region_files[r],
+                                                  dir + "/fem_region_" +
+                                                    std::to_string(r + 1) +
+                                                    ".pvd");
       });
     agree_on_output_error(problem, context.str(), comm);
     ++record.counter;

@@ -6,89 +6,124 @@
 #include <dealmpm/transfer/particle_to_grid.h>
 #include <dealmpm/transfer/reference_stencil.h>
 
+#include <algorithm>
 #include <type_traits>
 
 namespace dealmpm
 {
+  namespace
+  {
+    /** The stages of a scheme without FEM regions. */
+    template <int dim>
+    std::vector<Stage<dim>>
+    scheme_stages(const UpdateScheme scheme,
+                  const bool         split_mixed_cells,
+                  const Formulation  formulation,
+                  const bool         newmark)
+    {
+      using namespace stages;
+      // Before the sweep that deforms the particles, from the velocity it
+      // reads.
+      const auto split = [&](std::vector<Stage<dim>> &list) {
+        if (split_mixed_cells)
+          list.push_back({"mixed-cell split", &mixed_cell_split<dim>});
+      };
+      const Stage<dim> first[] = {
+        {"stencil",
+         formulation == Formulation::total_lagrangian ?
+           &reference_stencil<dim> :
+           &stencil<dim>}};
+      const Stage<dim> p2g_and_forces[] = {
+        {"P2G", &p2g<dim>},
+        {"effects after P2G", &effect_forces<dim>},
+        {"grid update", &grid_update<dim>},
+        {"effects after the grid update", &effects_after_grid_update<dim>}};
+      std::vector<Stage<dim>> list(std::begin(first), std::end(first));
+      if (newmark)
+        {
+          // MUSL's order, with the particles' displacement velocity re-mapped
+          // in place of their momentum (MethodSettings requires MUSL).
+          list.push_back({"P2G", &p2g<dim>});
+          list.insert(list.end(),
+                      std::begin(p2g_and_forces) + 1,
+                      std::end(p2g_and_forces));
+          list.push_back({"Newmark G2P", &newmark_predictor<dim>});
+          list.push_back({"P2G", &p2g_mass_momentum<dim>});
+          list.push_back({"grid update", &velocity_from_momentum<dim>});
+          split(list);
+          list.push_back(
+            {"Newmark motion and stress update", &newmark_motion<dim>});
+          list.push_back({"effects after G2P", &effects_after_g2p<dim>});
+          return list;
+        }
+      switch (scheme)
+        {
+          case UpdateScheme::USL:
+            // G2P and the stress update share one sweep: both use v*.
+            list.insert(list.end(),
+                        std::begin(p2g_and_forces),
+                        std::end(p2g_and_forces));
+            split(list);
+            list.push_back(
+              {"G2P and stress update", &g2p_and_stress_update<dim>});
+            break;
+          case UpdateScheme::USF:
+            list.push_back({"P2G", &p2g_mass_momentum<dim>});
+            list.push_back({"grid update", &velocity_from_momentum<dim>});
+            split(list);
+            list.push_back({"stress update", &stress_update<dim>});
+            list.push_back({"P2G", &p2g_force<dim>});
+            list.insert(list.end(),
+                        std::begin(p2g_and_forces) + 1,
+                        std::end(p2g_and_forces));
+            list.push_back({"G2P", &g2p<dim>});
+            break;
+          case UpdateScheme::MUSL:
+            // Re-mapping the updated particle momentum smooths v* where nodes
+            // have little mass (a stressed particle entering an empty cell).
+            list.insert(list.end(),
+                        std::begin(p2g_and_forces),
+                        std::end(p2g_and_forces));
+            list.push_back({"G2P", &g2p<dim>});
+            list.push_back({"P2G", &p2g_mass_momentum<dim>});
+            list.push_back({"grid update", &velocity_from_momentum<dim>});
+            split(list);
+            list.push_back({"stress update", &stress_update<dim>});
+            break;
+        }
+      list.push_back({"effects after G2P", &effects_after_g2p<dim>});
+      return list;
+    }
+  } // namespace
+
   template <int dim>
   std::vector<Stage<dim>>
   stages_of(const UpdateScheme scheme,
             const bool         split_mixed_cells,
             const Formulation  formulation,
-            const bool         newmark)
+            const bool         newmark,
+            const bool         fem_regions)
   {
-    using namespace stages;
-    // Before the sweep that deforms the particles, from the velocity it
-    // reads.
-    const auto split = [&](std::vector<Stage<dim>> &list) {
-      if (split_mixed_cells)
-        list.push_back({"mixed-cell split", &mixed_cell_split<dim>});
+    std::vector<Stage<dim>> list =
+      scheme_stages<dim>(scheme, split_mixed_cells, formulation, newmark);
+    if (!fem_regions)
+      return list;
+    // After the first of each named stage.
+    const auto insert_after = [&](const std::string &name,
+                                  const Stage<dim>  &stage) {
+      const auto at =
+        std::find_if(list.begin(), list.end(), [&](const auto &s) {
+          return s.name == name;
+        });
+      AssertThrow(at != list.end(), ExcInternalError());
+      list.insert(at + 1, stage);
     };
-    const Stage<dim> first[]          = {{"stencil",
-                                 formulation == Formulation::total_lagrangian ?
-                                            &reference_stencil<dim> :
-                                            &stencil<dim>}};
-    const Stage<dim> p2g_and_forces[] = {
-      {"P2G", &p2g<dim>},
-      {"effects after P2G", &effect_forces<dim>},
-      {"grid update", &grid_update<dim>},
-      {"effects after the grid update", &effects_after_grid_update<dim>}};
-    std::vector<Stage<dim>> list(std::begin(first), std::end(first));
-    if (newmark)
-      {
-        // MUSL's order, with the particles' displacement velocity re-mapped
-        // in place of their momentum (MethodSettings requires MUSL).
-        list.push_back({"P2G", &p2g<dim>});
-        list.insert(list.end(),
-                    std::begin(p2g_and_forces) + 1,
-                    std::end(p2g_and_forces));
-        list.push_back({"Newmark G2P", &newmark_predictor<dim>});
-        list.push_back({"P2G", &p2g_mass_momentum<dim>});
-        list.push_back({"grid update", &velocity_from_momentum<dim>});
-        split(list);
-        list.push_back(
-          {"Newmark motion and stress update", &newmark_motion<dim>});
-        list.push_back({"effects after G2P", &effects_after_g2p<dim>});
-        return list;
-      }
-    switch (scheme)
-      {
-        case UpdateScheme::USL:
-          // G2P and the stress update share one sweep: both use v*.
-          list.insert(list.end(),
-                      std::begin(p2g_and_forces),
-                      std::end(p2g_and_forces));
-          split(list);
-          list.push_back(
-            {"G2P and stress update", &g2p_and_stress_update<dim>});
-          break;
-        case UpdateScheme::USF:
-          list.push_back({"P2G", &p2g_mass_momentum<dim>});
-          list.push_back({"grid update", &velocity_from_momentum<dim>});
-          split(list);
-          list.push_back({"stress update", &stress_update<dim>});
-          list.push_back({"P2G", &p2g_force<dim>});
-          list.insert(list.end(),
-                      std::begin(p2g_and_forces) + 1,
-                      std::end(p2g_and_forces));
-          list.push_back({"G2P", &g2p<dim>});
-          break;
-        case UpdateScheme::MUSL:
-          // Re-mapping the updated particle momentum smooths v* where nodes
-          // have little mass (a stressed particle entering an empty cell).
-          list.insert(list.end(),
-                      std::begin(p2g_and_forces),
-                      std::end(p2g_and_forces));
-          list.push_back({"G2P", &g2p<dim>});
-          list.push_back({"P2G", &p2g_mass_momentum<dim>});
-          list.push_back({"grid update", &velocity_from_momentum<dim>});
-          split(list);
-          list.push_back({"stress update", &stress_update<dim>});
-          break;
-      }
-    list.push_back({"effects after G2P", &effects_after_g2p<dim>});
+    insert_after("effects after P2G", {"FEM forces", &stages::fem_forces<dim>});
+    insert_after("effects after the grid update",
+                 {"FEM update", &stages::fem_update<dim>});
     return list;
   }
+
 
   namespace stages
   {
@@ -428,6 +463,41 @@ namespace dealmpm
 
     template <int dim>
     void
+    fem_forces(StepState<dim> &s, const std::string &timer_section)
+    {
+      TimerOutput::Scope   t(s.timer, timer_section);
+      const BodyForce<dim> body_force = [&](const Point<dim>     &X,
+                                            const Point<dim>     &x,
+                                            const Tensor<1, dim> &v,
+                                            const double          time) {
+        Tensor<1, dim> b;
+        for (const auto &effect : s.effects)
+          b += effect->body_acceleration(X, x, v, time);
+        return b;
+      };
+      for (FemRegion<dim> &region : *s.fem_regions)
+        {
+          region.solid->compute_forces(s.time, s.dt, body_force);
+          if (region.bonded)
+            region.bonded->deposit(s.grid, s.field_set);
+        }
+    }
+
+    template <int dim>
+    void
+    fem_update(StepState<dim> &s, const std::string &timer_section)
+    {
+      TimerOutput::Scope t(s.timer, timer_section);
+      for (FemRegion<dim> &region : *s.fem_regions)
+        {
+          if (region.bonded)
+            region.bonded->read_back(s.grid, s.field_set);
+          region.solid->advance(s.time, s.dt);
+        }
+    }
+
+    template <int dim>
+    void
     effects_after_g2p(StepState<dim> &s, const std::string &)
     {
       const EffectContext<dim> context = s.effect_context();
@@ -437,11 +507,9 @@ namespace dealmpm
     }
   } // namespace stages
 
-#define DEALMPM_INSTANTIATE(dim)                           \
-  template std::vector<Stage<dim>> stages_of(UpdateScheme, \
-                                             bool,         \
-                                             Formulation,  \
-                                             bool);
+#define DEALMPM_INSTANTIATE(dim)              \
+  template std::vector<Stage<dim>> stages_of( \
+    UpdateScheme, bool, Formulation, bool, bool);
   DEALMPM_INSTANTIATE(2)
   DEALMPM_INSTANTIATE(3)
 #undef DEALMPM_INSTANTIATE

@@ -22,13 +22,15 @@ namespace dealmpm
   /**
    * Check a scene file's text before deal.II parses it, for mistakes whose
    * deal.II message does not say what to do: a scene that sets nothing
-   * (empty or only comments) and "Body N" / "Material N" sections beyond
-   * "Number of bodies" / "Number of materials". Throws InputError.
+   * (empty or only comments) and "Body N" / "Material N" / "FEM region N"
+   * sections beyond "Number of bodies" / "Number of materials" / "Number
+   * of FEM regions". Throws InputError.
    */
   void
   check_scene_text(const std::string &file,
                    const unsigned int n_bodies,
-                   const unsigned int n_materials);
+                   const unsigned int n_materials,
+                   const unsigned int n_fem_regions = 0);
 
   /**
    * What a typed pattern's description (Patterns::Double, Integer,

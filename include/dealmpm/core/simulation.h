@@ -11,6 +11,7 @@
 #include <dealmpm/diagnostics/statistics.h>
 #include <dealmpm/effects/effect.h>
 #include <dealmpm/effects/effect_list.h>
+#include <dealmpm/fem/fem_region.h>
 #include <dealmpm/grid/adaptivity.h>
 #include <dealmpm/grid/background_grid.h>
 #include <dealmpm/grid/boundary_conditions.h>
@@ -44,9 +45,10 @@ namespace dealmpm
   /** The size of a scene, read before everything else is declared. */
   struct SceneShape
   {
-    unsigned int dim         = 2;
-    unsigned int n_bodies    = 1;
-    unsigned int n_materials = 1;
+    unsigned int dim           = 2;
+    unsigned int n_bodies      = 1;
+    unsigned int n_materials   = 1;
+    unsigned int n_fem_regions = 0;
   };
 
   /** A run's settings, each section read by the part it belongs to. */
@@ -199,6 +201,12 @@ namespace dealmpm
     /** Work done so far by effects without a potential (all ranks). */
     double
     external_work() const;
+    /** The scene's FEM regions ("FEM region N"). */
+    const std::vector<FemRegion<dim>> &
+    fem_regions() const
+    {
+      return regions;
+    }
     /** The scene's shape function, set up for the grid. */
     const Kernel<dim> &
     get_kernel() const
@@ -263,6 +271,23 @@ namespace dealmpm
      * cannot run with: total Lagrangian, Newmark. */
     void
     check_body_fields(SceneReader &reader, const std::string &effect) const;
+    /** Make the scene's FEM regions and refuse what their bonded
+     * boundaries cannot run with. */
+    void
+    create_fem_regions(SceneReader &reader, const SceneShape &shape);
+    /** The largest signal rate (wave speed over spacing) of the FEM
+     * regions, 0 without. Collective. */
+    double
+    fem_signal_rate() const;
+    /** Add the regions' mass, momentum and energies to @p s (computed
+     * for the particles), with each region's energies as columns
+     * fem<N>_kinetic_energy, _strain_energy, _gravitational_energy. */
+    void
+    add_fem_statistics(Statistics &s) const;
+    /** Work of the regions' tractions and prescribed motions (this
+     * rank's nodes). */
+    double
+    fem_external_work() const;
     /** Refuse what total Lagrangian cannot do (fluids, bodies that start
      * apart) and make its reference stencil. */
     void
@@ -335,6 +360,7 @@ namespace dealmpm
     std::vector<std::string>                    effect_names;
     std::vector<Body<dim>>                      bodies;
     std::unique_ptr<ParticleSet<dim>>           particles;
+    std::vector<FemRegion<dim>>                 regions;
     /** The cells' particle weights on the triangulation's weight signal;
      * after particles, so that it is disconnected before they go. */
     boost::signals2::scoped_connection particle_weights;

@@ -226,6 +226,18 @@ namespace dealmpm
     restore_state(const std::vector<double> & /*state*/)
     {}
 
+    /** The body force per unit mass at reference position X, position x
+     * and velocity v at time t (gravity, a rotating frame's), which FEM
+     * regions take at their nodes; zero for effects without one. */
+    virtual Tensor<1, dim>
+    body_acceleration(const Point<dim> & /*X*/,
+                      const Point<dim> & /*x*/,
+                      const Tensor<1, dim> & /*v*/,
+                      const double /*t*/) const
+    {
+      return {};
+    }
+
     /** Potential energy of a mass at x, for the statistics. */
     virtual double
     potential_energy(const double /*mass*/, const Point<dim> & /*x*/) const

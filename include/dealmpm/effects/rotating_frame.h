@@ -2,6 +2,8 @@
 
 #include <dealmpm/effects/effect_with_work.h>
 
+#include <utility>
+
 namespace dealmpm
 {
   /**
@@ -49,7 +51,17 @@ namespace dealmpm
     add_nodal_forces(const EffectContext<dim> &state,
                      NodalFields<dim>         &fields) override;
 
+    Tensor<1, dim>
+    body_acceleration(const Point<dim>     &X,
+                      const Point<dim>     &x,
+                      const Tensor<1, dim> &v,
+                      const double          t) const override;
+
   private:
+    /** omega and its rate at time t. */
+    std::pair<Tensor<1, 3>, Tensor<1, 3>>
+    rotation_at(const double t) const;
+
     Tensor<1, 3> omega;
     Point<dim>   axis_point;
     double       ramp_time;

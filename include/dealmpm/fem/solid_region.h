@@ -105,6 +105,11 @@ namespace dealmpm
     double
     stable_time_step(const double cfl) const;
 
+    /** The largest wave speed over node spacing (1/s), the inverse of the
+     * stable step; the deformed spacing. Collective. */
+    double
+    signal_rate() const;
+
     /** f = f_int(u) + tractions + m b at the start of a step of size dt
      * from @p time (the internal force's stress is advanced over the last
      * step). Collective. */
@@ -162,11 +167,13 @@ namespace dealmpm
     node_vector(const LinearAlgebra::distributed::Vector<double> &v,
                 const Node                                       &node) const;
 
-    /** Per owned cell, the mean over its quadrature points of the stress
-     * and of each internal variable component (for output). */
+    /** Per owned cell, the mean over its quadrature points of the full
+     * 3 x 3 stress (2D: with sigma_zz), the von Mises stress and each
+     * internal variable component (for output). */
     void
-    cell_means(std::vector<SymmetricTensor<2, dim>> &cell_stress,
-               std::vector<std::vector<double>>     &cell_internal) const;
+    cell_means(std::vector<SymmetricTensor<2, 3>> &cell_stress,
+               std::vector<double>                &cell_von_mises,
+               std::vector<std::vector<double>>   &cell_internal) const;
 
     const Material<dim> &
     get_material() const

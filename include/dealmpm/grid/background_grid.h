@@ -77,6 +77,25 @@ namespace dealmpm
     std::string coarse_checksum;
   };
 
+  /** The entries of a mesh (Type, Lower corner, Upper corner, Cells, Mesh
+   * file) in the current section: the background grid's and each FEM
+   * region's. */
+  template <int dim>
+  void
+  declare_mesh_entries(ParameterHandler &prm);
+
+  /** The coarse mesh those entries describe, into @p mesh: a colorized
+   * rectangle, or a Gmsh file of quadrilaterals/hexahedra whose cells are
+   * neither inverted nor twisted (one-line failures). @p before sees the
+   * number of cells and the box before they are made. */
+  template <int dim>
+  void
+  read_coarse_mesh(
+    const SceneReader                                           &reader,
+    Triangulation<dim>                                          &mesh,
+    const std::function<void(double, const BoundingBox<dim> &)> &before =
+      [](double, const BoundingBox<dim> &) {});
+
   /**
    * The background grid: a distributed triangulation (a subdivided rectangle
    * or a Gmsh mesh, optionally refined), FE_Q(1) nodes, hanging-node

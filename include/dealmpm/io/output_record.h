@@ -2,6 +2,8 @@
 
 #include <dealmpm/io/pvd_series.h>
 
+#include <vector>
+
 namespace dealmpm
 {
   /**
@@ -17,12 +19,16 @@ namespace dealmpm
     unsigned int last_step = 0;
     PvdSeries    particle_series;
     PvdSeries    grid_series;
+    /** One per FEM region. */
+    std::vector<PvdSeries> region_series;
 
     template <class Archive>
     void
     serialize(Archive &archive, const unsigned int /*version*/)
     {
+      // Needs <boost/serialization/vector.hpp>.
       archive &counter &last_time &last_step &particle_series &grid_series;
+      archive                                                 &region_series;
     }
   };
 } // namespace dealmpm

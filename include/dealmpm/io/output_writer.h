@@ -1,5 +1,6 @@
 #pragma once
 
+#include <dealmpm/fem/fem_region.h>
 #include <dealmpm/grid/background_grid.h>
 #include <dealmpm/grid/nodal_fields.h>
 #include <dealmpm/io/output_record.h>
@@ -52,6 +53,7 @@ namespace dealmpm
       const std::vector<std::unique_ptr<Material<dim>>> &materials;
       const BackgroundGrid<dim>                         &grid;
       const NodalFields<dim>                            &fields;
+      const std::vector<FemRegion<dim>>                 &regions;
     };
 
     /** Write the output of the state at @p time, step @p step, counted in

@@ -30,13 +30,17 @@ namespace dealmpm
    * (ParticleUpdate; the scheme is MUSL), the particles advance by
    * Newmark's formulas: P2G of the predicted velocity, the acceleration
    * and displacement velocity on the particles, its re-map, then one sweep
-   * that moves, deforms and reports the velocity. */
+   * that moves, deforms and reports the velocity. With @p fem_regions,
+   * the regions' forces and their bonded nodes' P2G follow the effects
+   * after P2G, and their update (bonded nodes from v*) the effects after
+   * the grid update. */
   template <int dim>
   std::vector<Stage<dim>>
   stages_of(const UpdateScheme scheme,
             const bool         split_mixed_cells = false,
             const Formulation  formulation = Formulation::updated_lagrangian,
-            const bool         newmark     = false);
+            const bool         newmark     = false,
+            const bool         fem_regions = false);
 
   /** The stages, each a function of the step's state. */
   namespace stages
@@ -126,6 +130,19 @@ namespace dealmpm
     template <int dim>
     void
     newmark_motion(StepState<dim> &state, const std::string &timer_section);
+
+    /** Each FEM region's forces (internal, tractions, the effects' body
+     * forces), then its bonded nodes' mass, momentum and force to the
+     * grid. */
+    template <int dim>
+    void
+    fem_forces(StepState<dim> &state, const std::string &timer_section);
+
+    /** Each FEM region's bonded nodes take v* back, then the region
+     * advances. */
+    template <int dim>
+    void
+    fem_update(StepState<dim> &state, const std::string &timer_section);
 
     /** Effects after G2P. */
     template <int dim>

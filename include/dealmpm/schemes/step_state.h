@@ -3,6 +3,7 @@
 #include <deal.II/base/timer.h>
 
 #include <dealmpm/effects/effect.h>
+#include <dealmpm/fem/fem_region.h>
 #include <dealmpm/grid/background_grid.h>
 #include <dealmpm/grid/boundary_conditions.h>
 #include <dealmpm/grid/nodal_field_set.h>
@@ -91,6 +92,8 @@ namespace dealmpm
     /** The strain-rate split of cells shared by materials of different
      * stiffness, or nullptr when the scene has none or turns it off. */
     MixedCellSplit<dim> *mixed_cells = nullptr;
+    /** The scene's FEM regions, or nullptr when it has none. */
+    std::vector<FemRegion<dim>> *fem_regions = nullptr;
     /** Some particle left its cell in G2P (they are relocated after the
      * step). */
     bool left_cell = false;

@@ -1,0 +1,76 @@
+#pragma once
+
+#include <deal.II/base/bounding_box.h>
+#include <deal.II/numerics/rtree.h>
+
+#include <dealmpm/fem/solid_region.h>
+#include <dealmpm/grid/background_grid.h>
+#include <dealmpm/grid/nodal_field_set.h>
+
+#include <utility>
+#include <vector>
+
+namespace dealmpm
+{
+  /**
+   * The bonded nodes of a solid region (RESEARCH.md 1.2, the FEMP/AFEMP
+   * coupling): they are not integrated by the region; their mass, momentum
+   * and force go to the background grid with the linear kernel, and they
+   * take the grid's velocity v* back, so that they move with the MPM
+   * material they touch and linear momentum is exact (the weights sum to
+   * one). The nodes of every rank are gathered on every rank (an
+   * interface has few nodes against the particles), and each is deposited
+   * by one rank: the lowest that owns a cell holding it; the read-back is
+   * summed over the ranks, so the region's and the grid's partitions need
+   * not agree.
+   */
+  template <int dim>
+  class BondedCoupling
+  {
+  public:
+    /** The bonded nodes of @p region; with per-body fields their mass
+     * goes to body @p body's too. */
+    BondedCoupling(SolidRegion<dim> &region, const unsigned int body);
+
+    /** After the grid changed: its cells' search tree. */
+    void
+    grid_changed(const BackgroundGrid<dim> &grid);
+
+    /** Gather the nodes and add m, m v and f (the region's forces of this
+     * step) to the nodal fields. Collective; RunError when a node is in
+     * no cell of the grid. */
+    void
+    deposit(const BackgroundGrid<dim> &grid, NodalFieldSet<dim> &fields);
+
+    /** v_i = sum_I N_I(x_i) v*_I into the region's bonded nodes.
+     * Collective. */
+    void
+    read_back(const BackgroundGrid<dim> &grid,
+              const NodalFieldSet<dim>  &fields);
+
+    /** The region's bonded nodes on all ranks. */
+    std::size_t
+    n_nodes() const
+    {
+      return n_global;
+    }
+
+  private:
+    SolidRegion<dim> &region;
+    unsigned int      body;
+    /** Indices into region.nodes of this rank's bonded nodes. */
+    std::vector<unsigned int> local;
+    std::size_t               n_global = 0;
+    /** Bounding boxes of the owned (index < n_owned) and ghost cells. */
+    RTree<std::pair<BoundingBox<dim>, unsigned int>> tree;
+    /** Per gathered node deposited here: its index among all nodes, the
+     * cell and the unit-cell point. */
+    struct Placed
+    {
+      std::size_t          node;
+      const GridCell<dim> *cell;
+      Point<dim>           xi;
+    };
+    std::vector<Placed> placed;
+  };
+} // namespace dealmpm

@@ -1,0 +1,67 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <dealmpm/base/scene_reader.h>
+#include <dealmpm/fem/bonded_coupling.h>
+#include <dealmpm/fem/solid_region.h>
+#include <dealmpm/grid/background_grid.h>
+#include <dealmpm/materials/material.h>
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace dealmpm
+{
+  /**
+   * A scene's "FEM region N" section: the mesh (a rectangle or a Gmsh
+   * file of its own), the degree, the material (one of the scene's
+   * 'Material N' sections), the initial velocity, the boundary conditions
+   * and the boundary ids bonded to MPM bodies.
+   */
+  template <int dim>
+  struct FemRegionSettings
+  {
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /** Read the current section (the reader is in it); one-line failures
+     * for bad values, numbers of materials or bodies out of range. */
+    static FemRegionSettings
+    read(SceneReader       &reader,
+         const unsigned int n_materials,
+         const unsigned int n_bodies);
+
+    unsigned int                  degree   = 1;
+    unsigned int                  material = 0; ///< 0-based
+    Tensor<1, dim>                initial_velocity;
+    RegionBoundaryConditions<dim> conditions;
+    /** Bonded boundary id -> body (0-based). */
+    std::map<types::boundary_id, unsigned int> bonded_to;
+  };
+
+  /** A region of the run: its settings, the solid and, when it has
+   * bonded boundaries, their coupling. */
+  template <int dim>
+  struct FemRegion
+  {
+    std::string                          name; ///< "FEM region 1"
+    FemRegionSettings<dim>               settings;
+    std::unique_ptr<SolidRegion<dim>>    solid;
+    std::unique_ptr<BondedCoupling<dim>> bonded;
+  };
+
+  /** Make region @p index (0-based) from its section: the mesh, the
+   * checks against the scene (ids the mesh has, inside the background
+   * grid, bonded nodes no coarser than its cells), the solid set up with
+   * its initial velocity. Collective; InputError on bad input. */
+  template <int dim>
+  FemRegion<dim>
+  make_fem_region(SceneReader                                       &reader,
+                  const unsigned int                                 index,
+                  const std::vector<std::unique_ptr<Material<dim>>> &materials,
+                  const unsigned int                                 n_bodies,
+                  const BackgroundGrid<dim>                         &grid);
+} // namespace dealmpm

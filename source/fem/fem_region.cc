@@ -1,0 +1,289 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/grid/grid_tools.h>
+
+#include <dealmpm/base/errors.h>
+#include <dealmpm/fem/fem_region.h>
+#include <dealmpm/grid/boundary_conditions.h>
+
+#include <sstream>
+
+namespace dealmpm
+{
+  template <int dim>
+  void
+  FemRegionSettings<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    declare_mesh_entries<dim>(prm);
+    prm.declare_entry("Degree",
+                      "1",
+                      Patterns::Integer(1, 2),
+                      "Polynomial degree k of the FE_Q(k) displacement: 1 or "
+                      "2 (Q2 bends and nearly incompressible solids without "
+                      "locking).");
+    prm.declare_entry("Material",
+                      "1",
+                      Patterns::Integer(1),
+                      "The region's material: the number N of a 'Material "
+                      "N' section (any solid model; its internal variables "
+                      "live at the quadrature points).");
+    prm.declare_entry("Initial velocity",
+                      repeat_value<dim>("0"),
+                      Patterns::List(Patterns::Double(), dim, dim),
+                      "Velocity of every node at t = 0 (m/s).");
+    prm.declare_entry("Fixed boundaries",
+                      "",
+                      Patterns::List(Patterns::Integer(0)),
+                      "Boundary ids of the region's mesh held in place "
+                      "(rectangle: 0/1 at x min/max, 2/3 at y min/max, 4/5 "
+                      "at z min/max; a Gmsh file: its physical tags).");
+    const std::string vectors =
+      "Per boundary id a vector, items separated by ';', e.g. '1: 0, -0.01; "
+      "3: 0.01, 0'";
+    prm.declare_entry("Prescribed displacement",
+                      "",
+                      Patterns::Anything(),
+                      vectors + " (m): the nodes' displacement from their "
+                                "start is that vector times 'Displacement "
+                                "curve'.");
+    prm.declare_entry("Displacement curve",
+                      "",
+                      Patterns::Anything(),
+                      "Factor of 'Prescribed displacement' against time, "
+                      "'t0: f0, t1: f1, ...' piecewise linear, constant "
+                      "outside; empty for 1.");
+    prm.declare_entry("Prescribed velocity",
+                      "",
+                      Patterns::Anything(),
+                      vectors + " (m/s), times 'Velocity curve'.");
+    prm.declare_entry("Velocity curve",
+                      "",
+                      Patterns::Anything(),
+                      "Factor of 'Prescribed velocity' against time, like "
+                      "'Displacement curve'.");
+    prm.declare_entry("Traction",
+                      "",
+                      Patterns::Anything(),
+                      vectors + " (Pa): force per unit reference area "
+                                "(nominal, a dead load), times 'Traction "
+                                "curve'.");
+    prm.declare_entry("Traction curve",
+                      "",
+                      Patterns::Anything(),
+                      "Factor of 'Traction' against time, like "
+                      "'Displacement curve'.");
+    prm.declare_entry(
+      "Bonded boundaries",
+      "",
+      Patterns::Anything(),
+      "Per boundary id the MPM body (number N of 'Body N') it is bonded to, "
+      "e.g. '1: 1': those nodes move with the grid's velocity (no slip, no "
+      "gap) and give it their mass, momentum and force. Their spacing must "
+      "not exceed the background cells' size. Needs 'MPM/Update scheme = "
+      "USL' and the updated Lagrangian formulation.");
+  }
+
+  namespace
+  {
+    /** "id: x, y; id: x, y" -> id -> vector. */
+    template <int dim>
+    std::map<types::boundary_id, Tensor<1, dim>>
+    read_id_vectors(const SceneReader &reader, const std::string &entry)
+    {
+      std::map<types::boundary_id, Tensor<1, dim>> map;
+      const std::string expected = "items 'id: " + repeat_value<dim>("v") +
+                                   "' separated by ';', each boundary id once";
+      for (const std::string &item :
+           Utilities::split_string_list(reader.get(entry), ';'))
+        {
+          const auto colon = item.find(':');
+          if (colon == std::string::npos)
+            reader.fail(entry, expected);
+          const std::vector<std::string> numbers =
+            Utilities::split_string_list(item.substr(colon + 1), ',');
+          long           id = -1;
+          Tensor<1, dim> value;
+          try
+            {
+              id = Utilities::string_to_int(item.substr(0, colon));
+              if (numbers.size() != dim)
+                throw std::invalid_argument("size");
+              for (unsigned int d = 0; d < dim; ++d)
+                value[d] = Utilities::string_to_double(numbers[d]);
+            }
+          catch (...)
+            {
+              reader.fail(entry, expected);
+            }
+          if (id < 0 || id >= numbers::internal_face_boundary_id ||
+              map.count(id) > 0)
+            reader.fail(entry, expected);
+          map[id] = value;
+        }
+      return map;
+    }
+
+    /** Fail on @p entry unless the mesh has every id of @p ids. */
+    template <int dim, typename Map>
+    void
+    check_ids(const SceneReader                     &reader,
+              const std::string                     &entry,
+              const Map                             &ids,
+              const std::vector<types::boundary_id> &mesh_ids)
+    {
+      std::map<unsigned int, std::string> named;
+      for (const auto &item : ids)
+        named[item.first] = "";
+      check_grid_has_ids(reader, entry, named, mesh_ids);
+    }
+  } // namespace
+
+  template <int dim>
+  FemRegionSettings<dim>
+  FemRegionSettings<dim>::read(SceneReader       &reader,
+                               const unsigned int n_materials,
+                               const unsigned int n_bodies)
+  {
+    FemRegionSettings s;
+    s.degree            = reader.get_integer("Degree");
+    const long material = reader.get_integer("Material");
+    if (material < 1 || material > static_cast<long>(n_materials))
+      reader.fail("Material",
+                  "the number of a 'Material N' section, 1 to " +
+                    std::to_string(n_materials) + " ('Number of materials')");
+    s.material         = material - 1;
+    s.initial_velocity = reader.get_vector<dim>("Initial velocity");
+    RegionBoundaryConditions<dim> &bc = s.conditions;
+    for (const double id : reader.get_doubles("Fixed boundaries"))
+      bc.fixed.insert(static_cast<types::boundary_id>(id));
+    bc.displacement = read_id_vectors<dim>(reader, "Prescribed displacement");
+    bc.displacement_curve = LoadCurve::read(reader, "Displacement curve");
+    bc.velocity           = read_id_vectors<dim>(reader, "Prescribed velocity");
+    bc.velocity_curve     = LoadCurve::read(reader, "Velocity curve");
+    bc.traction           = read_id_vectors<dim>(reader, "Traction");
+    bc.traction_curve     = LoadCurve::read(reader, "Traction curve");
+    for (const auto &[id, text] :
+         reader.get_id_map("Bonded boundaries", "a body number"))
+      {
+        long body = 0;
+        try
+          {
+            body = Utilities::string_to_int(text);
+          }
+        catch (...)
+          {}
+        if (body < 1 || body > static_cast<long>(n_bodies))
+          reader.fail("Bonded boundaries",
+                      "'id: body' with bodies from 1 to " +
+                        std::to_string(n_bodies) +
+                        " ('Number of bodies'), not '" + text + "'");
+        if (!s.bonded_to.empty() && s.bonded_to.begin()->second != body - 1)
+          reader.fail("Bonded boundaries",
+                      "every id bonded to the same body (a region bonds to "
+                      "one body)");
+        s.bonded_to[id] = body - 1;
+        bc.bonded.insert(id);
+      }
+    return s;
+  }
+
+  template <int dim>
+  FemRegion<dim>
+  make_fem_region(SceneReader                                       &reader,
+                  const unsigned int                                 index,
+                  const std::vector<std::unique_ptr<Material<dim>>> &materials,
+                  const unsigned int                                 n_bodies,
+                  const BackgroundGrid<dim>                         &grid)
+  {
+    FemRegion<dim> region;
+    region.name = "FEM region " + std::to_string(index + 1);
+    SectionScope section(reader, region.name);
+    region.settings =
+      FemRegionSettings<dim>::read(reader, materials.size(), n_bodies);
+    const FemRegionSettings<dim> &s        = region.settings;
+    const Material<dim>          &material = *materials[s.material];
+    if (material.resets_deformation())
+      reader.fail("Material",
+                  "a solid model (a fluid has no reference configuration "
+                  "for a finite element mesh)");
+    region.solid =
+      std::make_unique<SolidRegion<dim>>(grid.comm, material, s.degree);
+    SolidRegion<dim> &solid = *region.solid;
+    read_coarse_mesh<dim>(reader, solid.triangulation);
+
+    const std::vector<types::boundary_id> ids =
+      solid.triangulation.get_boundary_ids();
+    std::map<types::boundary_id, int> fixed;
+    for (const types::boundary_id id : s.conditions.fixed)
+      fixed[id] = 0;
+    check_ids<dim>(reader, "Fixed boundaries", fixed, ids);
+    check_ids<dim>(reader,
+                   "Prescribed displacement",
+                   s.conditions.displacement,
+                   ids);
+    check_ids<dim>(reader, "Prescribed velocity", s.conditions.velocity, ids);
+    check_ids<dim>(reader, "Traction", s.conditions.traction, ids);
+    check_ids<dim>(reader, "Bonded boundaries", s.bonded_to, ids);
+
+    // Every vertex inside the background grid's box (the nodes move on it).
+    const BoundingBox<dim> box = grid.bounding_box;
+    for (const auto &cell : solid.triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int v : cell->vertex_indices())
+          if (!box.point_inside(cell->vertex(v), 1e-12))
+            {
+              std::ostringstream where;
+              where << cell->vertex(v);
+              reader.fail(reader.get("Type") == "rectangle" ? "Upper corner" :
+                                                              "Mesh file",
+                          "a region inside the background grid ('Grid'), "
+                          "which its vertex at (" +
+                            where.str() + ") is not");
+            }
+
+    solid.setup(s.conditions);
+    solid.set_velocity(Functions::ConstantFunction<dim>(std::vector<double>(
+      &s.initial_velocity[0], &s.initial_velocity[0] + dim)));
+    if (!s.bonded_to.empty())
+      {
+        // Grid nodes between two bonded nodes would see none of the
+        // region's mass: a node spacing up to the cells' size.
+        double h_min = std::numeric_limits<double>::max();
+        for (const GridCell<dim> &c : grid.cells)
+          h_min = std::min(h_min, c.h);
+        h_min = Utilities::MPI::min(h_min, grid.comm);
+        std::set<types::boundary_id> bonded;
+        for (const auto &item : s.bonded_to)
+          bonded.insert(item.first);
+        const double spacing = solid.largest_node_spacing_on(bonded);
+        if (spacing > h_min * (1 + 1e-9))
+          reader.fail("Bonded boundaries",
+                      "boundaries whose node spacing (" +
+                        Utilities::to_string(spacing) +
+                        " m here) is at most the background cells' size (" +
+                        Utilities::to_string(h_min) +
+                        " m): refine the region there ('Cells', 'Degree') "
+                        "or coarsen the grid");
+        region.bonded =
+          std::make_unique<BondedCoupling<dim>>(solid,
+                                                s.bonded_to.begin()->second);
+        region.bonded->grid_changed(grid);
+      }
+    return region;
+  }
+
+  template struct FemRegionSettings<2>;
+  template struct FemRegionSettings<3>;
+  template FemRegion<2>
+  make_fem_region(SceneReader &,
+                  unsigned int,
+                  const std::vector<std::unique_ptr<Material<2>>> &,
+                  unsigned int,
+                  const BackgroundGrid<2> &);
+  template FemRegion<3>
+  make_fem_region(SceneReader &,
+                  unsigned int,
+                  const std::vector<std::unique_ptr<Material<3>>> &,
+                  unsigned int,
+                  const BackgroundGrid<3> &);
+} // namespace dealmpm
