@@ -16,13 +16,15 @@ namespace dealmpm::test
   template <int dim>
   std::unique_ptr<Simulation<dim>>
   make_simulation(const std::string &text,
-                  const unsigned int n_bodies    = 1,
-                  const unsigned int n_materials = 1)
+                  const unsigned int n_bodies      = 1,
+                  const unsigned int n_materials   = 1,
+                  const unsigned int n_fem_regions = 0)
   {
     SceneShape shape;
-    shape.dim         = dim;
-    shape.n_bodies    = n_bodies;
-    shape.n_materials = n_materials;
+    shape.dim           = dim;
+    shape.n_bodies      = n_bodies;
+    shape.n_materials   = n_materials;
+    shape.n_fem_regions = n_fem_regions;
     ParameterHandler prm;
     Simulation<dim>::declare_parameters(prm, shape);
     prm.parse_input_from_string(text);

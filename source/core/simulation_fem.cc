@@ -40,7 +40,7 @@ namespace dealmpm
         if (method.scheme != UpdateScheme::USL ||
             method.particle_update.newmark || total_lagrangian())
           reader.fail("Bonded boundaries",
-                      "none unless 'MPM/Update scheme = USL' with the "
+                      "none unless 'MPM/Stress update = USL' with the "
                       "updated Lagrangian formulation and the explicit "
                       "particle update (the bonded nodes take one grid "
                       "velocity per step)");

@@ -4,8 +4,8 @@
 
 #include <dealmpm/base/errors.h>
 #include <dealmpm/fem/fem_region.h>
-#include <dealmpm/grid/boundary_conditions.h>
 
+#include <algorithm>
 #include <sstream>
 
 namespace dealmpm
@@ -79,7 +79,7 @@ namespace dealmpm
       "Per boundary id the MPM body (number N of 'Body N') it is bonded to, "
       "e.g. '1: 1': those nodes move with the grid's velocity (no slip, no "
       "gap) and give it their mass, momentum and force. Their spacing must "
-      "not exceed the background cells' size. Needs 'MPM/Update scheme = "
+      "not exceed the background cells' size. Needs 'MPM/Stress update = "
       "USL' and the updated Lagrangian formulation.");
   }
 
@@ -123,18 +123,25 @@ namespace dealmpm
       return map;
     }
 
-    /** Fail on @p entry unless the mesh has every id of @p ids. */
-    template <int dim, typename Map>
+    /** Fail on @p entry unless the region's mesh has every id of @p ids. */
+    template <typename Map>
     void
     check_ids(const SceneReader                     &reader,
               const std::string                     &entry,
               const Map                             &ids,
               const std::vector<types::boundary_id> &mesh_ids)
     {
-      std::map<unsigned int, std::string> named;
       for (const auto &item : ids)
-        named[item.first] = "";
-      check_grid_has_ids(reader, entry, named, mesh_ids);
+        if (std::find(mesh_ids.begin(), mesh_ids.end(), item.first) ==
+            mesh_ids.end())
+          {
+            std::string known;
+            for (const auto id : mesh_ids)
+              known += (known.empty() ? "" : ", ") + std::to_string(id);
+            reader.fail(entry,
+                        "boundary ids of the region's mesh (" + known +
+                          "), not " + std::to_string(item.first));
+          }
     }
   } // namespace
 
@@ -216,14 +223,14 @@ namespace dealmpm
     std::map<types::boundary_id, int> fixed;
     for (const types::boundary_id id : s.conditions.fixed)
       fixed[id] = 0;
-    check_ids<dim>(reader, "Fixed boundaries", fixed, ids);
-    check_ids<dim>(reader,
-                   "Prescribed displacement",
-                   s.conditions.displacement,
-                   ids);
-    check_ids<dim>(reader, "Prescribed velocity", s.conditions.velocity, ids);
-    check_ids<dim>(reader, "Traction", s.conditions.traction, ids);
-    check_ids<dim>(reader, "Bonded boundaries", s.bonded_to, ids);
+    check_ids(reader, "Fixed boundaries", fixed, ids);
+    check_ids(reader,
+              "Prescribed displacement",
+              s.conditions.displacement,
+              ids);
+    check_ids(reader, "Prescribed velocity", s.conditions.velocity, ids);
+    check_ids(reader, "Traction", s.conditions.traction, ids);
+    check_ids(reader, "Bonded boundaries", s.bonded_to, ids);
 
     // Every vertex inside the background grid's box (the nodes move on it).
     const BoundingBox<dim> box = grid.bounding_box;
@@ -257,13 +264,14 @@ namespace dealmpm
           bonded.insert(item.first);
         const double spacing = solid.largest_node_spacing_on(bonded);
         if (spacing > h_min * (1 + 1e-9))
-          reader.fail("Bonded boundaries",
-                      "boundaries whose node spacing (" +
-                        Utilities::to_string(spacing) +
-                        " m here) is at most the background cells' size (" +
-                        Utilities::to_string(h_min) +
-                        " m): refine the region there ('Cells', 'Degree') "
-                        "or coarsen the grid");
+          {
+            std::ostringstream why;
+            why << "boundaries whose node spacing (" << spacing
+                << " m here) is at most the background cells' size (" << h_min
+                << " m): refine the region there ('Cells', 'Degree') or "
+                   "coarsen the grid";
+            reader.fail("Bonded boundaries", why.str());
+          }
         region.bonded =
           std::make_unique<BondedCoupling<dim>>(solid,
                                                 s.bonded_to.begin()->second);

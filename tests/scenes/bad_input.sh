@@ -181,6 +181,29 @@ expect 2 "Adaptivity/Maximum level.*expected a level at least 'Minimum level'" \
 expect 2 "Adaptivity/Velocity jump/Coarsen fraction.*expected a number below Refine fraction" \
   "$scene" "${s[@]}" -s "Adaptivity/Criteria=velocity jump" -s "Adaptivity/Velocity jump/Coarsen fraction=0.5"
 expect 2 "Adaptivity/Criteria.*expected a comma-separated list of" "$scene" "${s[@]}" -s "Adaptivity/Criteria=particles, everywhere"
+# FEM regions (issue 15): each mistake named by its entry.
+fem="$(dirname "$scene")/bonded_bar.prm"
+big=(-s "Grid/Upper corner=1.2, 1.2" -s "Grid/Cells=48, 48" -s "FEM region 1/Type=mesh file"
+  -s "FEM region 1/Bonded boundaries=" -s "FEM region 1/Fixed boundaries=")
+expect 2 "FEM region 1/Mesh file.*without inverted or twisted cells" "$fem" "${s[@]}" "${big[@]}" \
+  -s "FEM region 1/Mesh file=$data/twisted_square.msh"
+expect 2 "FEM region 1/Mesh file.*quadrilaterals \(2D\) or hexahedra \(3D\), not triangles" "$fem" "${s[@]}" \
+  "${big[@]}" -s "FEM region 1/Mesh file=$data/triangles.msh"
+expect 2 "FEM region 1/Upper corner.*inside the background grid" "$fem" "${s[@]}" \
+  -s "FEM region 1/Upper corner=1.5, 0.025"
+expect 2 "FEM region 1/Bonded boundaries.*boundary ids of the region's mesh \(0, 1, 2, 3\), not 7" "$fem" "${s[@]}" \
+  -s "FEM region 1/Bonded boundaries=7: 1"
+expect 2 "FEM region 1/Bonded boundaries.*bodies from 1 to 1" "$fem" "${s[@]}" \
+  -s "FEM region 1/Bonded boundaries=1: 2"
+expect 2 "FEM region 1/Bonded boundaries.*node spacing \(0.025 m here\) is at most the background cells' size" \
+  "$fem" "${s[@]}" -s "Grid/Cells=48, 2"
+expect 2 "FEM region 1/Bonded boundaries.*'MPM/Stress update = USL'" "$fem" "${s[@]}" -s "MPM/Stress update=MUSL"
+expect 2 "FEM region 1/Material.*'Material N' section, 1 to 1" "$fem" "${s[@]}" -s "FEM region 1/Material=2"
+expect 2 "FEM region 1/Traction.*items 'id: v, v' separated by ';'" "$fem" "${s[@]}" -s "FEM region 1/Traction=1: 0"
+expect 2 "FEM region 1/Fixed boundaries.*not 9" "$fem" "${s[@]}" -s "FEM region 1/Fixed boundaries=9"
+expect 2 "section 'FEM region 1' but 'Number of FEM regions' = 0" "$fem" "${s[@]}" -s "Number of FEM regions=0"
+expect 2 "Checkpoint/Steps between checkpoints.*FEM regions" "$fem" "${s[@]}" -s "Checkpoint/Steps between checkpoints=10"
+expect 2 "resume of a scene with FEM regions" "$fem" "${s[@]}" --resume
 # Resuming where no run saved itself.
 expect 2 "checkpoints: no such folder of checkpoints" "$scene" "${s[@]}" --resume
 touch afile

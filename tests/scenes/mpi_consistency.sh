@@ -22,7 +22,8 @@
 #   by count) holds at most 1.2 times the mean particles per rank on 2 and
 #   3 ranks; a block sliding through the grid, repartitioned whenever
 #   the imbalance passes 1.05, on 1, 2 and 3 ranks (nothing lost or
-#   duplicated: n_particles and lost_particles are compared).
+#   duplicated: n_particles and lost_particles are compared);
+# - an FEM region bonded to an MPM body, on 1, 2 and 3 ranks.
 # Every run must have particles on every rank.
 set -euo pipefail
 dealmpm=$1 compare=$2 mpirun=$3 disks=$4 column=$5
@@ -79,6 +80,10 @@ compare_ranks mixed "$(dirname "$disks")/projectile_plate.prm" -s "Effects=" -s 
 dir=$(dirname "$disks")
 ranks=(1 2 3)
 compare_ranks cube "$dir/cube_drop_3d.prm" -s "Time/End time=0.15" -s "Output/Interval=0.01"
+# An FEM region bonded to an MPM body: the region and the grid are
+# partitioned each on its own (the bonded nodes gathered, each deposited by
+# one rank).
+compare_ranks bonded "$dir/bonded_bar.prm"
 # Checked every 10 steps, and empty cells weigh 1: a little above the 1.2
 # that triggers a repartition is possible between checks.
 for n in 2 3; do balanced "$work/cube$n/statistics.csv" 1.25; done
