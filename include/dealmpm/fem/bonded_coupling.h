@@ -1,8 +1,6 @@
 #pragma once
 
-#include <deal.II/base/bounding_box.h>
-#include <deal.II/numerics/rtree.h>
-
+#include <dealmpm/fem/nodes_on_grid.h>
 #include <dealmpm/fem/solid_region.h>
 #include <dealmpm/grid/background_grid.h>
 #include <dealmpm/grid/nodal_field_set.h>
@@ -18,11 +16,8 @@ namespace dealmpm
    * and force go to the background grid with the linear kernel, and they
    * take the grid's velocity v* back, so that they move with the MPM
    * material they touch and linear momentum is exact (the weights sum to
-   * one). The nodes of every rank are gathered on every rank (an
-   * interface has few nodes against the particles), and each is deposited
-   * by one rank: the lowest that owns a cell holding it; the read-back is
-   * summed over the ranks, so the region's and the grid's partitions need
-   * not agree.
+   * one). The region's and the grid's partitions need not agree
+   * (NodesOnGrid).
    */
   template <int dim>
   class BondedCoupling
@@ -61,16 +56,6 @@ namespace dealmpm
     /** Indices into region.nodes of this rank's bonded nodes. */
     std::vector<unsigned int> local;
     std::size_t               n_global = 0;
-    /** Bounding boxes of the owned (index < n_owned) and ghost cells. */
-    RTree<std::pair<BoundingBox<dim>, unsigned int>> tree;
-    /** Per gathered node deposited here: its index among all nodes, the
-     * cell and the unit-cell point. */
-    struct Placed
-    {
-      std::size_t          node;
-      const GridCell<dim> *cell;
-      Point<dim>           xi;
-    };
-    std::vector<Placed> placed;
+    NodesOnGrid<dim>          points;
   };
 } // namespace dealmpm

@@ -1,0 +1,148 @@
+#include <deal.II/base/mpi.h>
+
+#include <dealmpm/base/errors.h>
+#include <dealmpm/fem/nodes_on_grid.h>
+
+#include <limits>
+#include <sstream>
+
+#include "../transfer/node_accumulator.h"
+
+namespace dealmpm
+{
+  template <int dim>
+  void
+  NodesOnGrid<dim>::grid_changed(const BackgroundGrid<dim> &grid)
+  {
+    std::vector<std::pair<BoundingBox<dim>, unsigned int>> boxes;
+    const auto add = [&](const GridCell<dim> &c) {
+      boxes.emplace_back(BoundingBox<dim>(std::vector<Point<dim>>(
+                           c.vertices.begin(), c.vertices.end())),
+                         static_cast<unsigned int>(boxes.size()));
+      // A point on a face must be found by both cells.
+      boxes.back().first.extend(1e-10 * c.h);
+    };
+    for (const GridCell<dim> &c : grid.cells)
+      add(c);
+    for (const GridCell<dim> &c : grid.ghost_cells)
+      add(c);
+    tree = pack_rtree(boxes);
+  }
+
+  template <int dim>
+  void
+  NodesOnGrid<dim>::gather_and_place(const BackgroundGrid<dim> &grid,
+                                     const std::vector<double> &mine,
+                                     const unsigned int         n)
+  {
+    n_values = n;
+    n_mine   = mine.size() / n;
+    const std::vector<std::vector<double>> gathered =
+      Utilities::MPI::all_gather(grid.comm, mine);
+    const unsigned int this_rank = Utilities::MPI::this_mpi_process(grid.comm);
+    all.clear();
+    first = 0;
+    for (unsigned int r = 0; r < gathered.size(); ++r)
+      {
+        if (r < this_rank)
+          first += gathered[r].size() / n;
+        all.insert(all.end(), gathered[r].begin(), gathered[r].end());
+      }
+    n_global = all.size() / n;
+
+    constexpr unsigned int n_vertices = GridCell<dim>::n_vertices;
+    const std::size_t      n_owned    = grid.cells.size();
+    on_this_rank.clear();
+    std::vector<std::pair<BoundingBox<dim>, unsigned int>> hits;
+    for (std::size_t point = 0; point < n_global; ++point)
+      {
+        Point<dim> x;
+        for (unsigned int d = 0; d < dim; ++d)
+          x[d] = value(point, d);
+        hits.clear();
+        tree.query(boost::geometry::index::intersects(x),
+                   std::back_inserter(hits));
+        // The lowest rank that owns a cell holding x places it, in an
+        // owned cell of its own.
+        unsigned int         lowest = std::numeric_limits<unsigned int>::max();
+        const GridCell<dim> *owned_cell = nullptr;
+        Point<dim>           xi;
+        for (const auto &hit : hits)
+          {
+            const bool           is_owned = hit.second < n_owned;
+            const GridCell<dim> &c        = is_owned ?
+                                              grid.cells[hit.second] :
+                                              grid.ghost_cells[hit.second - n_owned];
+            const Point<dim>     unit     = c.reference_point(x);
+            bool                 inside   = true;
+            for (unsigned int d = 0; d < dim; ++d)
+              inside = inside && unit[d] > -1e-10 && unit[d] < 1 + 1e-10;
+            if (!inside)
+              continue;
+            lowest =
+              std::min(lowest, is_owned ? this_rank : c.cell->subdomain_id());
+            if (is_owned && owned_cell == nullptr)
+              {
+                owned_cell = &c;
+                xi         = unit;
+              }
+          }
+        if (lowest != this_rank || owned_cell == nullptr)
+          continue;
+        for (unsigned int d = 0; d < dim; ++d)
+          xi[d] = std::min(1., std::max(0., xi[d]));
+        double N[n_vertices];
+        q1_values<dim>(xi, N, nullptr);
+        const GridCell<dim> &c = *owned_cell;
+        Placed               p{point, {}, {}};
+        p.nodes.assign(&grid.cell_nodes[c.first_node],
+                       &grid.cell_nodes[c.first_node] + c.n_nodes);
+        p.weights.assign(c.n_nodes, 0.);
+        for (unsigned int k = 0; k < c.n_nodes; ++k)
+          if (c.first_weight == numbers::invalid_unsigned_int)
+            p.weights[k] = N[k];
+          else
+            for (unsigned int v = 0; v < n_vertices; ++v)
+              p.weights[k] +=
+                grid.cell_node_weights[c.first_weight + k * n_vertices + v] *
+                N[v];
+        on_this_rank.push_back(std::move(p));
+      }
+  }
+
+  template <int dim>
+  std::vector<double>
+  NodesOnGrid<dim>::sum_to_owners(std::vector<double> &per_point,
+                                  const unsigned int   n_components,
+                                  const MPI_Comm       comm) const
+  {
+    // One more component: how many ranks placed the point.
+    const unsigned int  width = n_components + 1;
+    std::vector<double> sum(width * n_global, 0.);
+    for (std::size_t p = 0; p < n_global; ++p)
+      for (unsigned int k = 0; k < n_components; ++k)
+        sum[width * p + k] = per_point[n_components * p + k];
+    for (const Placed &p : on_this_rank)
+      sum[width * p.point + n_components] = 1;
+    Utilities::MPI::sum(sum, comm, sum);
+    for (std::size_t p = 0; p < n_global; ++p)
+      if (sum[width * p + n_components] != 1.)
+        {
+          std::ostringstream where;
+          where << "a coupling node of an FEM region at (";
+          for (unsigned int d = 0; d < dim; ++d)
+            where << (d > 0 ? ", " : "") << value(p, d);
+          where << ") left the background grid; a larger grid, or walls "
+                   "that hold the region, may help";
+          throw RunError(where.str());
+        }
+    std::vector<double> mine(n_components * n_mine);
+    for (std::size_t j = 0; j < n_mine; ++j)
+      for (unsigned int k = 0; k < n_components; ++k)
+        mine[n_components * j + k] = sum[width * (first + j) + k];
+    return mine;
+  }
+
+  template class NodesOnGrid<2>;
+  template class NodesOnGrid<3>;
+} // namespace dealmpm
