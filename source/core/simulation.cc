@@ -487,8 +487,12 @@ namespace dealmpm
     for (const auto &effect : effects)
       effect->grid_changed(grid);
     for (FemRegion<dim> &region : regions)
-      if (region.bonded)
-        region.bonded->grid_changed(grid);
+      {
+        if (region.bonded)
+          region.bonded->grid_changed(grid);
+        if (region.contact)
+          region.contact->grid_changed(grid);
+      }
     nodal.reinit(grid.partitioner, bodies.size());
     // Smaller cells, smaller stable step.
     particle_check =

@@ -33,13 +33,20 @@ namespace dealmpm
     checkpoint.on_stop_signal = false;
     for (const FemRegion<dim> &region : regions)
       {
-        if (!region.bonded)
+        if (!region.bonded && !region.contact)
           continue;
-        SectionScope          section(reader, region.name);
+        SectionScope      section(reader, region.name);
+        const std::string entry =
+          region.bonded ? "Bonded boundaries" : "Contact boundaries";
         const MethodSettings &method = run_settings.method;
+        if (region.contact && nodal.has_body_fields())
+          reader.fail("Contact boundaries",
+                      "none in a scene with per-body fields ('frictional "
+                      "contact' between MPM bodies): the region meets the "
+                      "MPM material as one field yet");
         if (method.scheme != UpdateScheme::USL ||
             method.particle_update.newmark || total_lagrangian())
-          reader.fail("Bonded boundaries",
+          reader.fail(entry,
                       "none unless 'MPM/Stress update = USL' with the "
                       "updated Lagrangian formulation and the explicit "
                       "particle update (the bonded nodes take one grid "
@@ -88,10 +95,15 @@ namespace dealmpm
           }
         // Already sums over the ranks.
         const std::string prefix = "fem" + std::to_string(r + 1) + "_";
+        const double      friction =
+          regions[r].contact ?
+                 Utilities::MPI::sum(regions[r].contact->friction_work(), comm) :
+                 0.;
         for (const auto &[name, value] :
              {std::pair<std::string, double>{"kinetic_energy", kinetic},
               {"strain_energy", strain},
-              {"gravitational_energy", potential}})
+              {"gravitational_energy", potential},
+              {"friction_work", friction}})
           {
             s.effect_columns.push_back(prefix + name);
             s.effect_values.push_back(value);
@@ -105,7 +117,11 @@ namespace dealmpm
   {
     double work = 0;
     for (const FemRegion<dim> &region : regions)
-      work += region.solid->external_work();
+      {
+        work += region.solid->external_work();
+        if (region.contact)
+          work += region.contact->work();
+      }
     return work;
   }
 

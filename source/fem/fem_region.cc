@@ -81,6 +81,15 @@ namespace dealmpm
       "gap) and give it their mass, momentum and force. Their spacing must "
       "not exceed the background cells' size. Needs 'MPM/Stress update = "
       "USL' and the updated Lagrangian formulation.");
+    prm.declare_entry(
+      "Contact boundaries",
+      "",
+      Patterns::Anything(),
+      "Per boundary id a Coulomb friction coefficient, e.g. '2: 0.3': "
+      "frictional contact of those faces with the MPM material through the "
+      "background grid (no interpenetration beyond a cell; normals from the "
+      "region's current surface). Needs 'MPM/Stress update = USL' and no "
+      "'frictional contact' effect.");
   }
 
   namespace
@@ -191,6 +200,15 @@ namespace dealmpm
         s.bonded_to[id] = body - 1;
         bc.bonded.insert(id);
       }
+    for (const auto &[id, mu] :
+         reader.get_id_nonnegatives("Contact boundaries"))
+      {
+        if (s.bonded_to.count(id))
+          reader.fail("Contact boundaries",
+                      "ids that are not bonded too (" + std::to_string(id) +
+                        " is)");
+        s.contact[id] = mu;
+      }
     return s;
   }
 
@@ -231,6 +249,7 @@ namespace dealmpm
     check_ids(reader, "Prescribed velocity", s.conditions.velocity, ids);
     check_ids(reader, "Traction", s.conditions.traction, ids);
     check_ids(reader, "Bonded boundaries", s.bonded_to, ids);
+    check_ids(reader, "Contact boundaries", s.contact, ids);
 
     // Every vertex inside the background grid's box (the nodes move on it).
     const BoundingBox<dim> box = grid.bounding_box;
@@ -276,6 +295,11 @@ namespace dealmpm
           std::make_unique<BondedCoupling<dim>>(solid,
                                                 s.bonded_to.begin()->second);
         region.bonded->grid_changed(grid);
+      }
+    if (!s.contact.empty())
+      {
+        region.contact = std::make_unique<RegionContact<dim>>(solid, s.contact);
+        region.contact->grid_changed(grid);
       }
     return region;
   }

@@ -290,6 +290,53 @@ namespace dealmpm
   }
 
   template <int dim>
+  std::vector<Tensor<1, dim>>
+  SolidRegion<dim>::area_normals(const std::set<types::boundary_id> &ids) const
+  {
+    LinearAlgebra::distributed::Vector<double> a(force);
+    a = 0;
+    displacement.update_ghost_values();
+    QGauss<dim - 1>                      gauss(fe.degree + 1);
+    FEFaceValues<dim>                    values(mapping,
+                             fe,
+                             gauss,
+                             update_values | update_gradients |
+                               update_normal_vectors | update_JxW_values);
+    const FEValuesExtractors::Vector     u(0);
+    std::vector<Tensor<2, dim>>          grad_u(gauss.size());
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              ids.count(cell->face(f)->boundary_id()))
+            {
+              values.reinit(cell, f);
+              values[u].get_function_gradients(displacement, grad_u);
+              cell->get_dof_indices(dofs);
+              for (unsigned int q = 0; q < gauss.size(); ++q)
+                {
+                  const Tensor<2, dim> F =
+                    unit_symmetric_tensor<dim>() + grad_u[q];
+                  const Tensor<1, dim> n_da =
+                    determinant(F) * transpose(invert(F)) *
+                    values.normal_vector(q) * values.JxW(q);
+                  for (unsigned int i = 0; i < dofs.size(); ++i)
+                    {
+                      const unsigned int c =
+                        fe.system_to_component_index(i).first;
+                      a(dofs[i]) += values.shape_value(i, q) * n_da[c];
+                    }
+                }
+            }
+    a.compress(VectorOperation::add);
+    std::vector<Tensor<1, dim>> normals(nodes.size());
+    for (unsigned int k = 0; k < nodes.size(); ++k)
+      normals[k] = node_vector(a, nodes[k]);
+    return normals;
+  }
+
+  template <int dim>
   Point<dim>
   SolidRegion<dim>::position(const Node &node) const
   {
@@ -349,6 +396,8 @@ namespace dealmpm
                 v[d] = velocity.local_element(node.dof[d]) +
                        dt * force.local_element(node.dof[d]) /
                          mass.local_element(node.dof[d]);
+              if (!velocity_correction.empty())
+                v += velocity_correction[&node - nodes.data()];
               break;
             case Kind::fixed:
               break;
@@ -383,6 +432,7 @@ namespace dealmpm
             displacement.local_element(node.dof[d]) += dt * v[d];
           }
       }
+    velocity_correction.clear();
     // The tractions' work: f_t . v over the step.
     if (!conditions.traction.empty())
       {

@@ -492,6 +492,8 @@ namespace dealmpm
         {
           if (region.bonded)
             region.bonded->read_back(s.grid, s.field_set);
+          if (region.contact)
+            region.contact->apply(s.grid, s.fields, s.mass_threshold, s.dt);
           region.solid->advance(s.time, s.dt);
         }
     }

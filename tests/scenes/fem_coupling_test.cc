@@ -269,3 +269,68 @@ TEST(FemCoupling, GravityPullsAFreeRegion)
               start.total_energy(),
               1.5 * dt / 0.05 * end.kinetic_energy);
 }
+
+// Contact: an FE bar on [0.1, 0.5] at +v0 meets an MPM bar on [0.5, 0.9]
+// at -v0 (E = 100, rho = 1: c = 10, L = 0.4). A compression wave of
+// -rho c v0 runs into both from the interface; at L / c = 0.04 both are
+// at rest and fully compressed; the contact lasts 2 L / c = 0.08, after
+// which each moves back at its velocity reversed and they stay apart.
+// The region's momentum falls linearly, m v0 (1 - t c / L). The total
+// momentum is zero to round-off throughout (the exchange is exact).
+TEST(FemCoupling, ContactBarsBounceOffEachOther)
+{
+  const std::string scene =
+    "set Dimension = 2\nset Number of FEM regions = 1\n"
+    "subsection Grid\n set Lower corner = 0, 0\n set Upper corner = 1, 0.025\n"
+    " set Cells = 40, 1\n set Boundary conditions = 2: slip, 3: slip\nend\n"
+    "subsection Material 1\n set Model = linear elastic\n set Density = 1\n"
+    " subsection linear elastic\n  set Young's modulus = 100\n"
+    "  set Poisson's ratio = 0\n end\nend\n"
+    "subsection Body 1\n set Lower corner = 0.5, 0\n"
+    " set Upper corner = 0.9, 0.025\n set Particles per cell = 2\n"
+    " set Velocity = -0.01, 0\nend\n"
+    "subsection FEM region 1\n set Lower corner = 0.1, 0\n"
+    " set Upper corner = 0.5, 0.025\n set Cells = 16, 1\n"
+    " set Initial velocity = 0.01, 0\n set Contact boundaries = 1: 0\nend\n"
+    "subsection MPM\n set Stress update = USL\nend\n"
+    "subsection Time\n set Time step method = fixed\n"
+    " set Time step = 0.001\nend\n";
+  auto                  simulation = test::make_simulation<2>(scene, 1, 1, 1);
+  const SolidRegion<2> &region     = *simulation->fem_regions()[0].solid;
+  const double          m = 0.4 * 0.025, p0 = m * v0, c = 10, L_bar = 0.4;
+  double                largest_total = 0;
+  const auto            run           = [&](const double t) {
+    while (simulation->time() < t - 1e-12)
+      {
+        simulation->advance(
+          std::min(simulation->time_step(), t - simulation->time()));
+        largest_total =
+          std::max(largest_total,
+                   std::abs(simulation->statistics().momentum[0]));
+      }
+    return region.momentum()[0];
+  };
+  run(0.02);
+  const double stress = region_stress(region, 0.35, 0.48);
+  const double p_02   = region.momentum()[0];
+  const double p_04   = run(0.04);
+  const double p_06   = run(0.06);
+  const double p_10   = run(0.1);
+  const double p_12   = run(0.12);
+  std::cout << "contact bars: region stress at t = 0.02 " << stress
+            << " (exact -0.1); region momentum / m v0 at 0.02, 0.04, 0.06, "
+               "0.1, 0.12: "
+            << p_02 / p0 << ", " << p_04 / p0 << ", " << p_06 / p0 << ", "
+            << p_10 / p0 << ", " << p_12 / p0 << "; largest total "
+            << largest_total / p0 << std::endl;
+  EXPECT_NEAR(stress, -rho * c * v0, 0.06 * rho * c * v0);
+  // m v0 (1 - t c / L): 0.5, 0, -0.5 at 0.02, 0.04, 0.06 (a tenth of m v0:
+  // contact is resolved to one cell, the cell's 0.025 / c = 0.0025 s).
+  EXPECT_NEAR(p_02, p0 * (1 - 0.02 * c / L_bar), 0.1 * p0);
+  EXPECT_NEAR(p_04, 0, 0.1 * p0);
+  EXPECT_NEAR(p_06, p0 * (1 - 0.06 * c / L_bar), 0.1 * p0);
+  // Apart after 2 L / c: reversed, and nothing exchanged after.
+  EXPECT_NEAR(p_10, -p0, 0.1 * p0);
+  EXPECT_NEAR(p_12, p_10, 0.01 * p0);
+  EXPECT_LT(largest_total, 1e-12 * p0);
+}

@@ -4,6 +4,7 @@
 
 #include <dealmpm/base/scene_reader.h>
 #include <dealmpm/fem/bonded_coupling.h>
+#include <dealmpm/fem/region_contact.h>
 #include <dealmpm/fem/solid_region.h>
 #include <dealmpm/grid/background_grid.h>
 #include <dealmpm/materials/material.h>
@@ -40,10 +41,12 @@ namespace dealmpm
     RegionBoundaryConditions<dim> conditions;
     /** Bonded boundary id -> body (0-based). */
     std::map<types::boundary_id, unsigned int> bonded_to;
+    /** Contact boundary id -> friction coefficient. */
+    std::map<types::boundary_id, double> contact;
   };
 
   /** A region of the run: its settings, the solid and, when it has
-   * bonded boundaries, their coupling. */
+   * bonded or contact boundaries, their coupling. */
   template <int dim>
   struct FemRegion
   {
@@ -51,6 +54,7 @@ namespace dealmpm
     FemRegionSettings<dim>               settings;
     std::unique_ptr<SolidRegion<dim>>    solid;
     std::unique_ptr<BondedCoupling<dim>> bonded;
+    std::unique_ptr<RegionContact<dim>>  contact;
   };
 
   /** Make region @p index (0-based) from its section: the mesh, the

@@ -160,6 +160,12 @@ namespace dealmpm
     double
     node_velocity(const Point<dim> &x, const unsigned int component) const;
 
+    /** Per owned node (by index into nodes), the outward normal times the
+     * node's share of the current area of the faces with ids @p ids
+     * (Nanson: J F^-T N dA); zero off them. Collective. */
+    std::vector<Tensor<1, dim>>
+    area_normals(const std::set<types::boundary_id> &ids) const;
+
     /** Current position of an owned node. */
     Point<dim>
     position(const Node &node) const;
@@ -196,6 +202,10 @@ namespace dealmpm
       force;
     /** The owned nodes, ordered by global dof index. */
     std::vector<Node> nodes;
+    /** Per node, a velocity change that advance() adds to free nodes
+     * after their update and then clears (contact, fem/region_contact.h);
+     * empty when unused. */
+    std::vector<Tensor<1, dim>> velocity_correction;
 
   private:
     /** f = -int grad N : P (F) with the stress advanced over dt. */

@@ -1,0 +1,78 @@
+#pragma once
+
+#include <dealmpm/fem/nodes_on_grid.h>
+#include <dealmpm/fem/solid_region.h>
+#include <dealmpm/grid/background_grid.h>
+#include <dealmpm/grid/nodal_fields.h>
+
+#include <map>
+#include <set>
+#include <vector>
+
+namespace dealmpm
+{
+  /**
+   * Frictional contact between an FEM region's surface and the MPM
+   * material, through the background grid (RESEARCH.md 1.3, CFEMP with
+   * Bardenhagen's multi-velocity-field contact): the region is a velocity
+   * field of its own. Its contact nodes give the grid their mass, their
+   * predicted momentum m (v + dt f / m) and their outward normals times
+   * area (from the current surface, not from mass gradients). At each
+   * node where both the MPM material (the core fields) and the region
+   * have mass and the MPM material approaches the surface,
+   * (v_mpm - v_fe) . n < 0, the pair's relative normal velocity is
+   * removed at their centre of mass and Coulomb friction takes up to mu
+   * times it of the slip; the MPM side's change goes to v* and its
+   * increment (so FLIP particles feel it), the region's side's,
+   * dv_fe = -m_mpm dv_mpm / m_fe, comes back to its nodes as
+   * sum_I N_I(x_i) dv_fe,I, which keeps the total momentum to round-off.
+   * Contact is resolved to one cell, as for MPM bodies.
+   */
+  template <int dim>
+  class RegionContact
+  {
+  public:
+    /** The nodes of @p region on the ids of @p friction (id -> mu). */
+    RegionContact(SolidRegion<dim>                           &region,
+                  const std::map<types::boundary_id, double> &friction);
+
+    /** After the grid changed: the search tree and the nodal vectors. */
+    void
+    grid_changed(const BackgroundGrid<dim> &grid);
+
+    /** After the grid update (v* on the core fields, with their walls)
+     * and the region's forces: correct both sides. Collective. */
+    void
+    apply(const BackgroundGrid<dim> &grid,
+          NodalFields<dim>          &core,
+          const double               mass_threshold,
+          const double               dt);
+
+    /** Work of the contact forces so far on this rank's nodes (the
+     * normal parts cancel; what is left is friction's, <= 0). */
+    double
+    work() const
+    {
+      return work_done;
+    }
+    /** Friction's part of it. */
+    double
+    friction_work() const
+    {
+      return friction_done;
+    }
+
+  private:
+    SolidRegion<dim>            &region;
+    std::set<types::boundary_id> ids;
+    /** Per local contact node (index into region.nodes): its mu. */
+    std::vector<unsigned int> local;
+    std::vector<double>       local_mu;
+    NodesOnGrid<dim>          points;
+    /** The region's field on the grid: mass, momentum, area normal,
+     * mass-weighted mu; the change of its velocity. */
+    NodalVector                  mass, mu;
+    std::array<NodalVector, dim> momentum, normal, change;
+    double                       work_done = 0, friction_done = 0;
+  };
+} // namespace dealmpm

@@ -1,0 +1,183 @@
+#include <deal.II/base/mpi.h>
+
+#include <dealmpm/fem/region_contact.h>
+
+#include <algorithm>
+
+namespace dealmpm
+{
+  template <int dim>
+  RegionContact<dim>::RegionContact(
+    SolidRegion<dim>                           &region,
+    const std::map<types::boundary_id, double> &friction)
+    : region(region)
+  {
+    for (const auto &item : friction)
+      ids.insert(item.first);
+    // A node's mu: that of the first of its faces' ids (the area normals
+    // of an id say which nodes are on its faces).
+    std::vector<double> node_mu(region.nodes.size(), -1.);
+    for (const auto &[id, coefficient] : friction)
+      {
+        const std::vector<Tensor<1, dim>> a = region.area_normals({id});
+        for (unsigned int k = 0; k < region.nodes.size(); ++k)
+          if (a[k].norm() > 0 && node_mu[k] < 0)
+            node_mu[k] = coefficient;
+      }
+    for (unsigned int k = 0; k < region.nodes.size(); ++k)
+      if (node_mu[k] >= 0 &&
+          region.nodes[k].kind != SolidRegion<dim>::Node::Kind::bonded)
+        {
+          local.push_back(k);
+          local_mu.push_back(node_mu[k]);
+        }
+  }
+
+  template <int dim>
+  void
+  RegionContact<dim>::grid_changed(const BackgroundGrid<dim> &grid)
+  {
+    points.grid_changed(grid);
+    for (NodalVector *v : {&mass, &mu})
+      v->reinit(grid.partitioner);
+    for (unsigned int d = 0; d < dim; ++d)
+      for (auto *v : {&momentum[d], &normal[d], &change[d]})
+        v->reinit(grid.partitioner);
+  }
+
+  template <int dim>
+  void
+  RegionContact<dim>::apply(const BackgroundGrid<dim> &grid,
+                            NodalFields<dim>          &core,
+                            const double               mass_threshold,
+                            const double               dt)
+  {
+    using Kind = typename SolidRegion<dim>::Node::Kind;
+    // x, m, m v_predicted, a n, mu per node.
+    constexpr unsigned int            n_values = 3 * dim + 2;
+    const std::vector<Tensor<1, dim>> area     = region.area_normals(ids);
+    std::vector<double>               mine;
+    mine.reserve(local.size() * n_values);
+    for (unsigned int j = 0; j < local.size(); ++j)
+      {
+        const auto      &node = region.nodes[local[j]];
+        const Point<dim> x    = region.position(node);
+        const double     m    = region.mass.local_element(node.dof[0]);
+        Tensor<1, dim>   v    = region.node_vector(region.velocity, node);
+        if (node.kind == Kind::free)
+          v += dt / m * region.node_vector(region.force, node);
+        for (unsigned int d = 0; d < dim; ++d)
+          mine.push_back(x[d]);
+        mine.push_back(m);
+        for (unsigned int d = 0; d < dim; ++d)
+          mine.push_back(m * v[d]);
+        for (unsigned int d = 0; d < dim; ++d)
+          mine.push_back(area[local[j]][d]);
+        mine.push_back(local_mu[j]);
+      }
+    points.gather_and_place(grid, mine, n_values);
+
+    for (NodalVector *v : {&mass, &mu})
+      {
+        *v = 0;
+        v->zero_out_ghost_values();
+      }
+    for (unsigned int d = 0; d < dim; ++d)
+      for (NodalVector *v : {&momentum[d], &normal[d], &change[d]})
+        {
+          *v = 0;
+          v->zero_out_ghost_values();
+        }
+    for (const auto &p : points.placed())
+      for (unsigned int n = 0; n < p.nodes.size(); ++n)
+        {
+          const double       w = p.weights[n];
+          const unsigned int i = p.nodes[n];
+          const double       m = points.value(p.point, dim);
+          mass.local_element(i) += w * m;
+          mu.local_element(i) += w * m * points.value(p.point, 3 * dim + 1);
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              momentum[d].local_element(i) +=
+                w * points.value(p.point, dim + 1 + d);
+              normal[d].local_element(i) +=
+                w * points.value(p.point, 2 * dim + 1 + d);
+            }
+        }
+    mass.compress(VectorOperation::add);
+    mu.compress(VectorOperation::add);
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        momentum[d].compress(VectorOperation::add);
+        normal[d].compress(VectorOperation::add);
+      }
+
+    const unsigned int n_owned = mass.locally_owned_size();
+    for (unsigned int i = 0; i < n_owned; ++i)
+      {
+        const double m_a = core.mass.local_element(i);
+        const double m_b = mass.local_element(i);
+        if (!(m_a > mass_threshold) || !(m_b > 0))
+          continue;
+        Tensor<1, dim> v_a, v_b, n;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            v_a[d] = core.velocity[d].local_element(i);
+            v_b[d] = momentum[d].local_element(i) / m_b;
+            n[d]   = normal[d].local_element(i);
+          }
+        if (!(n.norm() > 0))
+          continue;
+        n /= n.norm();
+        // n points out of the region, towards the MPM material.
+        const Tensor<1, dim> relative =
+          m_b / (m_a + m_b) * (v_a - v_b); // v_a - v_cm
+        const double approach = relative * n;
+        if (!(approach < 0))
+          continue;
+        const Tensor<1, dim> tangential    = relative - approach * n;
+        const double         slip          = tangential.norm();
+        const double         mu_i          = mu.local_element(i) / m_b;
+        Tensor<1, dim>       normal_change = -approach * n;
+        Tensor<1, dim>       friction_change;
+        if (slip > 0)
+          friction_change =
+            -std::min(1., mu_i * (-approach) / slip) * tangential;
+        const Tensor<1, dim> dv_a  = normal_change + friction_change;
+        const Tensor<1, dim> dv_b  = -m_a / m_b * dv_a;
+        const Tensor<1, dim> a_new = v_a + dv_a, b_new = v_b + dv_b;
+        work_done += m_a * (dv_a * a_new) + m_b * (dv_b * b_new);
+        friction_done +=
+          m_a * (friction_change * a_new) - m_a * (friction_change * b_new);
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            core.velocity[d].local_element(i) += dv_a[d];
+            core.velocity_increment[d].local_element(i) += dv_a[d];
+            change[d].local_element(i) = dv_b[d];
+          }
+      }
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        core.velocity[d].update_ghost_values();
+        core.velocity_increment[d].update_ghost_values();
+        change[d].update_ghost_values();
+      }
+
+    // The region's nodes take their field's change.
+    std::vector<double> dv(dim * points.n_points(), 0.);
+    for (const auto &p : points.placed())
+      for (unsigned int n = 0; n < p.nodes.size(); ++n)
+        for (unsigned int d = 0; d < dim; ++d)
+          dv[dim * p.point + d] +=
+            p.weights[n] * change[d].local_element(p.nodes[n]);
+    const std::vector<double> mine_dv =
+      points.sum_to_owners(dv, dim, grid.comm);
+    region.velocity_correction.assign(region.nodes.size(), Tensor<1, dim>());
+    for (unsigned int j = 0; j < local.size(); ++j)
+      for (unsigned int d = 0; d < dim; ++d)
+        region.velocity_correction[local[j]][d] = mine_dv[dim * j + d];
+  }
+
+  template class RegionContact<2>;
+  template class RegionContact<3>;
+} // namespace dealmpm
