@@ -31,6 +31,12 @@ namespace dealmpm
                     "saved in checkpoints yet)");
       }
     checkpoint.on_stop_signal = false;
+    for (FemRegion<dim> &region : regions)
+      region.solid->track_potential(
+        [this](const Point<dim> &x) {
+          return dealmpm::potential_energy(effects, 1., x);
+        },
+        false);
     for (const FemRegion<dim> &region : regions)
       {
         if (!region.bonded && !region.contact)
@@ -77,10 +83,7 @@ namespace dealmpm
         const double            strain  = solid.strain_energy();
         const double            potential =
           solid.potential_energy([this](const Point<dim> &x) {
-            double e = 0;
-            for (const auto &effect : effects)
-              e += effect->potential_energy(1., x);
-            return e;
+            return dealmpm::potential_energy(effects, 1., x);
           });
         s.mass += mass;
         for (unsigned int d = 0; d < dim; ++d)

@@ -114,7 +114,8 @@ namespace dealmpm
   std::vector<double>
   NodesOnGrid<dim>::sum_to_owners(std::vector<double> &per_point,
                                   const unsigned int   n_components,
-                                  const MPI_Comm       comm) const
+                                  const MPI_Comm       comm,
+                                  const bool           all_placed) const
   {
     // One more component: how many ranks placed the point.
     const unsigned int  width = n_components + 1;
@@ -126,7 +127,7 @@ namespace dealmpm
       sum[width * p.point + n_components] = 1;
     Utilities::MPI::sum(sum, comm, sum);
     for (std::size_t p = 0; p < n_global; ++p)
-      if (sum[width * p + n_components] != 1.)
+      if (all_placed && sum[width * p + n_components] != 1.)
         {
           std::ostringstream where;
           where << "a coupling node of an FEM region at (";

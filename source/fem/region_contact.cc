@@ -171,7 +171,7 @@ namespace dealmpm
           dv[dim * p.point + d] +=
             p.weights[n] * change[d].local_element(p.nodes[n]);
     const std::vector<double> mine_dv =
-      points.sum_to_owners(dv, dim, grid.comm);
+      points.sum_to_owners(dv, dim, grid.comm, false);
     region.velocity_correction.assign(region.nodes.size(), Tensor<1, dim>());
     for (unsigned int j = 0; j < local.size(); ++j)
       for (unsigned int d = 0; d < dim; ++d)

@@ -522,6 +522,20 @@ namespace dealmpm
   }
 
   template <int dim>
+  void
+  SolidRegion<dim>::track_potential(
+    const std::function<double(const Point<dim> &)> &potential,
+    const bool                                       before_step)
+  {
+    double e = 0;
+    for (const Node &node : nodes)
+      e += mass.local_element(node.dof[0]) * potential(position(node));
+    if (before_step)
+      work += e - last_potential;
+    last_potential = e;
+  }
+
+  template <int dim>
   Tensor<1, dim>
   SolidRegion<dim>::momentum() const
   {

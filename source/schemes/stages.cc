@@ -475,8 +475,13 @@ namespace dealmpm
           b += effect->body_acceleration(X, x, v, time);
         return b;
       };
+      const auto potential = [&](const Point<dim> &x) {
+        return potential_energy(s.effects, 1., x);
+      };
       for (FemRegion<dim> &region : *s.fem_regions)
         {
+          if (!s.effects.empty())
+            region.solid->track_potential(potential, true);
           region.solid->compute_forces(s.time, s.dt, body_force);
           if (region.bonded)
             region.bonded->deposit(s.grid, s.field_set);
@@ -495,6 +500,12 @@ namespace dealmpm
           if (region.contact)
             region.contact->apply(s.grid, s.fields, s.mass_threshold, s.dt);
           region.solid->advance(s.time, s.dt);
+          if (!s.effects.empty())
+            region.solid->track_potential(
+              [&](const Point<dim> &x) {
+                return potential_energy(s.effects, 1., x);
+              },
+              false);
         }
     }
 

@@ -261,15 +261,26 @@ namespace dealmpm
     }
   };
 
+  /** Potential energy of a mass @p m at @p x in the fields of all
+   * @p effects. */
   template <int dim>
   double
-  EffectContext<dim>::potential_energy(const double      m,
-                                       const Point<dim> &x) const
+  potential_energy(const std::vector<std::unique_ptr<Effect<dim>>> &effects,
+                   const double                                     m,
+                   const Point<dim>                                &x)
   {
     double sum = 0;
     for (const auto &effect : effects)
       sum += effect->potential_energy(m, x);
     return sum;
+  }
+
+  template <int dim>
+  double
+  EffectContext<dim>::potential_energy(const double      m,
+                                       const Point<dim> &x) const
+  {
+    return dealmpm::potential_energy(effects, m, x);
   }
 
   /**

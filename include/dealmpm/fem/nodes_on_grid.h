@@ -59,12 +59,14 @@ namespace dealmpm
     }
 
     /** Sum @p per_point (n_components per point, over all points) over the
-     * ranks and return this rank's own points' part. A point that no rank
-     * placed stops the run (RunError) with its position. Collective. */
+     * ranks and return this rank's own points' part. With @p all_placed, a
+     * point that no rank placed (it left the grid) stops the run
+     * (RunError) with its position; without, it gets zeros. Collective. */
     std::vector<double>
     sum_to_owners(std::vector<double> &per_point,
                   const unsigned int   n_components,
-                  const MPI_Comm       comm) const;
+                  const MPI_Comm       comm,
+                  const bool           all_placed = true) const;
 
     std::size_t
     n_points() const

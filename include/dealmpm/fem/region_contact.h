@@ -26,7 +26,8 @@ namespace dealmpm
    * increment (so FLIP particles feel it), the region's side's,
    * dv_fe = -m_mpm dv_mpm / m_fe, comes back to its nodes as
    * sum_I N_I(x_i) dv_fe,I, which keeps the total momentum to round-off.
-   * Contact is resolved to one cell, as for MPM bodies.
+   * Contact is resolved to one cell, as for MPM bodies; contact nodes
+   * outside the grid (where no MPM material can be) are left alone.
    */
   template <int dim>
   class RegionContact

@@ -147,8 +147,17 @@ namespace dealmpm
     angular_momentum() const;
     double
     total_mass() const;
-    /** Work of the tractions and prescribed motions so far (this rank's
-     * nodes), for the energy balance. */
+    /** A potential (per unit mass, the effects' fields) that changes in
+     * time at fixed positions (a gravity ramp) works on the region: call
+     * with the potential as it is after the effects' forces of a step
+     * (@p before_step true, the positions still the step's start) and
+     * after the step; the difference is counted as work. Local. */
+    void
+    track_potential(const std::function<double(const Point<dim> &)> &potential,
+                    const bool before_step);
+
+    /** Work of the tractions, prescribed motions and time-dependent
+     * potentials so far (this rank's nodes), for the energy balance. */
     double
     external_work() const
     {
@@ -223,5 +232,7 @@ namespace dealmpm
     unsigned int                         n_internal = 0;
     double last_dt = 0; ///< the step that made the current displacement
     double work    = 0;
+    /** sum_i m_i potential(x_i) of this rank after the last step. */
+    double last_potential = 0;
   };
 } // namespace dealmpm
