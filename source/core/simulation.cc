@@ -91,10 +91,6 @@ namespace dealmpm
     read_scene(reader, shape);
     scene_entry_list = scene_entries(prm);
     std::optional<CheckpointInfo> saved;
-    if (resume && shape.n_fem_regions > 0)
-      throw InputError(scene_file +
-                       ": --resume of a scene with FEM regions: their "
-                       "state is not saved in checkpoints yet");
     if (resume)
       saved = find_saved_run(
         reader, resume->empty() ? run_settings.checkpoint.directory : *resume);

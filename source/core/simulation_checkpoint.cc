@@ -25,6 +25,11 @@ namespace dealmpm
     // step), all their properties included.
     particles->handler.prepare_for_serialization();
     grid.triangulation.save(folder + "/grid");
+    save_fem_regions(folder);
+    // Every rank's accumulators (work is summed over the ranks).
+    RunState state = run_state();
+    state.effect_states_by_rank =
+      Utilities::MPI::gather(comm, state.effect_states, 0);
     std::string problem;
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       try
@@ -41,10 +46,10 @@ namespace dealmpm
           info.max_signal_rate = max_signal_rate;
           info.cfl_warned      = cfl_warned;
           info.write(folder + "/checkpoint.txt");
-          std::ostringstream state;
-          run_state().save(state);
+          std::ostringstream text;
+          state.save(text);
           OutputFile file(folder + "/run_state.txt");
-          file.write(state.str());
+          file.write(text.str());
           file.commit();
         }
       catch (const OutputError &e)
@@ -114,8 +119,32 @@ namespace dealmpm
     if (loop.effect_states.size() != effects.size() || loop.step != saved.step)
       throw InputError(file + ": does not belong to " + resumed_checkpoint +
                        "/checkpoint.txt");
+    // Each rank its own accumulators; on another number of ranks, the
+    // shared values of rank 0 and the sums of the shares on rank 0.
+    const auto        &by_rank = loop.effect_states_by_rank;
+    const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
+    if (by_rank.size() != saved.n_ranks)
+      throw InputError(file + ": does not hold every rank's state");
     for (unsigned int e = 0; e < effects.size(); ++e)
-      effects[e]->restore_state(loop.effect_states[e]);
+      {
+        if (by_rank.size() == Utilities::MPI::n_mpi_processes(comm))
+          {
+            effects[e]->restore_state(by_rank[rank][e]);
+            continue;
+          }
+        std::vector<double>     state  = by_rank[0][e];
+        const std::vector<bool> shared = effects[e]->state_shared_by_ranks();
+        for (unsigned int k = 0; k < state.size(); ++k)
+          if (k >= shared.size() || !shared[k])
+            {
+              state[k] = 0;
+              if (rank == 0)
+                for (const auto &of_rank : by_rank)
+                  state[k] += of_rank[e][k];
+            }
+        effects[e]->restore_state(state);
+      }
+    restore_fem_regions(saved);
     mass_threshold       = saved.mass_threshold;
     max_signal_rate      = saved.max_signal_rate;
     cfl_warned           = saved.cfl_warned;

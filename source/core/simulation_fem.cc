@@ -3,8 +3,12 @@
 #include <deal.II/base/mpi.h>
 
 #include <dealmpm/core/simulation.h>
+#include <dealmpm/io/output_file.h>
 
 #include <algorithm>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <utility>
 
@@ -20,17 +24,6 @@ namespace dealmpm
         reader, r, materials, static_cast<unsigned int>(bodies.size()), grid));
     if (regions.empty())
       return;
-    CheckpointSettings &checkpoint = run_settings.checkpoint;
-    if (checkpoint.step_interval > 0 || checkpoint.wall_interval > 0)
-      {
-        SectionScope section(reader, "Checkpoint");
-        reader.fail(checkpoint.step_interval > 0 ?
-                      "Steps between checkpoints" :
-                      "Seconds between checkpoints",
-                    "0 in a scene with FEM regions (their state is not "
-                    "saved in checkpoints yet)");
-      }
-    checkpoint.on_stop_signal = false;
     for (FemRegion<dim> &region : regions)
       region.solid->track_potential(
         [this](const Point<dim> &x) {
@@ -57,6 +50,90 @@ namespace dealmpm
                       "updated Lagrangian formulation and the explicit "
                       "particle update (the bonded nodes take one grid "
                       "velocity per step)");
+      }
+  }
+
+  namespace
+  {
+    std::string
+    region_file(const std::string &folder,
+                const unsigned int region,
+                const unsigned int rank)
+    {
+      return folder + "/fem_region_" + std::to_string(region + 1) + "." +
+             std::to_string(rank) + ".txt";
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  Simulation<dim>::save_fem_regions(const std::string &folder) const
+  {
+    const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
+    std::string        problem;
+    for (unsigned int r = 0; r < regions.size(); ++r)
+      {
+        std::ostringstream text;
+        text << regions[r].solid->save_state();
+        if (regions[r].contact)
+          text << "contact " << std::hexfloat << regions[r].contact->work()
+               << ' ' << regions[r].contact->friction_work() << '\n';
+        try
+          {
+            OutputFile file(region_file(folder, r, rank));
+            file.write(text.str());
+            file.commit();
+          }
+        catch (const OutputError &e)
+          {
+            problem = e.what();
+          }
+      }
+    agree_on_output_error(problem, "", comm);
+  }
+
+  template <int dim>
+  void
+  Simulation<dim>::restore_fem_regions(const CheckpointInfo &saved)
+  {
+    const bool root = Utilities::MPI::this_mpi_process(comm) == 0;
+    for (unsigned int r = 0; r < regions.size(); ++r)
+      {
+        std::vector<std::string> parts;
+        double                   work = 0, friction = 0;
+        for (unsigned int rank = 0; rank < saved.n_ranks; ++rank)
+          {
+            const std::string file = region_file(resumed_checkpoint, r, rank);
+            std::ifstream     in(file);
+            if (!in)
+              throw InputError(file +
+                               ": cannot be read (the checkpoint "
+                               "has no state of " +
+                               regions[r].name + ")");
+            std::ostringstream text;
+            text << in.rdbuf();
+            parts.push_back(text.str());
+            std::istringstream lines(parts.back());
+            std::string        line;
+            while (std::getline(lines, line))
+              if (line.rfind("contact ", 0) == 0)
+                {
+                  std::istringstream values(line.substr(8));
+                  std::string        a, b;
+                  values >> a >> b;
+                  work += std::strtod(a.c_str(), nullptr);
+                  friction += std::strtod(b.c_str(), nullptr);
+                }
+          }
+        regions[r].solid->load_state(parts);
+        if (regions[r].contact)
+          regions[r].contact->restore_work(root ? work : 0.,
+                                           root ? friction : 0.);
+        regions[r].solid->track_potential(
+          [this](const Point<dim> &x) {
+            return dealmpm::potential_energy(effects, 1., x);
+          },
+          false);
       }
   }
 
@@ -128,12 +205,14 @@ namespace dealmpm
     return work;
   }
 
-#define DEALMPM_INSTANTIATE(dim)                                           \
-  template void   Simulation<dim>::create_fem_regions(SceneReader &,       \
-                                                    const SceneShape &); \
-  template double Simulation<dim>::fem_signal_rate() const;                \
-  template void   Simulation<dim>::add_fem_statistics(Statistics &) const; \
-  template double Simulation<dim>::fem_external_work() const;
+#define DEALMPM_INSTANTIATE(dim)                                                \
+  template void   Simulation<dim>::create_fem_regions(SceneReader &,            \
+                                                    const SceneShape &);      \
+  template double Simulation<dim>::fem_signal_rate() const;                     \
+  template void   Simulation<dim>::add_fem_statistics(Statistics &) const;      \
+  template double Simulation<dim>::fem_external_work() const;                   \
+  template void   Simulation<dim>::save_fem_regions(const std::string &) const; \
+  template void   Simulation<dim>::restore_fem_regions(const CheckpointInfo &);
   DEALMPM_INSTANTIATE(2)
   DEALMPM_INSTANTIATE(3)
 #undef DEALMPM_INSTANTIATE

@@ -95,6 +95,12 @@ namespace dealmpm
         return {factor_now, work};
       }
 
+      std::vector<bool>
+      state_shared_by_ranks() const override
+      {
+        return {true, false};
+      }
+
       void
       restore_state(const std::vector<double> &state) override
       {

@@ -11,7 +11,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
+#include <map>
 #include <sstream>
 
 namespace dealmpm
@@ -334,6 +336,177 @@ namespace dealmpm
     for (unsigned int k = 0; k < nodes.size(); ++k)
       normals[k] = node_vector(a, nodes[k]);
     return normals;
+  }
+
+  namespace
+  {
+    /** Per dof of the locally owned cells: the sorted global indices of
+     * the vertices of the mesh object (vertex, line, face, cell) its
+     * support point sits on, and its component; the same on any
+     * partition (k <= 2: one support point per object). */
+    template <int dim>
+    std::map<types::global_dof_index, std::string>
+    dof_keys(const DoFHandler<dim> &dof_handler)
+    {
+      const FiniteElement<dim>            &fe   = dof_handler.get_fe();
+      const std::vector<Point<dim>>       &unit = fe.get_unit_support_points();
+      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+      std::map<types::global_dof_index, std::string> keys;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            cell->get_dof_indices(dofs);
+            for (unsigned int i = 0; i < dofs.size(); ++i)
+              {
+                std::vector<unsigned int> vertices;
+                for (const unsigned int v : cell->vertex_indices())
+                  {
+                    bool on = true;
+                    for (unsigned int d = 0; d < dim; ++d)
+                      {
+                        const double x     = unit[i][d];
+                        const bool   upper = (v >> d) & 1u;
+                        if ((x < 1e-12 && upper) || (x > 1 - 1e-12 && !upper))
+                          on = false;
+                      }
+                    if (on)
+                      vertices.push_back(cell->vertex_index(v));
+                  }
+                std::sort(vertices.begin(), vertices.end());
+                std::string key =
+                  std::to_string(fe.system_to_component_index(i).first);
+                for (const unsigned int v : vertices)
+                  key += "," + std::to_string(v);
+                keys[dofs[i]] = key;
+              }
+          }
+      return keys;
+    }
+
+    void
+    write_hex(std::ostream &out, const double x)
+    {
+      out << ' ' << std::hexfloat << x << std::defaultfloat;
+    }
+
+    double
+    read_hex(std::istream &in)
+    {
+      std::string word;
+      in >> word;
+      return std::strtod(word.c_str(), nullptr);
+    }
+  } // namespace
+
+  template <int dim>
+  std::string
+  SolidRegion<dim>::save_state() const
+  {
+    std::ostringstream out;
+    out << "step";
+    write_hex(out, last_dt);
+    write_hex(out, work);
+    out << '\n';
+    const IndexSet &owned = dof_handler.locally_owned_dofs();
+    for (const auto &[dof, key] : dof_keys(dof_handler))
+      if (owned.is_element(dof))
+        {
+          out << "dof " << key;
+          write_hex(out, displacement(dof));
+          write_hex(out, velocity(dof));
+          out << '\n';
+        }
+    const unsigned int n_q = QGauss<dim>(fe.degree + 1).size();
+    std::size_t        k   = 0;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          out << "cell " << cell->id().to_string();
+          for (unsigned int q = 0; q < n_q; ++q, ++k)
+            {
+              for (unsigned int c = 0; c < stress[k].n_independent_components;
+                   ++c)
+                write_hex(out, stress[k].access_raw_entry(c));
+              for (unsigned int i = 0; i < dim; ++i)
+                for (unsigned int j = 0; j < dim; ++j)
+                  write_hex(out, deformation[k][i][j]);
+              for (unsigned int j = 0; j < n_internal; ++j)
+                write_hex(out, internal[k * n_internal + j]);
+            }
+          out << '\n';
+        }
+    return out.str();
+  }
+
+  template <int dim>
+  void
+  SolidRegion<dim>::load_state(const std::vector<std::string> &parts)
+  {
+    std::map<std::string, std::pair<double, double>> dofs;
+    std::map<std::string, std::string>               cells;
+    double                                           total_work = 0;
+    for (const std::string &part : parts)
+      {
+        std::istringstream lines(part);
+        std::string        line;
+        while (std::getline(lines, line))
+          {
+            std::istringstream in(line);
+            std::string        kind, key;
+            in >> kind;
+            if (kind == "step")
+              {
+                last_dt = read_hex(in);
+                total_work += read_hex(in);
+              }
+            else if (kind == "dof")
+              {
+                in >> key;
+                const double u = read_hex(in);
+                dofs[key]      = {u, read_hex(in)};
+              }
+            else if (kind == "cell")
+              {
+                in >> key;
+                std::getline(in, cells[key]);
+              }
+          }
+      }
+    work = Utilities::MPI::this_mpi_process(comm) == 0 ? total_work : 0.;
+    const IndexSet &owned = dof_handler.locally_owned_dofs();
+    for (const auto &[dof, key] : dof_keys(dof_handler))
+      if (owned.is_element(dof))
+        {
+          const auto found = dofs.find(key);
+          AssertThrow(found != dofs.end(),
+                      ExcMessage("the saved FEM region has no node " + key));
+          displacement(dof) = found->second.first;
+          velocity(dof)     = found->second.second;
+        }
+    displacement.update_ghost_values();
+    velocity.update_ghost_values();
+    const unsigned int n_q = QGauss<dim>(fe.degree + 1).size();
+    std::size_t        k   = 0;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const auto found = cells.find(cell->id().to_string());
+          AssertThrow(found != cells.end(),
+                      ExcMessage("the saved FEM region has no cell " +
+                                 cell->id().to_string()));
+          std::istringstream in(found->second);
+          for (unsigned int q = 0; q < n_q; ++q, ++k)
+            {
+              for (unsigned int c = 0; c < stress[k].n_independent_components;
+                   ++c)
+                stress[k].access_raw_entry(c) = read_hex(in);
+              for (unsigned int i = 0; i < dim; ++i)
+                for (unsigned int j = 0; j < dim; ++j)
+                  deformation[k][i][j] = read_hex(in);
+              for (unsigned int j = 0; j < n_internal; ++j)
+                internal[k * n_internal + j] = read_hex(in);
+            }
+        }
   }
 
   template <int dim>

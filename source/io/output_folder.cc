@@ -49,9 +49,10 @@ namespace dealmpm
                       const unsigned int first_counter)
   {
     namespace fs = std::filesystem;
-    static const std::regex numbered("(particles|grid)_([0-9]+)\\..*");
-    std::vector<fs::path>   later;
-    std::error_code         error;
+    static const std::regex numbered(
+      "(particles|grid|fem_region_[0-9]+)_([0-9]+)\\..*");
+    std::vector<fs::path> later;
+    std::error_code       error;
     for (const fs::directory_entry &entry :
          fs::directory_iterator(directory, error))
       {

@@ -59,6 +59,11 @@ namespace dealmpm
                     resumed->particle_series.write(dir + "/particles.pvd");
                   if (!resumed->grid_series.empty())
                     resumed->grid_series.write(dir + "/grid.pvd");
+                  for (unsigned int r = 0; r < resumed->region_series.size();
+                       ++r)
+                    if (!resumed->region_series[r].empty())
+                      resumed->region_series[r].write(
+                        dir + "/fem_region_" + std::to_string(r + 1) + ".pvd");
                   n_removed       = remove_later_output(dir, resumed->counter);
                   statistics_file = std::make_unique<StatisticsFile>(
                     dir + "/statistics.csv", dim, first, step);

@@ -202,8 +202,6 @@ expect 2 "FEM region 1/Material.*'Material N' section, 1 to 1" "$fem" "${s[@]}" 
 expect 2 "FEM region 1/Traction.*items 'id: v, v' separated by ';'" "$fem" "${s[@]}" -s "FEM region 1/Traction=1: 0"
 expect 2 "FEM region 1/Fixed boundaries.*not 9" "$fem" "${s[@]}" -s "FEM region 1/Fixed boundaries=9"
 expect 2 "section 'FEM region 1' but 'Number of FEM regions' = 0" "$fem" "${s[@]}" -s "Number of FEM regions=0"
-expect 2 "Checkpoint/Steps between checkpoints.*FEM regions" "$fem" "${s[@]}" -s "Checkpoint/Steps between checkpoints=10"
-expect 2 "resume of a scene with FEM regions" "$fem" "${s[@]}" --resume
 # Resuming where no run saved itself.
 expect 2 "checkpoints: no such folder of checkpoints" "$scene" "${s[@]}" --resume
 touch afile

@@ -7,7 +7,8 @@
 # frictional contact's and boundary friction's work, the rigid body's
 # motion, damage and plastic internal variables, the exact solution's
 # error, the rotating frame's, local damping's, cpGIMP and CPDI domains, the
-# B-spline's grid, 3D; an adaptive grid with split particles to
+# B-spline's grid, 3D, FEM regions bonded and in contact; an adaptive grid
+# with split particles to
 # round-off, 1e-12). Total Lagrangian takes its reference positions
 # X = x - u again and agrees to round-off (1e-12).
 # Arguments: dealmpm, the prm folder, compare_statistics.
@@ -59,6 +60,10 @@ resumes_exactly cube 0 "$prm/cube_drop_3d.prm"
 # the last bit (4e-16 seen).
 resumes_exactly adaptive 1e-12 "$prm/colliding_disks.prm" -s "Adaptivity/Criteria=particles, velocity jump" \
   -s "Adaptivity/Steps between adaptations=7" -s "Body 1/Velocity=0.5, 0.5" -s "Body 2/Velocity=-0.3, -0.4"
+# FEM regions: their displacement, velocity and quadrature-point state,
+# bonded to a body and in frictional contact with one.
+resumes_exactly bonded 0 "$prm/bonded_bar.prm"
+resumes_exactly fem_incline 0 "$prm/fem_incline.prm"
 resumes_exactly total_lagrangian 1e-12 "$prm/elastic_column_2d.prm" \
   -s "MPM/Formulation=total Lagrangian" -s "Effects=gravity"
 

@@ -33,7 +33,12 @@ namespace dealmpm
     double          merged_particles = 0; ///< removed by merging
     OutputRecord    output;
     AccuracyMonitor accuracy;
+    /** Each effect's saved_state() (of this rank). */
     std::vector<std::vector<double>> effect_states;
+    /** In a checkpoint: every rank's effect_states, by rank (a resumed
+     * run gives each rank its own, or on another number of ranks the
+     * shares of sums to one rank, Effect::state_shared_by_ranks()). */
+    std::vector<std::vector<std::vector<double>>> effect_states_by_rank;
 
     template <class Archive>
     void
@@ -44,6 +49,7 @@ namespace dealmpm
       archive &adaptations &split_particles &merged_particles;
       archive                               &accuracy;
       archive                               &effect_states;
+      archive                               &effect_states_by_rank;
     }
 
     /** As text with every double to the last bit. */

@@ -288,6 +288,14 @@ namespace dealmpm
      * rank's nodes). */
     double
     fem_external_work() const;
+    /** Each rank's part of each region's state into the checkpoint
+     * @p folder (fem_region_N.<rank>.txt). Collective. */
+    void
+    save_fem_regions(const std::string &folder) const;
+    /** The regions' state from the checkpoint resumed from, written on
+     * @p saved's number of ranks. */
+    void
+    restore_fem_regions(const CheckpointInfo &saved);
     /** Refuse what total Lagrangian cannot do (fluids, bodies that start
      * apart) and make its reference stencil. */
     void

@@ -221,6 +221,17 @@ namespace dealmpm
       return {};
     }
 
+    /** Which entries of saved_state() are the same on every rank (a
+     * ramp's factor, a rigid body's travel): true; the others are this
+     * rank's share of a sum over the ranks (work, eroded mass), which a
+     * run resumed on another number of ranks gives, summed, to one rank.
+     * Empty: all are shares. */
+    virtual std::vector<bool>
+    state_shared_by_ranks() const
+    {
+      return {};
+    }
+
     /** Take back what saved_state() gave. */
     virtual void
     restore_state(const std::vector<double> & /*state*/)

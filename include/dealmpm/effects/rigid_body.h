@@ -116,6 +116,14 @@ namespace dealmpm
 
     std::vector<double>
     saved_state() const override;
+    /** The travel is the same on every rank, the work a share. */
+    std::vector<bool>
+    state_shared_by_ranks() const override
+    {
+      std::vector<bool> shared(dim, true);
+      shared.push_back(false);
+      return shared;
+    }
 
     void
     restore_state(const std::vector<double> &state) override;

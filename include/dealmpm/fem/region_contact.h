@@ -62,6 +62,14 @@ namespace dealmpm
     {
       return friction_done;
     }
+    /** For a saved run: this rank's work and friction work, which
+     * restore_work() sets (on one rank, the sums). */
+    void
+    restore_work(const double work, const double friction)
+    {
+      work_done     = work;
+      friction_done = friction;
+    }
 
   private:
     SolidRegion<dim>            &region;

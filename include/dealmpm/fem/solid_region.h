@@ -14,6 +14,7 @@
 #include <functional>
 #include <map>
 #include <set>
+#include <string>
 #include <vector>
 
 namespace dealmpm
@@ -174,6 +175,16 @@ namespace dealmpm
      * (Nanson: J F^-T N dA); zero off them. Collective. */
     std::vector<Tensor<1, dim>>
     area_normals(const std::set<types::boundary_id> &ids) const;
+
+    /** This rank's part of the region's state (its dofs' u and v by the
+     * mesh object they sit on, its cells' quadrature-point state by cell
+     * id, the step size and the work), as text; load_state() of the
+     * parts of all ranks restores it on any number of ranks, after
+     * setup(). */
+    std::string
+    save_state() const;
+    void
+    load_state(const std::vector<std::string> &parts);
 
     /** Current position of an owned node. */
     Point<dim>
