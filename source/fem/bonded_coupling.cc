@@ -40,13 +40,10 @@ namespace dealmpm
         const double         m    = region.mass.local_element(node.dof[0]);
         const Tensor<1, dim> v    = region.node_vector(region.velocity, node);
         const Tensor<1, dim> f    = region.node_vector(region.force, node);
-        for (unsigned int d = 0; d < dim; ++d)
-          mine.push_back(x[d]);
+        append_components<dim>(mine, x);
         mine.push_back(m);
-        for (unsigned int d = 0; d < dim; ++d)
-          mine.push_back(m * v[d]);
-        for (unsigned int d = 0; d < dim; ++d)
-          mine.push_back(f[d]);
+        append_components<dim>(mine, m * v);
+        append_components<dim>(mine, f);
       }
     points.gather_and_place(grid, mine, n_values);
 

@@ -4,6 +4,7 @@
 
 #include <dealmpm/base/errors.h>
 #include <dealmpm/fem/fem_region.h>
+#include <dealmpm/grid/boundary_conditions.h>
 
 #include <algorithm>
 #include <sstream>
@@ -140,17 +141,11 @@ namespace dealmpm
               const Map                             &ids,
               const std::vector<types::boundary_id> &mesh_ids)
     {
+      std::map<unsigned int, std::string> named;
       for (const auto &item : ids)
-        if (std::find(mesh_ids.begin(), mesh_ids.end(), item.first) ==
-            mesh_ids.end())
-          {
-            std::string known;
-            for (const auto id : mesh_ids)
-              known += (known.empty() ? "" : ", ") + std::to_string(id);
-            reader.fail(entry,
-                        "boundary ids of the region's mesh (" + known +
-                          "), not " + std::to_string(item.first));
-          }
+        named[item.first] = "";
+      check_grid_has_ids(
+        reader, entry, named, mesh_ids, "of the region's mesh");
     }
   } // namespace
 

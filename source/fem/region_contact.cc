@@ -66,13 +66,10 @@ namespace dealmpm
         Tensor<1, dim>   v    = region.node_vector(region.velocity, node);
         if (node.kind == Kind::free)
           v += dt / m * region.node_vector(region.force, node);
-        for (unsigned int d = 0; d < dim; ++d)
-          mine.push_back(x[d]);
+        append_components<dim>(mine, x);
         mine.push_back(m);
-        for (unsigned int d = 0; d < dim; ++d)
-          mine.push_back(m * v[d]);
-        for (unsigned int d = 0; d < dim; ++d)
-          mine.push_back(area[local[j]][d]);
+        append_components<dim>(mine, m * v);
+        append_components<dim>(mine, area[local[j]]);
         mine.push_back(local_mu[j]);
       }
     points.gather_and_place(grid, mine, n_values);

@@ -638,8 +638,9 @@ namespace dealmpm
   }
 
   template <int dim>
+  template <typename Density>
   double
-  SolidRegion<dim>::strain_energy() const
+  SolidRegion<dim>::integral(const Density &density) const
   {
     QGauss<dim>   gauss(fe.degree + 1);
     FEValues<dim> values(mapping, fe, gauss, update_JxW_values);
@@ -650,14 +651,23 @@ namespace dealmpm
         {
           values.reinit(cell);
           for (unsigned int q = 0; q < gauss.size(); ++q, ++k)
-            e += material.strain_energy_density(
-                   deformation[k],
-                   stress[k],
-                   ArrayView<const double>(internal.data() + k * n_internal,
-                                           n_internal)) *
-                 values.JxW(q);
+            e +=
+              density(k,
+                      ArrayView<const double>(internal.data() + k * n_internal,
+                                              n_internal)) *
+              values.JxW(q);
         }
     return Utilities::MPI::sum(e, comm);
+  }
+
+  template <int dim>
+  double
+  SolidRegion<dim>::strain_energy() const
+  {
+    return integral(
+      [this](const std::size_t k, const ArrayView<const double> state) {
+        return material.strain_energy_density(deformation[k], stress[k], state);
+      });
   }
 
   template <int dim>
@@ -666,21 +676,10 @@ namespace dealmpm
   {
     if (!material.dissipates())
       return 0;
-    QGauss<dim>   gauss(fe.degree + 1);
-    FEValues<dim> values(mapping, fe, gauss, update_JxW_values);
-    double        e = 0;
-    std::size_t   k = 0;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          values.reinit(cell);
-          for (unsigned int q = 0; q < gauss.size(); ++q, ++k)
-            e += material.dissipated_energy_density(
-                   ArrayView<const double>(internal.data() + k * n_internal,
-                                           n_internal)) *
-                 values.JxW(q);
-        }
-    return Utilities::MPI::sum(e, comm);
+    return integral(
+      [this](const std::size_t, const ArrayView<const double> state) {
+        return material.dissipated_energy_density(state);
+      });
   }
 
   template <int dim>

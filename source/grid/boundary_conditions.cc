@@ -92,7 +92,8 @@ namespace dealmpm
   check_grid_has_ids(const SceneReader                         &reader,
                      const std::string                         &entry,
                      const std::map<unsigned int, std::string> &ids,
-                     const std::vector<types::boundary_id>     &grid_ids)
+                     const std::vector<types::boundary_id>     &grid_ids,
+                     const std::string                         &whose)
   {
     for (const auto &item : ids)
       if (std::find(grid_ids.begin(), grid_ids.end(), item.first) ==
@@ -102,7 +103,7 @@ namespace dealmpm
           for (const auto g : grid_ids)
             known += (known.empty() ? "" : ", ") + std::to_string(g);
           reader.fail(entry,
-                      "boundary ids the grid has (" + known + "), not " +
+                      "boundary ids " + whose + " (" + known + "), not " +
                         std::to_string(item.first));
         }
   }

@@ -10,6 +10,16 @@
 
 namespace dealmpm
 {
+  /** Append the components of @p v to @p values (a point's values for
+   * NodesOnGrid). */
+  template <int dim>
+  void
+  append_components(std::vector<double> &values, const Tensor<1, dim> &v)
+  {
+    for (unsigned int d = 0; d < dim; ++d)
+      values.push_back(v[d]);
+  }
+
   /**
    * A set of moving points (an FEM region's coupling nodes) on the
    * background grid, whatever the two partitions: each rank gives its own

@@ -228,6 +228,12 @@ namespace dealmpm
     std::vector<Tensor<1, dim>> velocity_correction;
 
   private:
+    /** The integral over the region (reference volume, all ranks) of
+     * density(k, internal variables) at quadrature point k. */
+    template <typename Density>
+    double
+    integral(const Density &density) const;
+
     /** f = -int grad N : P (F) with the stress advanced over dt. */
     void
     internal_force(const double dt);

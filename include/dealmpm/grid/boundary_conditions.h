@@ -48,12 +48,14 @@ namespace dealmpm
   BoundaryConditionRegistry<dim> &
   boundary_condition_registry();
 
-  /** Fail on @p entry unless every id of @p ids is one of @p grid_ids. */
+  /** Fail on @p entry unless every id of @p ids is one of @p grid_ids
+   * (the message names them as the ids @p whose). */
   void
   check_grid_has_ids(const SceneReader                         &reader,
                      const std::string                         &entry,
                      const std::map<unsigned int, std::string> &ids,
-                     const std::vector<types::boundary_id>     &grid_ids);
+                     const std::vector<types::boundary_id>     &grid_ids,
+                     const std::string &whose = "the grid has");
 
   /**
    * Velocity conditions on grid nodes by boundary id, applied to the nodal
