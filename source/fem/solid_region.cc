@@ -687,10 +687,18 @@ namespace dealmpm
   SolidRegion<dim>::potential_energy(
     const std::function<double(const Point<dim> &)> &potential) const
   {
+    return Utilities::MPI::sum(local_potential_energy(potential), comm);
+  }
+
+  template <int dim>
+  double
+  SolidRegion<dim>::local_potential_energy(
+    const std::function<double(const Point<dim> &)> &potential) const
+  {
     double e = 0;
     for (const Node &node : nodes)
       e += mass.local_element(node.dof[0]) * potential(position(node));
-    return Utilities::MPI::sum(e, comm);
+    return e;
   }
 
   template <int dim>
@@ -699,9 +707,7 @@ namespace dealmpm
     const std::function<double(const Point<dim> &)> &potential,
     const bool                                       before_step)
   {
-    double e = 0;
-    for (const Node &node : nodes)
-      e += mass.local_element(node.dof[0]) * potential(position(node));
+    const double e = local_potential_energy(potential);
     if (before_step)
       work += e - last_potential;
     last_potential = e;

@@ -7,6 +7,7 @@
 #include <dealmpm/transfer/reference_stencil.h>
 
 #include <algorithm>
+#include <functional>
 #include <type_traits>
 
 namespace dealmpm
@@ -461,6 +462,16 @@ namespace dealmpm
         });
     }
 
+    /** The effects' potential per unit mass, for the regions' nodes. */
+    template <int dim>
+    std::function<double(const Point<dim> &)>
+    fem_potential(const StepState<dim> &s)
+    {
+      return [&s](const Point<dim> &x) {
+        return potential_energy(s.effects, 1., x);
+      };
+    }
+
     template <int dim>
     void
     fem_forces(StepState<dim> &s, const std::string &timer_section)
@@ -475,13 +486,10 @@ namespace dealmpm
           b += effect->body_acceleration(X, x, v, time);
         return b;
       };
-      const auto potential = [&](const Point<dim> &x) {
-        return potential_energy(s.effects, 1., x);
-      };
       for (FemRegion<dim> &region : *s.fem_regions)
         {
           if (!s.effects.empty())
-            region.solid->track_potential(potential, true);
+            region.solid->track_potential(fem_potential(s), true);
           region.solid->compute_forces(s.time, s.dt, body_force);
           if (region.bonded)
             region.bonded->deposit(s.grid, s.field_set);
@@ -501,11 +509,7 @@ namespace dealmpm
             region.contact->apply(s.grid, s.fields, s.mass_threshold, s.dt);
           region.solid->advance(s.time, s.dt);
           if (!s.effects.empty())
-            region.solid->track_potential(
-              [&](const Point<dim> &x) {
-                return potential_energy(s.effects, 1., x);
-              },
-              false);
+            region.solid->track_potential(fem_potential(s), false);
         }
     }
 

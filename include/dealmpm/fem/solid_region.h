@@ -234,6 +234,11 @@ namespace dealmpm
     double
     integral(const Density &density) const;
 
+    /** potential_energy() of this rank's nodes. */
+    double
+    local_potential_energy(
+      const std::function<double(const Point<dim> &)> &potential) const;
+
     /** f = -int grad N : P (F) with the stress advanced over dt. */
     void
     internal_force(const double dt);
