@@ -30,6 +30,9 @@ namespace dealmpm
           return dealmpm::potential_energy(effects, 1., x);
         },
         false);
+    for (FemRegion<dim> &region : regions)
+      if (region.bonded && run_settings.method.apic)
+        region.bonded->use_affine();
     for (const FemRegion<dim> &region : regions)
       {
         if (!region.bonded && !region.contact)
@@ -187,6 +190,16 @@ namespace dealmpm
           {
             s.effect_columns.push_back(prefix + name);
             s.effect_values.push_back(value);
+          }
+        if (solid.has_supports())
+          {
+            const Tensor<1, dim> R = solid.support_force();
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                s.effect_columns.push_back(prefix + "support_force_" +
+                                           std::string(1, "xyz"[d]));
+                s.effect_values.push_back(R[d]);
+              }
           }
       }
   }

@@ -1,4 +1,5 @@
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/symmetric_tensor.h>
 
 #include <dealmpm/base/errors.h>
 #include <dealmpm/fem/bonded_coupling.h>
@@ -19,6 +20,35 @@ namespace dealmpm
 
   template <int dim>
   void
+  BondedCoupling<dim>::use_affine()
+  {
+    affine = true;
+    region.affine.resize(dim, region.velocity);
+    for (auto &column : region.affine)
+      column = 0;
+  }
+
+  namespace
+  {
+    /** C = B D^+ with D's pseudo-inverse: a node on a grid line has no
+     * spread across it (the grid cannot hold an affine part there). */
+    template <int dim>
+    Tensor<2, dim>
+    affine_matrix(const Tensor<2, dim> &B, const SymmetricTensor<2, dim> &D)
+    {
+      Tensor<2, dim> D_plus;
+      const double   scale = trace(D);
+      if (!(scale > 0))
+        return D_plus;
+      for (const auto &[lambda, e] : eigenvectors(D))
+        if (lambda > 1e-12 * scale)
+          D_plus += outer_product(e, e) / lambda;
+      return B * D_plus;
+    }
+  } // namespace
+
+  template <int dim>
+  void
   BondedCoupling<dim>::grid_changed(const BackgroundGrid<dim> &grid)
   {
     points.grid_changed(grid);
@@ -29,9 +59,9 @@ namespace dealmpm
   BondedCoupling<dim>::deposit(const BackgroundGrid<dim> &grid,
                                NodalFieldSet<dim>        &set)
   {
-    // x, m, m v, f per node.
-    constexpr unsigned int n_values = 3 * dim + 1;
-    std::vector<double>    mine;
+    // x, m, m v, f (and B) per node.
+    const unsigned int  n_values = 3 * dim + 1 + (affine ? dim * dim : 0);
+    std::vector<double> mine;
     mine.reserve(local.size() * n_values);
     for (const unsigned int k : local)
       {
@@ -44,6 +74,10 @@ namespace dealmpm
         mine.push_back(m);
         append_components<dim>(mine, m * v);
         append_components<dim>(mine, f);
+        if (affine)
+          for (unsigned int j = 0; j < dim; ++j)
+            append_components<dim>(mine,
+                                   region.node_vector(region.affine[j], node));
       }
     points.gather_and_place(grid, mine, n_values);
 
@@ -59,19 +93,45 @@ namespace dealmpm
             fields->force[d].zero_out_ghost_values();
           }
         for (const auto &p : points.placed())
-          for (unsigned int n = 0; n < p.nodes.size(); ++n)
-            {
-              const double w = p.weights[n];
-              fields->mass.local_element(p.nodes[n]) +=
-                w * points.value(p.point, dim);
-              for (unsigned int d = 0; d < dim; ++d)
-                {
-                  fields->momentum[d].local_element(p.nodes[n]) +=
-                    w * points.value(p.point, dim + 1 + d);
-                  fields->force[d].local_element(p.nodes[n]) +=
-                    w * points.value(p.point, 2 * dim + 1 + d);
-                }
-            }
+          {
+            Point<dim>     x;
+            Tensor<1, dim> mv;
+            Tensor<2, dim> mC; // the affine part times m
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                x[d]  = points.value(p.point, d);
+                mv[d] = points.value(p.point, dim + 1 + d);
+              }
+            if (affine)
+              {
+                Tensor<2, dim>          B;
+                SymmetricTensor<2, dim> D;
+                for (unsigned int c = 0; c < dim; ++c)
+                  for (unsigned int j = 0; j < dim; ++j)
+                    B[c][j] = points.value(p.point, 3 * dim + 1 + j * dim + c);
+                for (unsigned int n = 0; n < p.nodes.size(); ++n)
+                  {
+                    const Tensor<1, dim> r =
+                      grid.node_positions[p.nodes[n]] - x;
+                    D += p.weights[n] * symmetrize(outer_product(r, r));
+                  }
+                mC = points.value(p.point, dim) * affine_matrix(B, D);
+              }
+            for (unsigned int n = 0; n < p.nodes.size(); ++n)
+              {
+                const double         w = p.weights[n];
+                const Tensor<1, dim> p_n =
+                  affine ? mv + mC * (grid.node_positions[p.nodes[n]] - x) : mv;
+                fields->mass.local_element(p.nodes[n]) +=
+                  w * points.value(p.point, dim);
+                for (unsigned int d = 0; d < dim; ++d)
+                  {
+                    fields->momentum[d].local_element(p.nodes[n]) += w * p_n[d];
+                    fields->force[d].local_element(p.nodes[n]) +=
+                      w * points.value(p.point, 2 * dim + 1 + d);
+                  }
+              }
+          }
         fields->mass.compress(VectorOperation::add);
         for (unsigned int d = 0; d < dim; ++d)
           {
@@ -88,18 +148,43 @@ namespace dealmpm
   {
     const NodalFields<dim> &fields =
       set.has_body_fields() ? set.body[body] : set.core;
-    std::vector<double> v(dim * points.n_points(), 0.);
+    // v (and B, column by column) per node.
+    const unsigned int  width = dim + (affine ? dim * dim : 0);
+    std::vector<double> v(width * points.n_points(), 0.);
     for (const auto &p : points.placed())
-      for (unsigned int n = 0; n < p.nodes.size(); ++n)
+      {
+        Point<dim> x;
         for (unsigned int d = 0; d < dim; ++d)
-          v[dim * p.point + d] +=
-            p.weights[n] * fields.velocity[d].local_element(p.nodes[n]);
-    const std::vector<double> mine = points.sum_to_owners(v, dim, grid.comm);
+          x[d] = points.value(p.point, d);
+        for (unsigned int n = 0; n < p.nodes.size(); ++n)
+          {
+            const double w  = p.weights[n];
+            double      *to = &v[width * p.point];
+            for (unsigned int d = 0; d < dim; ++d)
+              to[d] += w * fields.velocity[d].local_element(p.nodes[n]);
+            if (!affine)
+              continue;
+            const Tensor<1, dim> r = grid.node_positions[p.nodes[n]] - x;
+            for (unsigned int j = 0; j < dim; ++j)
+              for (unsigned int c = 0; c < dim; ++c)
+                to[dim + j * dim + c] +=
+                  w * fields.velocity[c].local_element(p.nodes[n]) * r[j];
+          }
+      }
+    const std::vector<double> mine = points.sum_to_owners(v, width, grid.comm);
     region.velocity.zero_out_ghost_values();
-    for (std::size_t j = 0; j < local.size(); ++j)
-      for (unsigned int d = 0; d < dim; ++d)
-        region.velocity.local_element(region.nodes[local[j]].dof[d]) =
-          mine[dim * j + d];
+    for (auto &column : region.affine)
+      column.zero_out_ghost_values();
+    for (std::size_t k = 0; k < local.size(); ++k)
+      for (unsigned int c = 0; c < dim; ++c)
+        {
+          const unsigned int dof             = region.nodes[local[k]].dof[c];
+          region.velocity.local_element(dof) = mine[width * k + c];
+          if (affine)
+            for (unsigned int j = 0; j < dim; ++j)
+              region.affine[j].local_element(dof) =
+                mine[width * k + dim + j * dim + c];
+        }
   }
 
   template class BondedCoupling<2>;

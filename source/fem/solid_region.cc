@@ -414,6 +414,8 @@ namespace dealmpm
           out << "dof " << key;
           write_hex(out, displacement(dof));
           write_hex(out, velocity(dof));
+          for (const auto &column : affine)
+            write_hex(out, column(dof));
           out << '\n';
         }
     const unsigned int n_q = QGauss<dim>(fe.degree + 1).size();
@@ -442,9 +444,10 @@ namespace dealmpm
   void
   SolidRegion<dim>::load_state(const std::vector<std::string> &parts)
   {
-    std::map<std::string, std::pair<double, double>> dofs;
-    std::map<std::string, std::string>               cells;
-    double                                           total_work = 0;
+    // Per dof: u, v and the affine columns.
+    std::map<std::string, std::vector<double>> dofs;
+    std::map<std::string, std::string>         cells;
+    double                                     total_work = 0;
     for (const std::string &part : parts)
       {
         std::istringstream lines(part);
@@ -462,8 +465,9 @@ namespace dealmpm
             else if (kind == "dof")
               {
                 in >> key;
-                const double u = read_hex(in);
-                dofs[key]      = {u, read_hex(in)};
+                std::vector<double> &values = dofs[key];
+                for (in >> std::ws; !in.eof(); in >> std::ws)
+                  values.push_back(read_hex(in));
               }
             else if (kind == "cell")
               {
@@ -478,10 +482,13 @@ namespace dealmpm
       if (owned.is_element(dof))
         {
           const auto found = dofs.find(key);
-          AssertThrow(found != dofs.end(),
+          AssertThrow(found != dofs.end() &&
+                        found->second.size() >= 2 + affine.size(),
                       ExcMessage("the saved FEM region has no node " + key));
-          displacement(dof) = found->second.first;
-          velocity(dof)     = found->second.second;
+          displacement(dof) = found->second[0];
+          velocity(dof)     = found->second[1];
+          for (unsigned int j = 0; j < affine.size(); ++j)
+            affine[j](dof) = found->second[2 + j];
         }
     displacement.update_ghost_values();
     velocity.update_ghost_values();
@@ -559,6 +566,7 @@ namespace dealmpm
     velocity.zero_out_ghost_values();
     displacement.zero_out_ghost_values();
     const double t_mid = time + 0.5 * dt;
+    support_reaction   = Tensor<1, dim>();
     for (const Node &node : nodes)
       {
         Tensor<1, dim> v;
@@ -598,6 +606,7 @@ namespace dealmpm
               const double f   = force.local_element(node.dof[d]);
               const double Rxn = m * (v[d] - v0) / dt - f;
               work += Rxn * dt * 0.5 * (v[d] + v0);
+              support_reaction[d] += Rxn;
             }
         for (unsigned int d = 0; d < dim; ++d)
           {
@@ -745,6 +754,24 @@ namespace dealmpm
     for (unsigned int d = 0; d < 3; ++d)
       h[d] = Utilities::MPI::sum(h[d], comm);
     return h;
+  }
+
+  template <int dim>
+  Tensor<1, dim>
+  SolidRegion<dim>::support_force() const
+  {
+    Tensor<1, dim> sum;
+    for (unsigned int d = 0; d < dim; ++d)
+      sum[d] = Utilities::MPI::sum(support_reaction[d], comm);
+    return sum;
+  }
+
+  template <int dim>
+  bool
+  SolidRegion<dim>::has_supports() const
+  {
+    return !conditions.fixed.empty() || !conditions.displacement.empty() ||
+           !conditions.velocity.empty();
   }
 
   template <int dim>

@@ -65,6 +65,10 @@ main(int argc, char **argv)
       return std::string("momentum");
     if (name.size() > 6 && name.compare(name.size() - 6, 6, "energy") == 0)
       return std::string("energy");
+    // The components of a vector (a region's support force) share a scale.
+    if (name.size() > 2 && name[name.size() - 2] == '_' &&
+        std::string("xyz").find(name.back()) != std::string::npos)
+      return name.substr(0, name.size() - 2);
     return name;
   };
   int    failures = 0;

@@ -27,6 +27,15 @@ namespace dealmpm
      * goes to body @p body's too. */
     BondedCoupling(SolidRegion<dim> &region, const unsigned int body);
 
+    /** APIC for the bonded nodes, as for the particles (scenes with
+     * 'Velocity update = APIC'): each node keeps B = sum N v*_I (x)
+     * (x_I - x) from the read-back and gives the grid the affine field
+     * v + B D^+ (x_I - x) (D = sum N (x_I - x) (x) (x_I - x), its
+     * pseudo-inverse for a node on a grid line), so that the coupled
+     * system keeps its angular momentum (Jiang et al. 2015). */
+    void
+    use_affine();
+
     /** After the grid changed: its cells' search tree. */
     void
     grid_changed(const BackgroundGrid<dim> &grid);
@@ -57,5 +66,6 @@ namespace dealmpm
     std::vector<unsigned int> local;
     std::size_t               n_global = 0;
     NodesOnGrid<dim>          points;
+    bool                      affine = false;
   };
 } // namespace dealmpm

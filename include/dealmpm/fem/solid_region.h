@@ -148,6 +148,14 @@ namespace dealmpm
     angular_momentum() const;
     double
     total_mass() const;
+    /** The force the supports (fixed and prescribed nodes) exerted on
+     * the region in the last step: sum m dv / dt - f over their nodes.
+     * Collective. */
+    Tensor<1, dim>
+    support_force() const;
+    /** Whether any boundary is fixed or prescribed. */
+    bool
+    has_supports() const;
     /** A potential (per unit mass, the effects' fields) that changes in
      * time at fixed positions (a gravity ramp) works on the region: call
      * with the potential as it is after the effects' forces of a step
@@ -226,6 +234,10 @@ namespace dealmpm
      * after their update and then clears (contact, fem/region_contact.h);
      * empty when unused. */
     std::vector<Tensor<1, dim>> velocity_correction;
+    /** APIC for bonded nodes (fem/bonded_coupling.h): per column j, the
+     * entry (c, j) of the node's B = sum N v_I (x) (x_I - x) at the dof of
+     * its component c, like the velocity; empty unless used. */
+    std::vector<LinearAlgebra::distributed::Vector<double>> affine;
 
   private:
     /** The integral over the region (reference volume, all ranks) of
@@ -254,6 +266,8 @@ namespace dealmpm
     unsigned int                         n_internal = 0;
     double last_dt = 0; ///< the step that made the current displacement
     double work    = 0;
+    /** This rank's part of support_force(). */
+    Tensor<1, dim> support_reaction;
     /** sum_i m_i potential(x_i) of this rank after the last step. */
     double last_potential = 0;
   };
