@@ -63,6 +63,9 @@ resumes_exactly adaptive 1e-12 "$prm/colliding_disks.prm" -s "Adaptivity/Criteri
 # FEM regions: their displacement, velocity and quadrature-point state,
 # bonded to a body and in frictional contact with one.
 resumes_exactly bonded 0 "$prm/bonded_bar.prm"
+# APIC: the bonded nodes' affine velocity (the grid shifted so that they
+# sit off its node lines, where the affine part counts).
+resumes_exactly bonded_apic 0 "$prm/bonded_bar.prm" -s "MPM/Velocity update=APIC" -s "Grid/Cells=47, 1"
 resumes_exactly fem_incline 0 "$prm/fem_incline.prm"
 resumes_exactly total_lagrangian 1e-12 "$prm/elastic_column_2d.prm" \
   -s "MPM/Formulation=total Lagrangian" -s "Effects=gravity"
