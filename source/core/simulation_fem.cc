@@ -193,7 +193,7 @@ namespace dealmpm
           }
         if (solid.has_supports())
           {
-            const Tensor<1, dim> R = solid.support_force();
+            const Tensor<1, dim> R = solid.mean_support_force();
             for (unsigned int d = 0; d < dim; ++d)
               {
                 s.effect_columns.push_back(prefix + "support_force_" +

@@ -84,6 +84,9 @@ namespace dealmpm
                                          loop.lost_particles,
                                          progress.elapsed_seconds());
                         });
+    // The regions' support forces are means over a row's steps.
+    for (FemRegion<dim> &region : regions)
+      region.solid->start_statistics_row();
   }
 
   template <int dim>

@@ -406,6 +406,9 @@ namespace dealmpm
     out << "step";
     write_hex(out, last_dt);
     write_hex(out, work);
+    write_hex(out, row_time);
+    for (unsigned int d = 0; d < dim; ++d)
+      write_hex(out, row_impulse[d]);
     out << '\n';
     const IndexSet &owned = dof_handler.locally_owned_dofs();
     for (const auto &[dof, key] : dof_keys(dof_handler))
@@ -448,6 +451,7 @@ namespace dealmpm
     std::map<std::string, std::vector<double>> dofs;
     std::map<std::string, std::string>         cells;
     double                                     total_work = 0;
+    Tensor<1, dim>                             total_impulse;
     for (const std::string &part : parts)
       {
         std::istringstream lines(part);
@@ -461,6 +465,9 @@ namespace dealmpm
               {
                 last_dt = read_hex(in);
                 total_work += read_hex(in);
+                row_time = read_hex(in);
+                for (unsigned int d = 0; d < dim; ++d)
+                  total_impulse[d] += read_hex(in);
               }
             else if (kind == "dof")
               {
@@ -476,7 +483,9 @@ namespace dealmpm
               }
           }
       }
-    work = Utilities::MPI::this_mpi_process(comm) == 0 ? total_work : 0.;
+    const bool first      = Utilities::MPI::this_mpi_process(comm) == 0;
+    work                  = first ? total_work : 0.;
+    row_impulse           = first ? total_impulse : Tensor<1, dim>();
     const IndexSet &owned = dof_handler.locally_owned_dofs();
     for (const auto &[dof, key] : dof_keys(dof_handler))
       if (owned.is_element(dof))
@@ -607,6 +616,7 @@ namespace dealmpm
               const double Rxn = m * (v[d] - v0) / dt - f;
               work += Rxn * dt * 0.5 * (v[d] + v0);
               support_reaction[d] += Rxn;
+              row_impulse[d] += dt * Rxn;
             }
         for (unsigned int d = 0; d < dim; ++d)
           {
@@ -615,6 +625,7 @@ namespace dealmpm
           }
       }
     velocity_correction.clear();
+    row_time += dt;
     // The tractions' work: f_t . v over the step.
     if (!conditions.traction.empty())
       {
@@ -764,6 +775,26 @@ namespace dealmpm
     for (unsigned int d = 0; d < dim; ++d)
       sum[d] = Utilities::MPI::sum(support_reaction[d], comm);
     return sum;
+  }
+
+  template <int dim>
+  Tensor<1, dim>
+  SolidRegion<dim>::mean_support_force() const
+  {
+    Tensor<1, dim> sum;
+    if (!(row_time > 0))
+      return sum;
+    for (unsigned int d = 0; d < dim; ++d)
+      sum[d] = Utilities::MPI::sum(row_impulse[d], comm) / row_time;
+    return sum;
+  }
+
+  template <int dim>
+  void
+  SolidRegion<dim>::start_statistics_row()
+  {
+    row_impulse = Tensor<1, dim>();
+    row_time    = 0;
   }
 
   template <int dim>

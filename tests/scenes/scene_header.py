@@ -14,6 +14,7 @@ with <quantity> one of
     max <column>, min <column> over all rows
     time of max <column>       the output time where the column peaks
     mean <column> after t = T  mean over the output rows from time T on
+    mean <column> from t = A to B  mean over the output rows in [A, B]
     steps                      the number of steps to the end
 and <column> any statistics.csv column. The scene must run to its end
 (exit code 0); particle output is switched off for the check.
@@ -65,12 +66,14 @@ def measure(quantity):
     if match:
         pick = max if match.group(1) == "max" else min
         return pick(r[match.group(2)] for r in rows)
-    match = re.fullmatch(r"mean (\w+) after t = (\S+)", quantity)
+    match = re.fullmatch(r"mean (\w+) (after t = (\S+)|from t = (\S+) to (\S+))",
+                         quantity)
     if match:
-        late = [r[match.group(1)] for r in rows
-                if r["time"] >= float(match.group(2))]
+        start = float(match.group(3) or match.group(4))
+        end = float(match.group(5)) if match.group(5) else float("inf")
+        late = [r[match.group(1)] for r in rows if start <= r["time"] <= end]
         if not late:
-            raise KeyError("no output after t = %s" % match.group(2))
+            raise KeyError("no output in t = [%g, %g]" % (start, end))
         return sum(late) / len(late)
     match = re.fullmatch(r"(\w+) at end", quantity)
     if match:

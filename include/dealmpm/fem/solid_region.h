@@ -153,6 +153,14 @@ namespace dealmpm
      * Collective. */
     Tensor<1, dim>
     support_force() const;
+    /** support_force() averaged over the steps since the last
+     * start_statistics_row() (weighted by their size;
+     * zero before any): the supports' force without the explicit step's
+     * ringing, for the statistics' rows. Collective. */
+    Tensor<1, dim>
+    mean_support_force() const;
+    void
+    start_statistics_row();
     /** Whether any boundary is fixed or prescribed. */
     bool
     has_supports() const;
@@ -266,8 +274,10 @@ namespace dealmpm
     unsigned int                         n_internal = 0;
     double last_dt = 0; ///< the step that made the current displacement
     double work    = 0;
-    /** This rank's part of support_force(). */
-    Tensor<1, dim> support_reaction;
+    /** This rank's part of support_force(), and of its impulse since the
+     * row started (over row_time). */
+    Tensor<1, dim> support_reaction, row_impulse;
+    double         row_time = 0;
     /** sum_i m_i potential(x_i) of this rank after the last step. */
     double last_potential = 0;
   };
