@@ -184,6 +184,103 @@ namespace dealmpm
         ArrayView<double>(internal.data() + k * n_internal, n_internal));
     last_dt = 0;
     work    = 0;
+    make_reference_data();
+  }
+
+  template <int dim>
+  void
+  SolidRegion<dim>::make_reference_data()
+  {
+    ReferenceData &r = reference;
+    r                = ReferenceData();
+    r.n_dofs         = fe.n_dofs_per_cell();
+    r.n_scalar       = r.n_dofs / dim;
+    for (unsigned int i = 0; i < r.n_dofs; ++i)
+      {
+        r.component.push_back(fe.system_to_component_index(i).first);
+        r.scalar.push_back(fe.system_to_component_index(i).second);
+      }
+    QGauss<dim>       gauss(fe.degree + 1);
+    QGauss<dim - 1>   face_gauss(fe.degree + 1);
+    FEValues<dim>     values(mapping,
+                         fe,
+                         gauss,
+                         update_gradients | update_JxW_values);
+    FEFaceValues<dim> face_values(mapping,
+                                  fe,
+                                  face_gauss,
+                                  update_values | update_gradients |
+                                    update_normal_vectors | update_JxW_values);
+    r.n_q                   = gauss.size();
+    r.n_face_q              = face_gauss.size();
+    const auto &partitioner = *displacement.get_partitioner();
+    std::vector<types::global_dof_index> dofs(r.n_dofs);
+    unsigned int                         c = 0;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_indices(dofs);
+          for (const types::global_dof_index dof : dofs)
+            r.local_dofs.push_back(partitioner.global_to_local(dof));
+          r.centre.push_back(cell->center());
+          values.reinit(cell);
+          for (unsigned int q = 0; q < r.n_q; ++q)
+            {
+              r.JxW.push_back(values.JxW(q));
+              const std::size_t first = r.grad.size();
+              r.grad.resize(first + r.n_scalar);
+              for (unsigned int i = 0; i < r.n_dofs; ++i)
+                r.grad[first + r.scalar[i]] =
+                  values.shape_grad_component(i, q, r.component[i]);
+            }
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary())
+              {
+                face_values.reinit(cell, f);
+                r.face_cell.push_back(c);
+                r.face_id.push_back(cell->face(f)->boundary_id());
+                for (unsigned int q = 0; q < r.n_face_q; ++q)
+                  {
+                    r.face_normal_dA.push_back(face_values.normal_vector(q) *
+                                               face_values.JxW(q));
+                    const std::size_t first = r.face_grad.size();
+                    r.face_grad.resize(first + r.n_scalar);
+                    r.face_value.resize(first + r.n_scalar);
+                    for (unsigned int i = 0; i < r.n_dofs; ++i)
+                      {
+                        r.face_grad[first + r.scalar[i]] =
+                          face_values.shape_grad_component(i,
+                                                           q,
+                                                           r.component[i]);
+                        r.face_value[first + r.scalar[i]] =
+                          face_values.shape_value_component(i,
+                                                            q,
+                                                            r.component[i]);
+                      }
+                  }
+              }
+          ++c;
+        }
+  }
+
+  template <int dim>
+  Tensor<2, dim>
+  SolidRegion<dim>::reference_gradient(
+    const LinearAlgebra::distributed::Vector<double> &w,
+    const unsigned int                                cell,
+    const Tensor<1, dim>                             *grad) const
+  {
+    Tensor<2, dim>      g;
+    const unsigned int *dofs = &reference.local_dofs[cell * reference.n_dofs];
+    for (unsigned int i = 0; i < reference.n_dofs; ++i)
+      {
+        const double          value = w.local_element(dofs[i]);
+        const Tensor<1, dim> &dN    = grad[reference.scalar[i]];
+        const unsigned int    a     = reference.component[i];
+        for (unsigned int b = 0; b < dim; ++b)
+          g[a][b] += value * dN[b];
+      }
+    return g;
   }
 
   template <int dim>
@@ -237,57 +334,47 @@ namespace dealmpm
   {
     displacement.update_ghost_values();
     velocity.update_ghost_values();
-    force = 0;
-    QGauss<dim>                      gauss(fe.degree + 1);
-    FEValues<dim>                    values(mapping,
-                         fe,
-                         gauss,
-                         update_gradients | update_JxW_values);
-    const FEValuesExtractors::Vector u(0);
-    std::vector<Tensor<2, dim>>      grad_u(gauss.size()), grad_v(gauss.size());
-    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    Vector<double>                       local(fe.n_dofs_per_cell());
-    std::size_t                          k = 0;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          values.reinit(cell);
-          values[u].get_function_gradients(displacement, grad_u);
-          values[u].get_function_gradients(velocity, grad_v);
-          local = 0;
-          for (unsigned int q = 0; q < gauss.size(); ++q, ++k)
-            {
-              const Tensor<2, dim> F = unit_symmetric_tensor<dim>() + grad_u[q];
-              const double         J = determinant(F);
-              if (!(J > 0))
-                {
-                  std::ostringstream message;
-                  message << "an FEM region's cell at reference position ("
-                          << cell->center() << ") turned inside out (J = " << J
-                          << "); a smaller time step or a finer mesh there "
-                             "may help";
-                  throw RunError(message.str());
-                }
-              // The half step that made F: F - F_old = dt grad_X v.
-              if (dt > 0)
-                material.update_stress(grad_v[q] * invert(F),
-                                       F,
-                                       dt,
-                                       stress[k],
-                                       ArrayView<double>(internal.data() +
-                                                           k * n_internal,
-                                                         n_internal));
-              deformation[k] = F;
-              const Tensor<2, dim> P =
-                J * Tensor<2, dim>(stress[k]) * transpose(invert(F));
-              for (unsigned int i = 0; i < dofs.size(); ++i)
-                local(i) -=
-                  scalar_product(values[u].gradient(i, q), P) * values.JxW(q);
-            }
-          cell->get_dof_indices(dofs);
-          for (unsigned int i = 0; i < dofs.size(); ++i)
-            force(dofs[i]) += local(i);
-        }
+    force                  = 0;
+    const ReferenceData &r = reference;
+    std::vector<double>  local(r.n_dofs);
+    const std::size_t    n_cells = r.centre.size();
+    for (std::size_t c = 0, k = 0; c < n_cells; ++c)
+      {
+        std::fill(local.begin(), local.end(), 0.);
+        for (unsigned int q = 0; q < r.n_q; ++q, ++k)
+          {
+            const Tensor<1, dim> *grad = &r.grad[k * r.n_scalar];
+            const Tensor<2, dim>  F    = unit_symmetric_tensor<dim>() +
+                                     reference_gradient(displacement, c, grad);
+            const double J = determinant(F);
+            if (!(J > 0))
+              {
+                std::ostringstream message;
+                message << "an FEM region's cell at reference position ("
+                        << r.centre[c] << ") turned inside out (J = " << J
+                        << "); a smaller time step or a finer mesh there "
+                           "may help";
+                throw RunError(message.str());
+              }
+            // The half step that made F: F - F_old = dt grad_X v.
+            if (dt > 0)
+              material.update_stress(
+                reference_gradient(velocity, c, grad) * invert(F),
+                F,
+                dt,
+                stress[k],
+                ArrayView<double>(internal.data() + k * n_internal,
+                                  n_internal));
+            deformation[k] = F;
+            const Tensor<2, dim> P =
+              J * Tensor<2, dim>(stress[k]) * transpose(invert(F));
+            for (unsigned int i = 0; i < r.n_dofs; ++i)
+              local[i] -= (P[r.component[i]] * grad[r.scalar[i]]) * r.JxW[k];
+          }
+        const unsigned int *dofs = &r.local_dofs[c * r.n_dofs];
+        for (unsigned int i = 0; i < r.n_dofs; ++i)
+          force.local_element(dofs[i]) += local[i];
+      }
     force.compress(VectorOperation::add);
   }
 
@@ -298,39 +385,29 @@ namespace dealmpm
     LinearAlgebra::distributed::Vector<double> a(force);
     a = 0;
     displacement.update_ghost_values();
-    QGauss<dim - 1>                      gauss(fe.degree + 1);
-    FEFaceValues<dim>                    values(mapping,
-                             fe,
-                             gauss,
-                             update_values | update_gradients |
-                               update_normal_vectors | update_JxW_values);
-    const FEValuesExtractors::Vector     u(0);
-    std::vector<Tensor<2, dim>>          grad_u(gauss.size());
-    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary() &&
-              ids.count(cell->face(f)->boundary_id()))
+    const ReferenceData &r = reference;
+    for (std::size_t face = 0; face < r.face_cell.size(); ++face)
+      if (ids.count(r.face_id[face]))
+        {
+          const unsigned int  c    = r.face_cell[face];
+          const unsigned int *dofs = &r.local_dofs[c * r.n_dofs];
+          for (unsigned int q = 0; q < r.n_face_q; ++q)
             {
-              values.reinit(cell, f);
-              values[u].get_function_gradients(displacement, grad_u);
-              cell->get_dof_indices(dofs);
-              for (unsigned int q = 0; q < gauss.size(); ++q)
-                {
-                  const Tensor<2, dim> F =
-                    unit_symmetric_tensor<dim>() + grad_u[q];
-                  const Tensor<1, dim> n_da =
-                    determinant(F) * transpose(invert(F)) *
-                    values.normal_vector(q) * values.JxW(q);
-                  for (unsigned int i = 0; i < dofs.size(); ++i)
-                    {
-                      const unsigned int c =
-                        fe.system_to_component_index(i).first;
-                      a(dofs[i]) += values.shape_value(i, q) * n_da[c];
-                    }
-                }
+              const std::size_t    k = face * r.n_face_q + q;
+              const Tensor<2, dim> F =
+                unit_symmetric_tensor<dim>() +
+                reference_gradient(displacement,
+                                   c,
+                                   &r.face_grad[k * r.n_scalar]);
+              // Nanson: n da = J F^-T N dA.
+              const Tensor<1, dim> n_da =
+                determinant(F) * transpose(invert(F)) * r.face_normal_dA[k];
+              const double *N = &r.face_value[k * r.n_scalar];
+              for (unsigned int i = 0; i < r.n_dofs; ++i)
+                a.local_element(dofs[i]) +=
+                  N[r.scalar[i]] * n_da[r.component[i]];
             }
+        }
     a.compress(VectorOperation::add);
     std::vector<Tensor<1, dim>> normals(nodes.size());
     for (unsigned int k = 0; k < nodes.size(); ++k)

@@ -263,6 +263,44 @@ namespace dealmpm
     void
     internal_force(const double dt);
 
+    /** What the per-step loops need of the owned cells, fixed in the
+     * reference configuration (total Lagrangian), computed once by
+     * setup(): FEValues and FEFaceValues cost more than the loops
+     * themselves on regions of a few hundred cells. */
+    struct ReferenceData
+    {
+      unsigned int n_dofs = 0, n_scalar = 0, n_q = 0, n_face_q = 0;
+      /** Per dof of a cell: its component and scalar shape function. */
+      std::vector<unsigned int> component, scalar;
+      /** Per cell: the local indices of its dofs (cell-major) and its
+       * centre (for messages). */
+      std::vector<unsigned int> local_dofs;
+      std::vector<Point<dim>>   centre;
+      /** Per cell and quadrature point: JxW and the reference gradients
+       * of the scalar shape functions. */
+      std::vector<double>         JxW;
+      std::vector<Tensor<1, dim>> grad;
+      /** Per boundary face: its cell, its boundary id; per face
+       * quadrature point the reference normal times JxW and the scalar
+       * shape functions' values and reference gradients. */
+      std::vector<unsigned int>       face_cell;
+      std::vector<types::boundary_id> face_id;
+      std::vector<Tensor<1, dim>>     face_normal_dA, face_grad;
+      std::vector<double>             face_value;
+    };
+
+    void
+    make_reference_data();
+
+    /** grad_X of the field @p w (ghosts updated) at quadrature point
+     * @p q of cell @p cell from the reference gradients @p grad (n_scalar
+     * per point, the point's first). */
+    Tensor<2, dim>
+    reference_gradient(const LinearAlgebra::distributed::Vector<double> &w,
+                       const unsigned int                                cell,
+                       const Tensor<1, dim> *grad) const;
+
+    ReferenceData                              reference;
     const Material<dim>                       &material;
     RegionBoundaryConditions<dim>              conditions;
     LinearAlgebra::distributed::Vector<double> traction_force;
