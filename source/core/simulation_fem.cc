@@ -41,11 +41,6 @@ namespace dealmpm
         const std::string entry =
           region.bonded ? "Bonded boundaries" : "Contact boundaries";
         const MethodSettings &method = run_settings.method;
-        if (region.contact && nodal.has_body_fields())
-          reader.fail("Contact boundaries",
-                      "none in a scene with per-body fields ('frictional "
-                      "contact' between MPM bodies): the region meets the "
-                      "MPM material as one field yet");
         if (method.scheme != UpdateScheme::USL ||
             method.particle_update.newmark || total_lagrangian())
           reader.fail(entry,

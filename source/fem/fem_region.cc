@@ -89,8 +89,9 @@ namespace dealmpm
       "Per boundary id a Coulomb friction coefficient, e.g. '2: 0.3': "
       "frictional contact of those faces with the MPM material through the "
       "background grid (no interpenetration beyond a cell; normals from the "
-      "region's current surface). Needs 'MPM/Stress update = USL' and no "
-      "'frictional contact' effect.");
+      "region's current surface); with the 'frictional contact' effect, "
+      "each body meets the region on its own. Needs 'MPM/Stress update = "
+      "USL'.");
   }
 
   namespace

@@ -47,8 +47,56 @@ namespace dealmpm
 
   template <int dim>
   void
+  RegionContact<dim>::correct(NodalFields<dim>  &fields,
+                              const unsigned int i,
+                              const double       mass_threshold)
+  {
+    const double m_a = fields.mass.local_element(i);
+    const double m_b = mass.local_element(i);
+    if (!(m_a > mass_threshold) || !(m_b > 0))
+      return;
+    Tensor<1, dim> v_a, v_b, n;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        v_a[d] = fields.velocity[d].local_element(i);
+        v_b[d] =
+          momentum[d].local_element(i) / m_b + change[d].local_element(i);
+        n[d] = normal[d].local_element(i);
+      }
+    if (!(n.norm() > 0))
+      return;
+    n /= n.norm();
+    // n points out of the region, towards the MPM material.
+    const Tensor<1, dim> relative =
+      m_b / (m_a + m_b) * (v_a - v_b); // v_a - v_cm
+    const double approach = relative * n;
+    if (!(approach < 0))
+      return;
+    const Tensor<1, dim> tangential    = relative - approach * n;
+    const double         slip          = tangential.norm();
+    const double         mu_i          = mu.local_element(i) / m_b;
+    Tensor<1, dim>       normal_change = -approach * n;
+    Tensor<1, dim>       friction_change;
+    if (slip > 0)
+      friction_change = -std::min(1., mu_i * (-approach) / slip) * tangential;
+    const Tensor<1, dim> dv_a  = normal_change + friction_change;
+    const Tensor<1, dim> dv_b  = -m_a / m_b * dv_a;
+    const Tensor<1, dim> a_new = v_a + dv_a, b_new = v_b + dv_b;
+    work_done += m_a * (dv_a * a_new) + m_b * (dv_b * b_new);
+    friction_done +=
+      m_a * (friction_change * a_new) - m_a * (friction_change * b_new);
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        fields.velocity[d].local_element(i) += dv_a[d];
+        fields.velocity_increment[d].local_element(i) += dv_a[d];
+        change[d].local_element(i) += dv_b[d];
+      }
+  }
+
+  template <int dim>
+  void
   RegionContact<dim>::apply(const BackgroundGrid<dim> &grid,
-                            NodalFields<dim>          &core,
+                            NodalFieldSet<dim>        &set,
                             const double               mass_threshold,
                             const double               dt)
   {
@@ -109,56 +157,28 @@ namespace dealmpm
         normal[d].compress(VectorOperation::add);
       }
 
+    // The MPM fields the region meets: each body's when bodies have
+    // their own (contact between them), else the one core field. Pairs
+    // are corrected one after the other, the region's field velocity
+    // carried from pair to pair, each exact in momentum.
+    std::vector<NodalFields<dim> *> mpm_fields;
+    if (set.has_body_fields())
+      for (NodalFields<dim> &body : set.body)
+        mpm_fields.push_back(&body);
+    else
+      mpm_fields.push_back(&set.core);
     const unsigned int n_owned = mass.locally_owned_size();
-    for (unsigned int i = 0; i < n_owned; ++i)
-      {
-        const double m_a = core.mass.local_element(i);
-        const double m_b = mass.local_element(i);
-        if (!(m_a > mass_threshold) || !(m_b > 0))
-          continue;
-        Tensor<1, dim> v_a, v_b, n;
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            v_a[d] = core.velocity[d].local_element(i);
-            v_b[d] = momentum[d].local_element(i) / m_b;
-            n[d]   = normal[d].local_element(i);
-          }
-        if (!(n.norm() > 0))
-          continue;
-        n /= n.norm();
-        // n points out of the region, towards the MPM material.
-        const Tensor<1, dim> relative =
-          m_b / (m_a + m_b) * (v_a - v_b); // v_a - v_cm
-        const double approach = relative * n;
-        if (!(approach < 0))
-          continue;
-        const Tensor<1, dim> tangential    = relative - approach * n;
-        const double         slip          = tangential.norm();
-        const double         mu_i          = mu.local_element(i) / m_b;
-        Tensor<1, dim>       normal_change = -approach * n;
-        Tensor<1, dim>       friction_change;
-        if (slip > 0)
-          friction_change =
-            -std::min(1., mu_i * (-approach) / slip) * tangential;
-        const Tensor<1, dim> dv_a  = normal_change + friction_change;
-        const Tensor<1, dim> dv_b  = -m_a / m_b * dv_a;
-        const Tensor<1, dim> a_new = v_a + dv_a, b_new = v_b + dv_b;
-        work_done += m_a * (dv_a * a_new) + m_b * (dv_b * b_new);
-        friction_done +=
-          m_a * (friction_change * a_new) - m_a * (friction_change * b_new);
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            core.velocity[d].local_element(i) += dv_a[d];
-            core.velocity_increment[d].local_element(i) += dv_a[d];
-            change[d].local_element(i) = dv_b[d];
-          }
-      }
+    for (NodalFields<dim> *fields : mpm_fields)
+      for (unsigned int i = 0; i < n_owned; ++i)
+        correct(*fields, i, mass_threshold);
     for (unsigned int d = 0; d < dim; ++d)
-      {
-        core.velocity[d].update_ghost_values();
-        core.velocity_increment[d].update_ghost_values();
-        change[d].update_ghost_values();
-      }
+      for (NodalFields<dim> *fields : mpm_fields)
+        {
+          fields->velocity[d].update_ghost_values();
+          fields->velocity_increment[d].update_ghost_values();
+        }
+    for (unsigned int d = 0; d < dim; ++d)
+      change[d].update_ghost_values();
 
     // The region's nodes take their field's change.
     std::vector<double> dv(dim * points.n_points(), 0.);

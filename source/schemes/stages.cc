@@ -506,7 +506,7 @@ namespace dealmpm
           if (region.bonded)
             region.bonded->read_back(s.grid, s.field_set);
           if (region.contact)
-            region.contact->apply(s.grid, s.fields, s.mass_threshold, s.dt);
+            region.contact->apply(s.grid, s.field_set, s.mass_threshold, s.dt);
           region.solid->advance(s.time, s.dt);
           if (!s.effects.empty())
             region.solid->track_potential(fem_potential(s), false);

@@ -330,3 +330,49 @@ TEST(Incline, BlockSlidesOnAnFemBaseAtTheCoulombRate)
             << std::endl;
   EXPECT_LT(std::abs(held.distance), 1e-3 * sliding_distance(30, 0, end, ramp));
 }
+
+// Two blocks stacked on the FEM base, bodies in contact with each other
+// ('frictional contact', each body its own field: each meets the region
+// on its own): the top block (0.15 x 0.05 on a 0.6 x 0.1 one, an eighth of
+// its mass) slides without friction on the lower one at g sin(theta);
+// the lower one carries both on the base (mu = 0.2):
+// a = g (sin(theta) - 1.125 mu cos(theta)), the top block's weight
+// pressing it down but not pulling it along. (The top block is shorter:
+// blocks with flush ends catch at their corners, where the mass
+// gradients' normals are not the surface's, MPM alone as well.)
+TEST(Incline, StackedBlocksOnAnFemBase)
+{
+  const double end   = 0.5;
+  auto         stack = test::make_simulation<2>(
+    block_on_fem_base(30,
+                      0.2,
+                      0.025,
+                      "set Effects = gravity, frictional contact\n"
+                              "subsection Frictional contact\n"
+                              " set Friction coefficient = 0\nend\n"
+                              "subsection Body 1\n set Upper corner = 0.7, 0.2\nend\n"
+                              "subsection Body 2\n set Lower corner = 0.15, 0.2\n"
+                              " set Upper corner = 0.3, 0.25\nend\n"),
+    2,
+    1,
+    1);
+  const Point<2>   lower0 = centre_of_mass(*stack, 0);
+  const Point<2>   upper0 = centre_of_mass(*stack, 1);
+  const Statistics s0     = stack->statistics();
+  while (stack->time() < end - 1e-12)
+    stack->advance(std::min(stack->time_step(), end - stack->time()));
+  const double     lower       = centre_of_mass(*stack, 0)[0] - lower0[0];
+  const double     upper       = centre_of_mass(*stack, 1)[0] - upper0[0];
+  const double     exact_lower = sliding_distance(30, 1.125 * 0.2, end, ramp);
+  const double     exact_upper = sliding_distance(30, 0, end, ramp);
+  const Statistics s           = stack->statistics();
+  const double     work        = stack->external_work();
+  const double     balance =
+    std::abs(s.total_energy() - work - s0.total_energy()) / std::abs(work);
+  std::cout << "stacked blocks on an FEM base: lower " << lower << " (exact "
+            << exact_lower << "), upper " << upper << " (exact " << exact_upper
+            << "), energy balance error " << balance << std::endl;
+  EXPECT_NEAR(lower / exact_lower, 1, 1e-3);
+  EXPECT_NEAR(upper / exact_upper, 1, 1e-3);
+  EXPECT_LT(balance, 1e-3);
+}

@@ -3,6 +3,7 @@
 #include <dealmpm/fem/nodes_on_grid.h>
 #include <dealmpm/fem/solid_region.h>
 #include <dealmpm/grid/background_grid.h>
+#include <dealmpm/grid/nodal_field_set.h>
 #include <dealmpm/grid/nodal_fields.h>
 
 #include <map>
@@ -18,8 +19,9 @@ namespace dealmpm
    * field of its own. Its contact nodes give the grid their mass, their
    * predicted momentum m (v + dt f / m) and their outward normals times
    * area (from the current surface, not from mass gradients). At each
-   * node where both the MPM material (the core fields) and the region
-   * have mass and the MPM material approaches the surface,
+   * node where both the MPM material (the core fields; each body's field
+   * in turn when bodies have their own, for contact between them) and
+   * the region have mass and the MPM material approaches the surface,
    * (v_mpm - v_fe) . n < 0, the pair's relative normal velocity is
    * removed at their centre of mass and Coulomb friction takes up to mu
    * times it of the slip; the MPM side's change goes to v* and its
@@ -45,7 +47,7 @@ namespace dealmpm
      * and the region's forces: correct both sides. Collective. */
     void
     apply(const BackgroundGrid<dim> &grid,
-          NodalFields<dim>          &core,
+          NodalFieldSet<dim>        &fields,
           const double               mass_threshold,
           const double               dt);
 
@@ -72,6 +74,13 @@ namespace dealmpm
     }
 
   private:
+    /** The pair (MPM field @p fields, the region's field) at owned node
+     * @p i: the correction when the MPM side approaches. */
+    void
+    correct(NodalFields<dim>  &fields,
+            const unsigned int i,
+            const double       mass_threshold);
+
     SolidRegion<dim>            &region;
     std::set<types::boundary_id> ids;
     /** Per local contact node (index into region.nodes): its mu. */
