@@ -848,22 +848,15 @@ namespace dealmpm
   Tensor<1, dim>
   SolidRegion<dim>::support_force() const
   {
-    Tensor<1, dim> sum;
-    for (unsigned int d = 0; d < dim; ++d)
-      sum[d] = Utilities::MPI::sum(support_reaction[d], comm);
-    return sum;
+    return Utilities::MPI::sum(support_reaction, comm);
   }
 
   template <int dim>
   Tensor<1, dim>
   SolidRegion<dim>::mean_support_force() const
   {
-    Tensor<1, dim> sum;
-    if (!(row_time > 0))
-      return sum;
-    for (unsigned int d = 0; d < dim; ++d)
-      sum[d] = Utilities::MPI::sum(row_impulse[d], comm) / row_time;
-    return sum;
+    return row_time > 0 ? Utilities::MPI::sum(row_impulse, comm) / row_time :
+                          Tensor<1, dim>();
   }
 
   template <int dim>
