@@ -23,7 +23,8 @@
 #   3 ranks; a block sliding through the grid, repartitioned whenever
 #   the imbalance passes 1.05, on 1, 2 and 3 ranks (nothing lost or
 #   duplicated: n_particles and lost_particles are compared);
-# - an FEM region bonded to an MPM body, on 1, 2 and 3 ranks.
+# - an FEM region bonded to an MPM body, and one in contact with one
+#   (the pile pushed into sand), on 1, 2 and 3 ranks.
 # Every run must have particles on every rank.
 set -euo pipefail
 dealmpm=$1 compare=$2 mpirun=$3 disks=$4 column=$5
@@ -84,6 +85,9 @@ compare_ranks cube "$dir/cube_drop_3d.prm" -s "Time/End time=0.15" -s "Output/In
 # partitioned each on its own (the bonded nodes gathered, each deposited by
 # one rank).
 compare_ranks bonded "$dir/bonded_bar.prm"
+# An FEM region in frictional contact with a Drucker-Prager body, pushed
+# by a prescribed velocity (its support force in the statistics).
+compare_ranks pile "$dir/pile_in_sand.prm" -s "Time/End time=0.2"
 # Checked every 10 steps, and empty cells weigh 1: a little above the 1.2
 # that triggers a repartition is possible between checks.
 for n in 2 3; do balanced "$work/cube$n/statistics.csv" 1.25; done
