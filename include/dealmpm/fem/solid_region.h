@@ -292,9 +292,9 @@ namespace dealmpm
     void
     make_reference_data();
 
-    /** grad_X of the field @p w (ghosts updated) at quadrature point
-     * @p q of cell @p cell from the reference gradients @p grad (n_scalar
-     * per point, the point's first). */
+    /** grad_X of the field @p w (ghosts updated) on cell @p cell at the
+     * point whose reference gradients of the scalar shape functions start
+     * at @p grad (n_scalar of them). */
     Tensor<2, dim>
     reference_gradient(const LinearAlgebra::distributed::Vector<double> &w,
                        const unsigned int                                cell,
