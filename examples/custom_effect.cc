@@ -4,6 +4,7 @@
 // then run a scene that lists it with "set Effects = air drag".
 //
 //   ./custom_effect ../examples/custom_effect.prm
+#include <dealmpm/app/program.h>
 #include <dealmpm/core/simulation.h>
 #include <dealmpm/effects/effect_with_work.h>
 

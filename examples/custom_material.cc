@@ -3,6 +3,7 @@
 // that selects it with "set Model = Saint Venant-Kirchhoff".
 //
 //   ./custom_material ../examples/custom_material.prm
+#include <dealmpm/app/program.h>
 #include <dealmpm/core/simulation.h>
 #include <dealmpm/materials/material.h>
 

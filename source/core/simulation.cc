@@ -5,11 +5,11 @@
 #include <dealmpm/core/simulation.h>
 #include <dealmpm/core/stop_signal.h>
 #include <dealmpm/diagnostics/run_guards.h>
-#include <dealmpm/diagnostics/run_messages.h>
+#include <dealmpm/base/run_messages.h>
 #include <dealmpm/grid/grid_update.h>
 #include <dealmpm/io/progress.h>
 #include <dealmpm/materials/initial_stress.h>
-#include <dealmpm/materials/stress_update.h>
+#include <dealmpm/transfer/stress_update.h>
 #include <dealmpm/particles/fill_bodies.h>
 #include <dealmpm/particles/hold_at_walls.h>
 #include <dealmpm/transfer/grid_to_particle.h>

@@ -2,8 +2,8 @@
 
 #include <dealmpm/base/errors.h>
 #include <dealmpm/core/simulation.h>
-#include <dealmpm/diagnostics/run_messages.h>
-#include <dealmpm/particles/split_particles.h>
+#include <dealmpm/base/run_messages.h>
+#include <dealmpm/adaptivity/split_particles.h>
 
 #include <algorithm>
 

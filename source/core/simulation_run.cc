@@ -5,7 +5,7 @@
 #include <dealmpm/core/simulation.h>
 #include <dealmpm/core/stop_signal.h>
 #include <dealmpm/diagnostics/run_guards.h>
-#include <dealmpm/diagnostics/run_messages.h>
+#include <dealmpm/base/run_messages.h>
 #include <dealmpm/grid/grid_update.h>
 #include <dealmpm/transfer/particle_to_grid.h>
 

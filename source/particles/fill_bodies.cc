@@ -1,4 +1,4 @@
-#include <dealmpm/diagnostics/run_messages.h>
+#include <dealmpm/base/run_messages.h>
 #include <dealmpm/particles/fill_bodies.h>
 
 #include <algorithm>

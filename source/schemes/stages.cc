@@ -1,4 +1,4 @@
-#include <dealmpm/diagnostics/run_messages.h>
+#include <dealmpm/base/run_messages.h>
 #include <dealmpm/grid/grid_update.h>
 #include <dealmpm/schemes/stages.h>
 #include <dealmpm/transfer/grid_to_particle.h>

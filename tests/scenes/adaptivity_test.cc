@@ -4,7 +4,7 @@
 // cannot run with is refused. Runs on 1 rank and, through ctest, on 2.
 #include <deal.II/base/mpi.h>
 
-#include <dealmpm/particles/split_particles.h>
+#include <dealmpm/adaptivity/split_particles.h>
 
 #include <gtest/gtest.h>
 

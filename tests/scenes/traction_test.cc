@@ -8,7 +8,7 @@
 // free grid boundary carries the traction as sigma_xx.
 #include <deal.II/base/mpi.h>
 
-#include <dealmpm/effects/load_curve.h>
+#include <dealmpm/base/load_curve.h>
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // x'' = -w^2 x, applied exactly as the sweeps apply them: the force at the
 // particle's (predicted) location, P2G's predicted velocity, the
 // displacement velocity that moves it, the reported velocity.
-#include <dealmpm/schemes/particle_update.h>
+#include <dealmpm/transfer/particle_update.h>
 
 #include <gtest/gtest.h>
 

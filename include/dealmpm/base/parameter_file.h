@@ -4,6 +4,7 @@
 
 #include <exception>
 #include <string>
+#include <vector>
 
 namespace dealmpm
 {
@@ -58,4 +59,24 @@ namespace dealmpm
   parse_parameter_file(ParameterHandler  &prm,
                        const std::string &file,
                        const bool         skip_undefined);
+
+  /** The size of a scene, read before everything else is declared. */
+  struct SceneShape
+  {
+    unsigned int dim           = 2;
+    unsigned int n_bodies      = 1;
+    unsigned int n_materials   = 1;
+    unsigned int n_fem_regions = 0;
+  };
+
+  /** Read Dimension, Number of bodies and Number of materials (pass one of
+   * two over the scene file, overrides applied). */
+  SceneShape
+  read_scene_shape(const std::string              &file,
+                   const std::vector<std::string> &overrides);
+
+  /** Apply "Section/Entry=value" overrides; throws InputError. */
+  void
+  apply_overrides(ParameterHandler               &prm,
+                  const std::vector<std::string> &overrides);
 } // namespace dealmpm

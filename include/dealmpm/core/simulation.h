@@ -4,6 +4,7 @@
 #include <deal.II/base/timer.h>
 
 #include <dealmpm/base/errors.h>
+#include <dealmpm/base/parameter_file.h>
 #include <dealmpm/core/run_state.h>
 #include <dealmpm/diagnostics/accuracy_report.h>
 #include <dealmpm/diagnostics/check_settings.h>
@@ -12,10 +13,10 @@
 #include <dealmpm/effects/effect.h>
 #include <dealmpm/effects/effect_list.h>
 #include <dealmpm/fem/fem_region.h>
-#include <dealmpm/grid/adaptivity.h>
+#include <dealmpm/adaptivity/adaptivity.h>
 #include <dealmpm/grid/background_grid.h>
 #include <dealmpm/grid/boundary_conditions.h>
-#include <dealmpm/grid/load_balance.h>
+#include <dealmpm/adaptivity/load_balance.h>
 #include <dealmpm/grid/nodal_field_set.h>
 #include <dealmpm/io/checkpoint.h>
 #include <dealmpm/io/output_settings.h>
@@ -23,7 +24,7 @@
 #include <dealmpm/io/progress.h>
 #include <dealmpm/materials/material.h>
 #include <dealmpm/materials/material_sections.h>
-#include <dealmpm/materials/stress_update.h>
+#include <dealmpm/transfer/stress_update.h>
 #include <dealmpm/particles/body.h>
 #include <dealmpm/particles/particle_set.h>
 #include <dealmpm/schemes/method_settings.h>
@@ -42,15 +43,6 @@
 
 namespace dealmpm
 {
-  /** The size of a scene, read before everything else is declared. */
-  struct SceneShape
-  {
-    unsigned int dim           = 2;
-    unsigned int n_bodies      = 1;
-    unsigned int n_materials   = 1;
-    unsigned int n_fem_regions = 0;
-  };
-
   /** A run's settings, each section read by the part it belongs to. */
   struct RunSettings
   {
@@ -399,19 +391,4 @@ namespace dealmpm
     std::chrono::steady_clock::time_point last_checkpoint_time;
   };
 
-  /** Read Dimension, Number of bodies and Number of materials (pass one of
-   * two over the scene file, overrides applied). */
-  SceneShape
-  read_scene_shape(const std::string              &file,
-                   const std::vector<std::string> &overrides);
-
-  /** Apply "Section/Entry=value" overrides; throws InputError. */
-  void
-  apply_overrides(ParameterHandler               &prm,
-                  const std::vector<std::string> &overrides);
-
-  /** The dealmpm program (argument parsing, both passes, the run, error
-   * reporting); examples call it after registering their own models. */
-  int
-  run_program(int argc, char **argv);
 } // namespace dealmpm

@@ -3,7 +3,7 @@
 #include <dealmpm/base/errors.h>
 #include <dealmpm/effects/effect.h>
 #include <dealmpm/materials/material.h>
-#include <dealmpm/materials/stress_update.h>
+#include <dealmpm/transfer/stress_update.h>
 #include <dealmpm/particles/particle_set.h>
 
 #include <functional>

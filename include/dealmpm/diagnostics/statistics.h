@@ -2,7 +2,7 @@
 
 #include <dealmpm/effects/effect.h>
 #include <dealmpm/grid/background_grid.h>
-#include <dealmpm/grid/load_balance.h>
+#include <dealmpm/adaptivity/load_balance.h>
 #include <dealmpm/materials/material.h>
 #include <dealmpm/particles/particle_set.h>
 

@@ -3,7 +3,7 @@
 #include <deal.II/base/function_parser.h>
 
 #include <dealmpm/effects/effect.h>
-#include <dealmpm/effects/load_curve.h>
+#include <dealmpm/base/load_curve.h>
 
 #include <string>
 #include <vector>

@@ -3,7 +3,7 @@
 #include <deal.II/base/function_parser.h>
 
 #include <dealmpm/effects/effect_with_work.h>
-#include <dealmpm/effects/load_curve.h>
+#include <dealmpm/base/load_curve.h>
 #include <dealmpm/grid/boundary_nodes.h>
 
 #include <memory>

@@ -7,7 +7,7 @@
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/lac/la_parallel_vector.h>
 
-#include <dealmpm/effects/load_curve.h>
+#include <dealmpm/base/load_curve.h>
 #include <dealmpm/materials/material.h>
 
 #include <array>

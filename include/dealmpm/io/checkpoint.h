@@ -4,7 +4,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <dealmpm/base/scene_reader.h>
-#include <dealmpm/particles/property_layout.h>
+#include <dealmpm/base/property_layout.h>
 
 #include <string>
 #include <vector>

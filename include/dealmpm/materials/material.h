@@ -5,7 +5,7 @@
 #include <deal.II/base/tensor.h>
 
 #include <dealmpm/base/registry.h>
-#include <dealmpm/particles/property_layout.h>
+#include <dealmpm/base/property_layout.h>
 
 #include <memory>
 #include <string>

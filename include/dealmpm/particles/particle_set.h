@@ -4,7 +4,7 @@
 #include <deal.II/base/tensor.h>
 #include <deal.II/particles/particle_handler.h>
 
-#include <dealmpm/particles/property_layout.h>
+#include <dealmpm/base/property_layout.h>
 
 #include <memory>
 #include <vector>

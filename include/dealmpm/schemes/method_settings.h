@@ -3,7 +3,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <dealmpm/base/scene_reader.h>
-#include <dealmpm/schemes/particle_update.h>
+#include <dealmpm/transfer/particle_update.h>
 #include <dealmpm/schemes/update_scheme.h>
 #include <dealmpm/transfer/deformation_update.h>
 #include <dealmpm/transfer/formulation.h>

@@ -8,7 +8,7 @@
 #include <dealmpm/grid/boundary_conditions.h>
 #include <dealmpm/grid/nodal_field_set.h>
 #include <dealmpm/materials/material.h>
-#include <dealmpm/materials/stress_update.h>
+#include <dealmpm/transfer/stress_update.h>
 #include <dealmpm/particles/particle_set.h>
 #include <dealmpm/schemes/method_settings.h>
 #include <dealmpm/transfer/kernel.h>

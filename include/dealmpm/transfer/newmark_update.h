@@ -3,7 +3,7 @@
 #include <dealmpm/grid/background_grid.h>
 #include <dealmpm/grid/nodal_fields.h>
 #include <dealmpm/particles/particle_set.h>
-#include <dealmpm/schemes/particle_update.h>
+#include <dealmpm/transfer/particle_update.h>
 #include <dealmpm/transfer/stencil.h>
 #include <dealmpm/transfer/stencil_order.h>
 

@@ -1,4 +1,4 @@
-#include <dealmpm/core/simulation.h>
+#include <dealmpm/app/program.h>
 
 int
 main(int argc, char **argv)

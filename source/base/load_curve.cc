@@ -1,6 +1,6 @@
 #include <deal.II/base/utilities.h>
 
-#include <dealmpm/effects/load_curve.h>
+#include <dealmpm/base/load_curve.h>
 
 #include <algorithm>
 #include <cmath>

@@ -2,7 +2,7 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/lac/la_parallel_vector.h>
 
-#include <dealmpm/grid/adaptivity.h>
+#include <dealmpm/adaptivity/adaptivity.h>
 
 #include <algorithm>
 #include <cctype>

@@ -1,6 +1,6 @@
 #include <deal.II/base/mpi.h>
 
-#include <dealmpm/particles/split_particles.h>
+#include <dealmpm/adaptivity/split_particles.h>
 
 #include <algorithm>
 #include <array>

@@ -1,4 +1,4 @@
-#include <dealmpm/materials/stress_update.h>
+#include <dealmpm/transfer/stress_update.h>
 #include <dealmpm/transfer/stencil_order.h>
 
 namespace dealmpm

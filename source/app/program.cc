@@ -3,6 +3,7 @@
 
 #include <dealmpm/base/errors.h>
 #include <dealmpm/base/parameter_file.h>
+#include <dealmpm/app/program.h>
 #include <dealmpm/core/simulation.h>
 #include <dealmpm/study/study.h>
 
@@ -255,93 +256,6 @@ namespace dealmpm
       return signal != 0 ? 128 + signal : 0;
     }
   } // namespace
-
-  namespace
-  {
-    /** Why prm.set refused a value: what the entry's typed pattern expects,
-     * or deal.II's text (a Selection's lists its choices). */
-    std::string
-    override_mismatch(const std::exception &e, const std::string &value)
-    {
-      const std::string text = collapsed_text(e);
-      std::smatch       match;
-      if (std::regex_search(
-            text,
-            match,
-            std::regex("does not match the given pattern <(\\[.*?\\])>\\.")))
-        {
-          const std::string expected = plain_pattern(match[1], value);
-          if (!expected.empty())
-            return "expected " + expected;
-        }
-      return one_line(e);
-    }
-  } // namespace
-
-  void
-  apply_overrides(ParameterHandler               &prm,
-                  const std::vector<std::string> &overrides)
-  {
-    for (const auto &item : overrides)
-      {
-        const auto equal = item.find('=');
-        if (equal == std::string::npos)
-          throw InputError("command line: -s '" + quote_value(item) +
-                           "': expected 'Section/Entry=value'");
-        const auto path =
-          Utilities::split_string_list(item.substr(0, equal), '/');
-        if (path.empty() ||
-            std::any_of(path.begin(), path.end(), [](const std::string &p) {
-              return p.empty();
-            }))
-          throw InputError("command line: -s '" + quote_value(item) +
-                           "': expected 'Section/Entry=value'");
-        const std::string value = Utilities::trim(item.substr(equal + 1));
-        for (unsigned int i = 0; i + 1 < path.size(); ++i)
-          prm.enter_subsection(path[i]);
-        try
-          {
-            prm.set(path.back(), value);
-          }
-        catch (const std::exception &e)
-          {
-            for (unsigned int i = 0; i + 1 < path.size(); ++i)
-              prm.leave_subsection();
-            throw InputError("command line: -s '" + quote_value(item) +
-                             "': " + override_mismatch(e, value));
-          }
-        for (unsigned int i = 0; i + 1 < path.size(); ++i)
-          prm.leave_subsection();
-      }
-  }
-
-  SceneShape
-  read_scene_shape(const std::string              &file,
-                   const std::vector<std::string> &overrides)
-  {
-    ParameterHandler prm;
-    prm.declare_entry("Dimension", "2", Patterns::Integer(2, 3));
-    prm.declare_entry("Number of bodies", "1", Patterns::Integer(1, 10000));
-    prm.declare_entry("Number of materials", "1", Patterns::Integer(1, 10000));
-    prm.declare_entry("Number of FEM regions", "0", Patterns::Integer(0, 1000));
-    if (!file.empty())
-      parse_parameter_file(prm, file, true);
-    std::vector<std::string> top_level;
-    for (const auto &item : overrides)
-      for (const std::string name : {"Dimension",
-                                     "Number of bodies",
-                                     "Number of materials",
-                                     "Number of FEM regions"})
-        if (item.rfind(name + "=", 0) == 0 || item.rfind(name + " =", 0) == 0)
-          top_level.push_back(item);
-    apply_overrides(prm, top_level);
-    SceneShape shape;
-    shape.dim           = prm.get_integer("Dimension");
-    shape.n_bodies      = prm.get_integer("Number of bodies");
-    shape.n_materials   = prm.get_integer("Number of materials");
-    shape.n_fem_regions = prm.get_integer("Number of FEM regions");
-    return shape;
-  }
 
   int
   run_program(int argc, char **argv)

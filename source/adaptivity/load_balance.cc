@@ -1,6 +1,6 @@
 #include <deal.II/base/mpi.h>
 
-#include <dealmpm/grid/load_balance.h>
+#include <dealmpm/adaptivity/load_balance.h>
 
 namespace dealmpm
 {

@@ -1,4 +1,4 @@
-#include <dealmpm/particles/property_layout.h>
+#include <dealmpm/base/property_layout.h>
 
 #include <stdexcept>
 

@@ -1,7 +1,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <dealmpm/base/errors.h>
-#include <dealmpm/diagnostics/run_messages.h>
+#include <dealmpm/base/run_messages.h>
 
 #include <iomanip>
 #include <sstream>
