@@ -1,9 +1,9 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
+#include <dealmpm/app/program.h>
 #include <dealmpm/base/errors.h>
 #include <dealmpm/base/parameter_file.h>
-#include <dealmpm/app/program.h>
 #include <dealmpm/core/simulation.h>
 #include <dealmpm/study/study.h>
 

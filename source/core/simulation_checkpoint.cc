@@ -6,6 +6,7 @@
 #include <dealmpm/core/simulation.h>
 #include <dealmpm/io/checkpoint.h>
 #include <dealmpm/io/output_file.h>
+#include <dealmpm/io/region_checkpoint.h>
 
 #include <fstream>
 #include <sstream>
@@ -25,7 +26,7 @@ namespace dealmpm
     // step), all their properties included.
     particles->handler.prepare_for_serialization();
     grid.triangulation.save(folder + "/grid");
-    save_fem_regions(folder);
+    save_fem_regions(regions, folder, comm);
     // Every rank's accumulators (work is summed over the ranks).
     RunState state = run_state();
     state.effect_states_by_rank =
@@ -63,17 +64,6 @@ namespace dealmpm
     last_checkpoint_step = loop.step;
     last_checkpoint_time = std::chrono::steady_clock::now();
     return saved;
-  }
-
-  template <int dim>
-  bool
-  Simulation<dim>::checkpoint_due_by_time() const
-  {
-    const double interval = run_settings.checkpoint.wall_interval;
-    return interval > 0 &&
-           std::chrono::duration<double>(std::chrono::steady_clock::now() -
-                                         last_checkpoint_time)
-               .count() >= interval;
   }
 
   template <int dim>
@@ -144,7 +134,7 @@ namespace dealmpm
             }
         effects[e]->restore_state(state);
       }
-    restore_fem_regions(saved);
+    restore_fem_regions(regions, resumed_checkpoint, saved.n_ranks, comm);
     mass_threshold       = saved.mass_threshold;
     max_signal_rate      = saved.max_signal_rate;
     cfl_warned           = saved.cfl_warned;
@@ -182,10 +172,6 @@ namespace dealmpm
   Simulation<2>::write_checkpoint();
   template std::string
   Simulation<3>::write_checkpoint();
-  template bool
-  Simulation<2>::checkpoint_due_by_time() const;
-  template bool
-  Simulation<3>::checkpoint_due_by_time() const;
   template CheckpointInfo
   Simulation<2>::find_saved_run(SceneReader &, const std::string &);
   template CheckpointInfo

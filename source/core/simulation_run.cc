@@ -2,10 +2,11 @@
 #include <deal.II/base/utilities.h>
 
 #include <dealmpm/base/errors.h>
+#include <dealmpm/base/run_messages.h>
+#include <dealmpm/core/run_report.h>
 #include <dealmpm/core/simulation.h>
 #include <dealmpm/core/stop_signal.h>
 #include <dealmpm/diagnostics/run_guards.h>
-#include <dealmpm/base/run_messages.h>
 #include <dealmpm/grid/grid_update.h>
 #include <dealmpm/transfer/particle_to_grid.h>
 
@@ -37,32 +38,6 @@ namespace dealmpm
   }
 
   template <int dim>
-  RunError
-  Simulation<dim>::energy_growth_stop() const
-  {
-    std::vector<Tensor<1, dim>> initial_velocity;
-    for (const auto &body : bodies)
-      initial_velocity.push_back(body.velocity);
-    return energy_growth_error(*particles,
-                               materials,
-                               effects,
-                               initial_velocity,
-                               loop.accuracy.report().energy_drift,
-                               run_settings.checks.energy_growth_limit,
-                               step_and_time(loop.step, loop.time),
-                               comm);
-  }
-
-  template <int dim>
-  RunError
-  Simulation<dim>::with_last_output(const RunError &error) const
-  {
-    return RunError(std::string(error.what()) + ". The last good output (t = " +
-                    short_number(loop.output.last_time) + ") is in " +
-                    run_settings.output.directory + "/");
-  }
-
-  template <int dim>
   void
   Simulation<dim>::write_output(const double      dt,
                                 const Statistics &now,
@@ -70,23 +45,23 @@ namespace dealmpm
                                 const Progress   &progress)
   {
     TimerOutput::Scope t(*computing_timer, "output");
-    output_writer.write({*particles, materials, grid, nodal.core, regions},
-                        loop.time,
-                        loop.step,
-                        loop.output,
-                        [&](StatisticsFile &file) {
-                          file.write_row(loop.step,
-                                         loop.time,
-                                         dt,
-                                         now,
-                                         work,
-                                         loop.accuracy.report(),
-                                         loop.lost_particles,
-                                         progress.elapsed_seconds());
-                        });
+    output_writer.write(
+      {*particles, materials, grid, nodal.core, regions.list()},
+      loop.time,
+      loop.step,
+      loop.output,
+      [&](StatisticsFile &file) {
+        file.write_row(loop.step,
+                       loop.time,
+                       dt,
+                       now,
+                       work,
+                       loop.accuracy.report(),
+                       loop.lost_particles,
+                       progress.elapsed_seconds());
+      });
     // The regions' support forces are means over a row's steps.
-    for (FemRegion<dim> &region : regions)
-      region.solid->start_statistics_row();
+    regions.start_statistics_row();
   }
 
   template <int dim>
@@ -108,15 +83,6 @@ namespace dealmpm
   }
 
   template <int dim>
-  bool
-  Simulation<dim>::finished() const
-  {
-    const TimeStepping &t = run_settings.time;
-    return !(loop.time < t.end_time - 1e-9 * t.end_time) ||
-           (t.max_steps != 0 && loop.step >= t.max_steps);
-  }
-
-  template <int dim>
   void
   Simulation<dim>::take_step(const double dt, Progress &progress)
   {
@@ -132,7 +98,9 @@ namespace dealmpm
       }
     catch (const RunError &error)
       {
-        throw with_last_output(error);
+        throw with_last_output(error,
+                               loop.output.last_time,
+                               run_settings.output.directory);
       }
     loop.particle_steps += n_particles;
     if (adaptivity.enabled() && loop.step % adaptivity.step_interval == 0)
@@ -140,8 +108,9 @@ namespace dealmpm
     balance_load();
 
     const bool output_due =
-      finished() || (s.output.interval > 0 &&
-                     loop.time >= loop.next_output - 1e-9 * s.time.end_time);
+      run_settings.time.finished(loop.time, loop.step) ||
+      (s.output.interval > 0 &&
+       loop.time >= loop.next_output - 1e-9 * s.time.end_time);
     const bool energy_check_due =
       s.checks.energy_growth_limit > 0 &&
       (output_due || loop.step % energy_check_interval == 0);
@@ -154,7 +123,22 @@ namespace dealmpm
         loop.accuracy.observe(now, work);
         if (energy_check_due &&
             loop.accuracy.report().energy_drift > s.checks.energy_growth_limit)
-          throw with_last_output(energy_growth_stop());
+          {
+            std::vector<Tensor<1, dim>> initial_velocity;
+            for (const auto &body : bodies)
+              initial_velocity.push_back(body.velocity);
+            throw with_last_output(
+              energy_growth_error(*particles,
+                                  materials,
+                                  effects,
+                                  initial_velocity,
+                                  loop.accuracy.report().energy_drift,
+                                  s.checks.energy_growth_limit,
+                                  step_and_time(loop.step, loop.time),
+                                  comm),
+              loop.output.last_time,
+              s.output.directory);
+          }
       }
     loop.stepping_time +=
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
@@ -178,7 +162,7 @@ namespace dealmpm
   {
     const LoadBalanceSettings &s = run_settings.load_balance;
     if (!s.enabled || Utilities::MPI::n_mpi_processes(comm) == 1 ||
-        total_lagrangian())
+        run_settings.method.total_lagrangian())
       return;
     const bool due =
       s.repartition_interval > 0 && loop.step % s.repartition_interval == 0;
@@ -217,12 +201,14 @@ namespace dealmpm
       }
 
     double dt = 0;
-    while (!finished())
+    while (!run_settings.time.finished(loop.time, loop.step))
       {
         // mpirun passes the signal to every rank, but not at the same
         // moment: the ranks stop at the same step only if they agree, and
         // save at the same step only if they agree on the time too.
-        int flags[2] = {stop_signal(), checkpoint_due_by_time() ? 1 : 0};
+        int flags[2] = {
+          stop_signal(),
+          run_settings.checkpoint.due_by_time(last_checkpoint_time) ? 1 : 0};
         Utilities::MPI::max(ArrayView<const int>(flags, 2),
                             comm,
                             ArrayView<int>(flags, 2));
@@ -255,7 +241,13 @@ namespace dealmpm
                                                       write_checkpoint();
       }
     if (s.output.verbose)
-      print_summary();
+      {
+        computing_timer->print_summary();
+        print_run_summary(pcout,
+                          loop,
+                          grid.triangulation.n_global_active_cells(),
+                          comm);
+      }
     if (stopped_by_signal != 0)
       pcout << "dealmpm: stopped by " << signal_name(stopped_by_signal)
             << " at step " << loop.step << " (t = " << loop.time
@@ -294,43 +286,6 @@ namespace dealmpm
     if (!resumed_checkpoint.empty())
       pcout << "dealmpm: resumed from " << resumed_checkpoint << " at step "
             << loop.step << " (t = " << loop.time << ")" << std::endl;
-  }
-
-  template <int dim>
-  void
-  Simulation<dim>::print_summary() const
-  {
-    computing_timer->print_summary();
-    pcout << "dealmpm: " << loop.accuracy.report() << std::endl;
-    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
-    const double       rate =
-      loop.stepping_time > 0 ? loop.particle_steps / loop.stepping_time : 0;
-    pcout << "dealmpm: " << loop.step << " steps to t = " << loop.time << ", "
-          << std::setprecision(4) << rate / 1e6 << " M particle-steps/s on "
-          << n_ranks << " rank(s) (" << rate / 1e6 / n_ranks << " M per core)";
-    Utilities::System::MemoryStats used;
-    Utilities::System::get_memory_stats(used);
-    pcout << ", peak memory " << used.VmHWM / 1024 << " MB on rank 0";
-    if (loop.repartitions > 0)
-      pcout << ", " << static_cast<long long>(loop.repartitions)
-            << " repartition(s) for load balance";
-    if (loop.adaptations > 0)
-      pcout << ", " << static_cast<long long>(loop.adaptations)
-            << " grid adaptation(s) ("
-            << grid.triangulation.n_global_active_cells() << " cells now)";
-    if (loop.split_particles > 0)
-      pcout << ", " << static_cast<long long>(loop.split_particles)
-            << " particle(s) split";
-    if (loop.merged_particles > 0)
-      pcout << ", " << static_cast<long long>(loop.merged_particles)
-            << " particle(s) merged away";
-    if (loop.held_particles > 0)
-      pcout << ", " << static_cast<long long>(loop.held_particles)
-            << " time(s) a particle was put back on a wall";
-    if (loop.lost_particles > 0)
-      pcout << ", " << static_cast<long long>(loop.lost_particles)
-            << " particle(s) left the grid";
-    pcout << std::endl;
   }
 
   // run() instantiates the loop's other members it calls.

@@ -462,38 +462,12 @@ namespace dealmpm
         });
     }
 
-    /** The effects' potential per unit mass, for the regions' nodes. */
-    template <int dim>
-    std::function<double(const Point<dim> &)>
-    fem_potential(const StepState<dim> &s)
-    {
-      return [&s](const Point<dim> &x) {
-        return potential_energy(s.effects, 1., x);
-      };
-    }
-
     template <int dim>
     void
     fem_forces(StepState<dim> &s, const std::string &timer_section)
     {
-      TimerOutput::Scope   t(s.timer, timer_section);
-      const BodyForce<dim> body_force = [&](const Point<dim>     &X,
-                                            const Point<dim>     &x,
-                                            const Tensor<1, dim> &v,
-                                            const double          time) {
-        Tensor<1, dim> b;
-        for (const auto &effect : s.effects)
-          b += effect->body_acceleration(X, x, v, time);
-        return b;
-      };
-      for (FemRegion<dim> &region : *s.fem_regions)
-        {
-          if (!s.effects.empty())
-            region.solid->track_potential(fem_potential(s), true);
-          region.solid->compute_forces(s.time, s.dt, body_force);
-          if (region.bonded)
-            region.bonded->deposit(s.grid, s.field_set);
-        }
+      TimerOutput::Scope t(s.timer, timer_section);
+      s.fem_regions->compute_forces(s.time, s.dt, s.grid, s.field_set);
     }
 
     template <int dim>
@@ -501,16 +475,8 @@ namespace dealmpm
     fem_update(StepState<dim> &s, const std::string &timer_section)
     {
       TimerOutput::Scope t(s.timer, timer_section);
-      for (FemRegion<dim> &region : *s.fem_regions)
-        {
-          if (region.bonded)
-            region.bonded->read_back(s.grid, s.field_set);
-          if (region.contact)
-            region.contact->apply(s.grid, s.field_set, s.mass_threshold, s.dt);
-          region.solid->advance(s.time, s.dt);
-          if (!s.effects.empty())
-            region.solid->track_potential(fem_potential(s), false);
-        }
+      s.fem_regions->update(
+        s.time, s.dt, s.mass_threshold, s.grid, s.field_set);
     }
 
     template <int dim>

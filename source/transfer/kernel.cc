@@ -93,6 +93,13 @@ namespace dealmpm
     class QuadraticBSpline : public ShapeFunction<dim>
     {
     public:
+      /** Its node pattern spans three equal cells: no hanging nodes. */
+      bool
+      needs_uniform_grid() const override
+      {
+        return true;
+      }
+
       std::string
       setup(BackgroundGrid<dim> &grid) override
       {

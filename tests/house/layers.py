@@ -11,7 +11,7 @@ import sys
 
 # Lowest first; doc/design.md ("Layers") explains each floor.
 LAYERS = ["base", "grid", "particles", "materials", "transfer", "effects",
-          "fem", "schemes", "adaptivity", "diagnostics", "io", "core",
+          "fem", "adaptivity", "schemes", "diagnostics", "io", "core",
           "study", "app"]
 FLOOR = {name: i for i, name in enumerate(LAYERS)}
 INCLUDE = re.compile(r'^\s*#\s*include\s*<dealmpm/([a-z_]+)/', re.M)

@@ -50,7 +50,7 @@ namespace
     auto simulation = test::make_simulation<2>(
       scene_text("generalized_vortex.prm", more.str()));
     const Statistics end = test::run_to(*simulation, 1.);
-    EXPECT_EQ(simulation->n_lost_particles(), 0) << kernel;
+    EXPECT_EQ(simulation->run_state().lost_particles, 0) << kernel;
     return end.error_L2;
   }
 } // namespace

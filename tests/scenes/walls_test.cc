@@ -40,12 +40,13 @@ TEST(Walls, HoldTheParticlesOfKernelsWithDomains)
       while (simulation->time() < 0.22)
         simulation->advance(simulation->time_step());
       const Statistics end = simulation->statistics();
-      std::cout << "walls, " << kernel << ": " << simulation->n_held_particles()
+      std::cout << "walls, " << kernel << ": "
+                << simulation->run_state().held_particles
                 << " times a particle was put back" << std::endl;
-      EXPECT_EQ(simulation->n_lost_particles(), 0) << kernel;
+      EXPECT_EQ(simulation->run_state().lost_particles, 0) << kernel;
       EXPECT_EQ(end.n_particles, initial.n_particles) << kernel;
       EXPECT_NEAR(end.mass, initial.mass, 1e-12 * initial.mass) << kernel;
-      EXPECT_GT(simulation->n_held_particles(), 0) << kernel;
+      EXPECT_GT(simulation->run_state().held_particles, 0) << kernel;
       const Point<2> upper(0.40005, 0.142875);
       for (const auto &p : simulation->particle_set().handler)
         for (unsigned int d = 0; d < 2; ++d)

@@ -3,6 +3,8 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
 
+#include <dealmpm/adaptivity/adaptivity.h>
+#include <dealmpm/adaptivity/load_balance.h>
 #include <dealmpm/base/errors.h>
 #include <dealmpm/base/parameter_file.h>
 #include <dealmpm/core/run_state.h>
@@ -12,11 +14,9 @@
 #include <dealmpm/diagnostics/statistics.h>
 #include <dealmpm/effects/effect.h>
 #include <dealmpm/effects/effect_list.h>
-#include <dealmpm/fem/fem_region.h>
-#include <dealmpm/adaptivity/adaptivity.h>
+#include <dealmpm/fem/fem_regions.h>
 #include <dealmpm/grid/background_grid.h>
 #include <dealmpm/grid/boundary_conditions.h>
-#include <dealmpm/adaptivity/load_balance.h>
 #include <dealmpm/grid/nodal_field_set.h>
 #include <dealmpm/io/checkpoint.h>
 #include <dealmpm/io/output_settings.h>
@@ -24,7 +24,6 @@
 #include <dealmpm/io/progress.h>
 #include <dealmpm/materials/material.h>
 #include <dealmpm/materials/material_sections.h>
-#include <dealmpm/transfer/stress_update.h>
 #include <dealmpm/particles/body.h>
 #include <dealmpm/particles/particle_set.h>
 #include <dealmpm/schemes/method_settings.h>
@@ -33,6 +32,7 @@
 #include <dealmpm/schemes/update_scheme.h>
 #include <dealmpm/transfer/kernel.h>
 #include <dealmpm/transfer/mixed_cell_split.h>
+#include <dealmpm/transfer/stress_update.h>
 
 #include <chrono>
 #include <functional>
@@ -129,12 +129,6 @@ namespace dealmpm
     std::string
     write_checkpoint();
 
-    /** The checkpoint this run was resumed from, or "". */
-    const std::string &
-    resumed_from() const
-    {
-      return resumed_checkpoint;
-    }
 
     /** The CFL time step of the current state (or the fixed one). */
     double
@@ -197,26 +191,13 @@ namespace dealmpm
     const std::vector<FemRegion<dim>> &
     fem_regions() const
     {
-      return regions;
+      return regions.list();
     }
     /** The scene's shape function, set up for the grid. */
     const Kernel<dim> &
     get_kernel() const
     {
       return kernel;
-    }
-    /** Particles removed because they left the grid (all ranks). */
-    double
-    n_lost_particles() const
-    {
-      return loop.lost_particles;
-    }
-    /** Times a particle that crossed a wall was put back on it (all
-     * ranks). */
-    double
-    n_held_particles() const
-    {
-      return loop.held_particles;
     }
     TimerOutput &
     timer()
@@ -247,69 +228,32 @@ namespace dealmpm
      * count of the earlier run's files removed. */
     unsigned int
     open_output(const Statistics &initial);
-    /** Whether a checkpoint is due by wall time (this rank's clock). */
-    bool
-    checkpoint_due_by_time() const;
-    bool
-    total_lagrangian() const
-    {
-      return run_settings.method.formulation == Formulation::total_lagrangian;
-    }
-    /** Bodies with 'Initial stress = geostatic' start at rest under the
-     * uniform force field of the effects (gravity). */
+    /** Total Lagrangian's stencil at the reference positions; refuses
+     * bodies that start apart. */
     void
-    start_geostatic_bodies(SceneReader &reader);
-    /** Refuse what an effect with body fields (@p effect, contact)
-     * cannot run with: total Lagrangian, Newmark. */
+    make_reference_stencil(SceneReader &reader);
+    /** Connect the cells' particle weights and share the cells by them
+     * (unless a checkpoint on as many ranks shared them already). */
     void
-    check_body_fields(SceneReader &reader, const std::string &effect) const;
-    /** Make the scene's FEM regions and refuse what their bonded
-     * boundaries cannot run with. */
+    start_load_balance(const CheckpointInfo *saved);
+    /** The step's stages for the scene's method, and the first stable
+     * step. */
     void
-    create_fem_regions(SceneReader &reader, const SceneShape &shape);
-    /** The largest signal rate (wave speed over spacing) of the FEM
-     * regions, 0 without. Collective. */
-    double
-    fem_signal_rate() const;
-    /** Add the regions' mass, momentum and energies to @p s (computed
-     * for the particles), with each region's energies as columns
-     * fem<N>_kinetic_energy, _strain_energy, _gravitational_energy. */
-    void
-    add_fem_statistics(Statistics &s) const;
-    /** Work of the regions' tractions and prescribed motions (this
-     * rank's nodes). */
-    double
-    fem_external_work() const;
-    /** Each rank's part of each region's state into the checkpoint
-     * @p folder (fem_region_N.<rank>.txt). Collective. */
-    void
-    save_fem_regions(const std::string &folder) const;
-    /** The regions' state from the checkpoint resumed from, written on
-     * @p saved's number of ranks. */
-    void
-    restore_fem_regions(const CheckpointInfo &saved);
-    /** Refuse what total Lagrangian cannot do (fluids, bodies that start
-     * apart) and make its reference stencil. */
-    void
-    check_total_lagrangian(SceneReader &reader);
+    choose_stages();
     void
     relocate_particles();
     /** After the cells changed (refinement or repartition): rebuild every
      * part that keeps grid data, in change_grid()'s order. */
     void
     rebuild_after_grid_change();
-    /** Refuse what adaptivity cannot run with, then adapt the grid to the
-     * initial particles, a level per round, filling the bodies again on
-     * each new grid. */
+    /** Adapt the grid to the initial particles, a level per round, filling
+     * the bodies again on each new grid. */
     void
     start_adaptivity(SceneReader &reader);
     /** Flag the cells by the criteria and change the grid if any cell
      * changes; returns whether one did. Collective. */
     bool
     change_grid_to_criteria();
-    /** A timer section, or nothing while the timer is not made yet. */
-    std::unique_ptr<TimerOutput::Scope>
-    timed(const std::string &section);
     /** In the loop: repartition when the particle imbalance passes the
      * limit (checked every few steps). */
     void
@@ -317,8 +261,6 @@ namespace dealmpm
     /** One step of the loop with its checks and, when due, an output. */
     void
     take_step(const double dt, Progress &progress);
-    bool
-    finished() const;
     /** The output of the current state (statistics @p now, work @p work
      * of the effects), through the output writer; collective. */
     void
@@ -332,15 +274,9 @@ namespace dealmpm
     /** Stop on an unstable fixed step, warn once on a large one. */
     void
     guard_fixed_time_step(const double dt);
-    /** The stop of a run whose energy grew past the limit (collective). */
-    RunError
-    energy_growth_stop() const;
-    RunError
-    with_last_output(const RunError &error) const;
+    /** The opening lines of a run: its size and where its output goes. */
     void
     print_start(const Statistics &initial, const unsigned int n_removed) const;
-    void
-    print_summary() const;
 
     /** Steps between energy checks besides the outputs: a statistics sweep
      * costs about a fifth of a step. */
@@ -360,7 +296,7 @@ namespace dealmpm
     std::vector<std::string>                    effect_names;
     std::vector<Body<dim>>                      bodies;
     std::unique_ptr<ParticleSet<dim>>           particles;
-    std::vector<FemRegion<dim>>                 regions;
+    FemRegions<dim>                             regions;
     /** The cells' particle weights on the triangulation's weight signal;
      * after particles, so that it is disconnected before they go. */
     boost::signals2::scoped_connection particle_weights;

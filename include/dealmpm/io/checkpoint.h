@@ -3,9 +3,10 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
-#include <dealmpm/base/scene_reader.h>
 #include <dealmpm/base/property_layout.h>
+#include <dealmpm/base/scene_reader.h>
 
+#include <chrono>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,16 @@ namespace dealmpm
      * Directory is @p output_directory/checkpoints. */
     static CheckpointSettings
     read(SceneReader &reader, const std::string &output_directory);
+
+    /** Whether a checkpoint is due by wall time, the last one taken (or
+     * the run started) at @p last (this rank's clock). */
+    bool
+    due_by_time(const std::chrono::steady_clock::time_point last) const
+    {
+      return wall_interval > 0 && std::chrono::duration<double>(
+                                    std::chrono::steady_clock::now() - last)
+                                      .count() >= wall_interval;
+    }
   };
 
   /**

@@ -3,10 +3,10 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <dealmpm/base/scene_reader.h>
-#include <dealmpm/transfer/particle_update.h>
 #include <dealmpm/schemes/update_scheme.h>
 #include <dealmpm/transfer/deformation_update.h>
 #include <dealmpm/transfer/formulation.h>
+#include <dealmpm/transfer/particle_update.h>
 
 #include <string>
 
@@ -46,5 +46,11 @@ namespace dealmpm
     /** Read and check the section (the reader at the top level). */
     static MethodSettings
     read(SceneReader &reader);
+
+    bool
+    total_lagrangian() const
+    {
+      return formulation == Formulation::total_lagrangian;
+    }
   };
 } // namespace dealmpm

@@ -3,17 +3,17 @@
 #include <deal.II/base/timer.h>
 
 #include <dealmpm/effects/effect.h>
-#include <dealmpm/fem/fem_region.h>
+#include <dealmpm/fem/fem_regions.h>
 #include <dealmpm/grid/background_grid.h>
 #include <dealmpm/grid/boundary_conditions.h>
 #include <dealmpm/grid/nodal_field_set.h>
 #include <dealmpm/materials/material.h>
-#include <dealmpm/transfer/stress_update.h>
 #include <dealmpm/particles/particle_set.h>
 #include <dealmpm/schemes/method_settings.h>
 #include <dealmpm/transfer/kernel.h>
 #include <dealmpm/transfer/mixed_cell_split.h>
 #include <dealmpm/transfer/stencil.h>
+#include <dealmpm/transfer/stress_update.h>
 
 #include <memory>
 #include <string>
@@ -93,7 +93,7 @@ namespace dealmpm
      * stiffness, or nullptr when the scene has none or turns it off. */
     MixedCellSplit<dim> *mixed_cells = nullptr;
     /** The scene's FEM regions, or nullptr when it has none. */
-    std::vector<FemRegion<dim>> *fem_regions = nullptr;
+    FemRegions<dim> *fem_regions = nullptr;
     /** Some particle left its cell in G2P (they are relocated after the
      * step). */
     bool left_cell = false;

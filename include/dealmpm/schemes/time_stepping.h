@@ -30,5 +30,13 @@ namespace dealmpm
     /** Read and check the section (the reader at the top level). */
     static TimeStepping
     read(SceneReader &reader);
+
+    /** Whether a run at @p time after @p step steps is done. */
+    bool
+    finished(const double time, const unsigned int step) const
+    {
+      return !(time < end_time - 1e-9 * end_time) ||
+             (max_steps != 0 && step >= max_steps);
+    }
   };
 } // namespace dealmpm

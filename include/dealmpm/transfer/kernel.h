@@ -35,6 +35,14 @@ namespace dealmpm
                     const ParticleSet<dim>    &particles,
                     Stencil<dim>              &stencil) const = 0;
 
+    /** Whether it needs a grid of equal cells (then adaptivity, whose
+     * refined cells make hanging nodes, cannot run with it). */
+    virtual bool
+    needs_uniform_grid() const
+    {
+      return false;
+    }
+
     /** Per-particle fields it stores (GIMP and CPDI: the particle domain's
      * initial half-lengths, "domain_half_length"). */
     virtual std::vector<FieldDescription>

@@ -1,0 +1,46 @@
+#pragma once
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
+
+#include <dealmpm/base/errors.h>
+#include <dealmpm/base/run_messages.h>
+#include <dealmpm/core/run_state.h>
+
+#include <memory>
+#include <string>
+
+namespace dealmpm
+{
+  /** A timer section of @p timer, or nothing while there is no timer yet
+   * (during construction). */
+  inline std::unique_ptr<TimerOutput::Scope>
+  timed(TimerOutput *timer, const std::string &section)
+  {
+    return timer != nullptr ?
+             std::make_unique<TimerOutput::Scope>(*timer, section) :
+             nullptr;
+  }
+
+  /** @p error with where the last good output (at @p last_output_time)
+   * is. */
+  inline RunError
+  with_last_output(const RunError    &error,
+                   const double       last_output_time,
+                   const std::string &directory)
+  {
+    return RunError(std::string(error.what()) + ". The last good output (t = " +
+                    short_number(last_output_time) + ") is in " + directory +
+                    "/");
+  }
+
+  /** The closing line of a run: steps, particle-steps per second per core,
+   * peak memory, and the counts of what happened to the grid and the
+   * particles on the way (collective). */
+  void
+  print_run_summary(ConditionalOStream      &out,
+                    const RunState          &loop,
+                    const unsigned long long n_active_cells,
+                    const MPI_Comm           comm);
+} // namespace dealmpm

@@ -1,0 +1,45 @@
+#include <deal.II/base/utilities.h>
+
+#include <dealmpm/core/run_report.h>
+
+#include <iomanip>
+
+namespace dealmpm
+{
+  void
+  print_run_summary(ConditionalOStream      &pcout,
+                    const RunState          &loop,
+                    const unsigned long long n_active_cells,
+                    const MPI_Comm           comm)
+  {
+    pcout << "dealmpm: " << loop.accuracy.report() << std::endl;
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+    const double       rate =
+      loop.stepping_time > 0 ? loop.particle_steps / loop.stepping_time : 0;
+    pcout << "dealmpm: " << loop.step << " steps to t = " << loop.time << ", "
+          << std::setprecision(4) << rate / 1e6 << " M particle-steps/s on "
+          << n_ranks << " rank(s) (" << rate / 1e6 / n_ranks << " M per core)";
+    Utilities::System::MemoryStats used;
+    Utilities::System::get_memory_stats(used);
+    pcout << ", peak memory " << used.VmHWM / 1024 << " MB on rank 0";
+    if (loop.repartitions > 0)
+      pcout << ", " << static_cast<long long>(loop.repartitions)
+            << " repartition(s) for load balance";
+    if (loop.adaptations > 0)
+      pcout << ", " << static_cast<long long>(loop.adaptations)
+            << " grid adaptation(s) (" << n_active_cells << " cells now)";
+    if (loop.split_particles > 0)
+      pcout << ", " << static_cast<long long>(loop.split_particles)
+            << " particle(s) split";
+    if (loop.merged_particles > 0)
+      pcout << ", " << static_cast<long long>(loop.merged_particles)
+            << " particle(s) merged away";
+    if (loop.held_particles > 0)
+      pcout << ", " << static_cast<long long>(loop.held_particles)
+            << " time(s) a particle was put back on a wall";
+    if (loop.lost_particles > 0)
+      pcout << ", " << static_cast<long long>(loop.lost_particles)
+            << " particle(s) left the grid";
+    pcout << std::endl;
+  }
+} // namespace dealmpm

@@ -1,0 +1,180 @@
+#include <deal.II/base/mpi.h>
+
+#include <dealmpm/adaptivity/split_particles.h>
+#include <dealmpm/base/errors.h>
+#include <dealmpm/base/run_messages.h>
+#include <dealmpm/core/run_report.h>
+#include <dealmpm/core/simulation.h>
+
+#include <algorithm>
+
+// Changes of the background grid during a run: refinement and coarsening
+// to the adaptivity criteria (adaptivity/adaptivity.h), repartitions for
+// load balance, and the ordered rebuild of what keeps grid data.
+namespace dealmpm
+{
+  template <int dim>
+  void
+  Simulation<dim>::start_adaptivity(SceneReader &reader)
+  {
+    // A resumed run has its adapted grid from the checkpoint.
+    if (!resumed_checkpoint.empty())
+      return;
+    // One level per round (the particles criterion refines only the cells
+    // that hold particles now); after each, the bodies are filled again on
+    // the new grid: particles made in their cells with the body's and the
+    // effects' exact initial state, where split parts would copy their
+    // parent's.
+    for (unsigned int round = 0; round <= adaptivity.max_level; ++round)
+      {
+        if (!change_grid_to_criteria())
+          break;
+        particles.reset();
+        create_particles(reader, nullptr);
+      }
+    loop.adaptations = 0;
+  }
+
+  template <int dim>
+  bool
+  Simulation<dim>::adapt_grid()
+  {
+    const bool changed = change_grid_to_criteria();
+    if (changed)
+      ++loop.adaptations;
+    // Also on an unchanged grid: particles may have moved into finer cells.
+    if (adaptivity.split)
+      {
+        const auto t = timed(computing_timer.get(), "adaptivity: split");
+        loop.split_particles +=
+          split_particles(grid, *particles, adaptivity.particles_per_direction);
+      }
+    return changed;
+  }
+
+  template <int dim>
+  bool
+  Simulation<dim>::change_grid_to_criteria()
+  {
+    bool changed = false;
+    {
+      const auto t = timed(computing_timer.get(), "adaptivity: criteria");
+      const std::vector<int> levels =
+        target_levels(adaptivity,
+                      AdaptivityContext<dim>{grid,
+                                             *particles,
+                                             adaptivity.min_level,
+                                             adaptivity.max_level,
+                                             comm});
+      if (flag_cells(grid, levels, adaptivity.max_cells) && !cell_limit_warned)
+        {
+          pcout << "warning: " << step_and_time(loop.step, loop.time)
+                << ": no cell refined: the grid would have more than "
+                   "'Adaptivity/Maximum cells' = "
+                << adaptivity.max_cells << " cells" << std::endl;
+          cell_limit_warned = true;
+        }
+      // Coarsening flags of incomplete families go, and the level rule
+      // may add refinement: count what will change.
+      grid.triangulation.prepare_coarsening_and_refinement();
+      double flagged = 0;
+      for (const GridCell<dim> &c : grid.cells)
+        flagged += c.cell->refine_flag_set() || c.cell->coarsen_flag_set();
+      changed = Utilities::MPI::sum(flagged, comm) > 0;
+    }
+    if (changed)
+      change_grid([](Triangulation<dim> &) {});
+    return changed;
+  }
+
+  template <int dim>
+  void
+  Simulation<dim>::change_grid(
+    const std::function<void(Triangulation<dim> &)> &set_flags)
+  {
+    const auto t = timed(computing_timer.get(), "grid change");
+    if (run_settings.method.total_lagrangian())
+      throw RunError(step_and_time(loop.step, loop.time) +
+                     ": the grid cannot change under 'MPM/Formulation = total "
+                     "Lagrangian': its stencil belongs to the reference grid");
+    set_flags(grid.triangulation);
+    grid.triangulation.prepare_coarsening_and_refinement();
+    particles->handler.prepare_for_coarsening_and_refinement();
+    grid.triangulation.execute_coarsening_and_refinement();
+    particles->handler.unpack_after_coarsening_and_refinement();
+    rebuild_after_grid_change();
+  }
+
+  template <int dim>
+  void
+  Simulation<dim>::repartition()
+  {
+    if (Utilities::MPI::n_mpi_processes(comm) == 1)
+      return;
+    // Total Lagrangian's reference stencil holds local node indices of the
+    // grid it was made on.
+    if (run_settings.method.total_lagrangian() && stencil.reference)
+      throw RunError(step_and_time(loop.step, loop.time) +
+                     ": the grid cannot be repartitioned under 'MPM/"
+                     "Formulation = total Lagrangian' once its reference "
+                     "stencil is made");
+    particles->handler.prepare_for_coarsening_and_refinement();
+    grid.triangulation.repartition();
+    particles->handler.unpack_after_coarsening_and_refinement();
+    rebuild_after_grid_change();
+    ++loop.repartitions;
+  }
+
+  template <int dim>
+  void
+  Simulation<dim>::rebuild_after_grid_change()
+  {
+    // The documented order: the grid's own data, then what is cached from
+    // it (the shape function's tables, the boundary nodes, the nodal
+    // vectors); the stencil is made anew by every step.
+    grid.setup();
+    const std::string problem = kernel.rebuild(grid);
+    if (!problem.empty())
+      throw RunError(step_and_time(loop.step, loop.time) +
+                     ": after the grid changed, 'MPM/Shape function' = '" +
+                     kernel.name() + "' needs " + problem);
+    boundary_conditions.rebuild(grid);
+    for (const auto &effect : effects)
+      effect->grid_changed(grid);
+    regions.grid_changed(grid);
+    nodal.reinit(grid.partitioner, bodies.size());
+    // Smaller cells, smaller stable step.
+    particle_check = check_particles(grid,
+                                     materials,
+                                     *particles,
+                                     run_settings.method.total_lagrangian());
+    max_signal_rate =
+      std::max(Utilities::MPI::max(particle_check.max_signal_rate, comm),
+               regions.signal_rate());
+  }
+
+  template void
+  Simulation<2>::change_grid(const std::function<void(Triangulation<2> &)> &);
+  template void
+  Simulation<3>::change_grid(const std::function<void(Triangulation<3> &)> &);
+  template void
+  Simulation<2>::repartition();
+  template void
+  Simulation<3>::repartition();
+  template void
+  Simulation<2>::rebuild_after_grid_change();
+  template void
+  Simulation<3>::rebuild_after_grid_change();
+  template void
+  Simulation<2>::start_adaptivity(SceneReader &);
+  template void
+  Simulation<3>::start_adaptivity(SceneReader &);
+  template bool
+  Simulation<2>::change_grid_to_criteria();
+  template bool
+  Simulation<3>::change_grid_to_criteria();
+  template bool
+  Simulation<2>::adapt_grid();
+  template bool
+  Simulation<3>::adapt_grid();
+} // namespace dealmpm

@@ -1,0 +1,320 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+
+#include <dealmpm/base/errors.h>
+#include <dealmpm/base/run_messages.h>
+#include <dealmpm/core/run_report.h>
+#include <dealmpm/core/simulation.h>
+#include <dealmpm/core/stop_signal.h>
+#include <dealmpm/diagnostics/region_totals.h>
+#include <dealmpm/diagnostics/run_guards.h>
+#include <dealmpm/grid/grid_update.h>
+#include <dealmpm/io/progress.h>
+#include <dealmpm/materials/geostatic_start.h>
+#include <dealmpm/particles/fill_bodies.h>
+#include <dealmpm/particles/hold_at_walls.h>
+#include <dealmpm/schemes/compatibility.h>
+#include <dealmpm/transfer/grid_to_particle.h>
+#include <dealmpm/transfer/particle_to_grid.h>
+#include <dealmpm/transfer/reference_stencil.h>
+#include <dealmpm/transfer/stress_update.h>
+
+#include <algorithm>
+#include <chrono>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+
+// Building a run from its scene: the entries, the settings and parts read,
+// the grid, the particles and the step's stages. The constructor that
+// calls these, and the step, are in simulation.cc.
+namespace dealmpm
+{
+
+  template <int dim>
+  void
+  Simulation<dim>::declare_parameters(ParameterHandler &prm,
+                                      const SceneShape &shape)
+  {
+    prm.declare_entry("Dimension",
+                      "2",
+                      Patterns::Integer(2, 3),
+                      "2 (plane strain) or 3.");
+    prm.declare_entry(
+      "Number of bodies",
+      "1",
+      Patterns::Integer(1, 10000),
+      "How many 'Body N' sections the scene has (N = 1, 2, ...).");
+    prm.declare_entry("Number of materials",
+                      "1",
+                      Patterns::Integer(1, 10000),
+                      "How many 'Material N' sections the scene has.");
+
+    BackgroundGrid<dim>::declare_parameters(prm);
+    BoundaryConditions<dim>::declare_parameters(prm);
+    for (unsigned int b = 1; b <= shape.n_bodies; ++b)
+      {
+        prm.enter_subsection("Body " + std::to_string(b));
+        Body<dim>::declare_parameters(prm);
+        prm.leave_subsection();
+      }
+    declare_material_sections<dim>(prm, shape.n_materials);
+    FemRegions<dim>::declare_parameters(prm, shape.n_fem_regions);
+    declare_effect_parameters<dim>(prm);
+    TimeStepping::declare_parameters(prm);
+    MethodSettings::declare_parameters(prm);
+    CheckSettings::declare_parameters(prm);
+    OutputSettings::declare_parameters(prm);
+    LoadBalanceSettings::declare_parameters(prm);
+    CheckpointSettings::declare_parameters(prm);
+    AdaptivitySettings<dim>::declare_parameters(prm);
+  }
+
+  template <int dim>
+  void
+  Simulation<dim>::start_load_balance(const CheckpointInfo *saved)
+  {
+    particle_weights =
+      connect_particle_weights(grid.triangulation,
+                               particles->handler,
+                               run_settings.load_balance.particle_weight);
+    // The cells were shared by count (a compact body sat on few ranks), or
+    // a saved run's were shared among another number of ranks.
+    if (saved == nullptr ||
+        saved->n_ranks != Utilities::MPI::n_mpi_processes(comm))
+      repartition();
+  }
+
+  template <int dim>
+  void
+  Simulation<dim>::choose_stages()
+  {
+    if (!run_settings.method.total_lagrangian() &&
+        run_settings.method.split_mixed_cells)
+      {
+        mixed_cells = std::make_unique<MixedCellSplit<dim>>(materials);
+        if (!mixed_cells->needed())
+          mixed_cells.reset();
+      }
+    stages         = stages_of<dim>(run_settings.method.scheme,
+                            mixed_cells != nullptr,
+                            run_settings.method.formulation,
+                            run_settings.method.particle_update.newmark,
+                            !regions.empty());
+    particle_check = check_particles(grid,
+                                     materials,
+                                     *particles,
+                                     run_settings.method.total_lagrangian());
+    max_signal_rate =
+      std::max(Utilities::MPI::max(particle_check.max_signal_rate, comm),
+               regions.signal_rate());
+  }
+
+  template <int dim>
+  void
+  Simulation<dim>::read_scene(SceneReader &reader, const SceneShape &shape)
+  {
+    run_settings.time         = TimeStepping::read(reader);
+    run_settings.method       = MethodSettings::read(reader);
+    run_settings.checks       = CheckSettings::read(reader);
+    run_settings.output       = OutputSettings::read(reader);
+    run_settings.load_balance = LoadBalanceSettings::read(reader);
+    run_settings.checkpoint =
+      CheckpointSettings::read(reader, run_settings.output.directory);
+    adaptivity = AdaptivitySettings<dim>::read(reader);
+    {
+      MaterialSections<dim> read =
+        read_material_sections<dim>(reader, shape.n_materials);
+      EffectList<dim> listed = read_effects(reader, read);
+      materials              = std::move(read.materials);
+      material_models        = std::move(read.models);
+      effects                = std::move(listed.effects);
+      effect_names           = std::move(listed.names);
+    }
+    for (unsigned int b = 1; b <= shape.n_bodies; ++b)
+      {
+        SectionScope section(reader, "Body " + std::to_string(b));
+        bodies.push_back(Body<dim>::read(reader, shape.n_materials));
+      }
+    check_compatibility<dim>(reader,
+                             {run_settings.method,
+                              adaptivity,
+                              materials,
+                              material_models,
+                              effects,
+                              effect_names,
+                              bodies,
+                              shape.n_fem_regions});
+  }
+
+  template <int dim>
+  void
+  Simulation<dim>::build_grid(SceneReader &reader, const CheckpointInfo *saved)
+  {
+    SavedGrid saved_grid;
+    if (saved != nullptr)
+      saved_grid = {resumed_checkpoint + "/grid", saved->coarse_grid};
+    grid.create(
+      reader,
+      [&](const GridSize<dim> &size) {
+        memory = check_memory(reader.file_name(),
+                              estimate_memory(size, bodies),
+                              run_settings.checks.memory_limit,
+                              comm);
+      },
+      saved != nullptr ? &saved_grid : nullptr);
+    const std::string problem =
+      kernel.setup(run_settings.method.shape_function, grid);
+    if (!problem.empty())
+      {
+        SectionScope mpm(reader, "MPM");
+        reader.fail("Shape function", problem);
+      }
+    boundary_conditions.setup(grid,
+                              BoundaryConditions<dim>::read(
+                                reader, grid.triangulation.get_boundary_ids()));
+    for (unsigned int e = 0; e < effects.size(); ++e)
+      {
+        SectionScope section(reader, section_title(effect_names[e]));
+        effects[e]->setup({grid,
+                           boundary_conditions,
+                           static_cast<unsigned int>(bodies.size()),
+                           bodies},
+                          reader);
+        if (effects[e]->wants_pic() && run_settings.method.flip_fraction > 0 &&
+            !run_settings.method.apic)
+          pcout << "warning: " << reader.file_name() << ": '" << effect_names[e]
+                << "' is reliable only when the particles take the grid's "
+                   "velocity: set 'MPM/Velocity update = PIC' (under FLIP "
+                   "the particles' own velocities ring, and friction that "
+                   "should hold lets bodies creep; see README, Effects)"
+                << std::endl;
+      }
+  }
+
+  template <int dim>
+  void
+  Simulation<dim>::create_particles(SceneReader          &reader,
+                                    const CheckpointInfo *saved)
+  {
+    std::vector<std::vector<FieldDescription>> internal;
+    for (const auto &m : materials)
+      internal.push_back(m->internal_variables());
+    std::vector<FieldDescription> method_fields = kernel.particle_fields();
+    if (run_settings.method.apic)
+      method_fields.push_back({"apic_B", dim * dim});
+    if (run_settings.method.particle_update.newmark)
+      method_fields.push_back({"acceleration", dim});
+    std::vector<FieldDescription> effect_fields;
+    for (const auto &effect : effects)
+      for (const FieldDescription &f : effect->particle_fields())
+        effect_fields.push_back(f);
+    particles = std::make_unique<ParticleSet<dim>>(grid.triangulation,
+                                                   *grid.mapping,
+                                                   material_models,
+                                                   internal,
+                                                   method_fields,
+                                                   effect_fields);
+    particles->handler.signals.particle_lost.connect(
+      [this](const typename Particles::ParticleIterator<dim> &p,
+             const typename Triangulation<dim>::active_cell_iterator &) {
+        lost_this_step.emplace_back(p->get_id(), p->get_location());
+      });
+    if (saved != nullptr)
+      {
+        // Each particle's doubles are read back as they were written.
+        if (saved->particle_layout != layout_description(particles->layout))
+          throw InputError(
+            resumed_checkpoint +
+            ": the particles' properties differ from this run's (the "
+            "checkpoint was written by another version of dealmpm)");
+        particles->handler.deserialize();
+        return;
+      }
+
+    std::vector<double>              densities;
+    std::vector<std::vector<double>> initial;
+    for (unsigned int m = 0; m < materials.size(); ++m)
+      {
+        densities.push_back(materials[m]->density);
+        initial.emplace_back(particles->n_internal[m], 0.);
+        materials[m]->initialize_internal_variables(
+          make_array_view(initial.back()));
+      }
+    fill_bodies(reader, bodies, densities, initial, grid, *particles);
+    if (!effects.empty())
+      {
+        for (const auto &effect : effects)
+          effect->initialize_particles(*particles);
+        // Total Lagrangian keeps each particle in the cell of its reference
+        // position, where an effect's initial state may have moved it.
+        if (!run_settings.method.total_lagrangian())
+          particles->handler.sort_particles_into_subdomains_and_cells();
+      }
+    start_geostatic_bodies(reader,
+                           bodies,
+                           materials,
+                           uniform_acceleration(effects),
+                           *particles,
+                           comm);
+    const Statistics s = statistics();
+    mass_threshold =
+      run_settings.method.relative_mass_threshold * s.mass / s.n_particles;
+  }
+
+  template <int dim>
+  void
+  Simulation<dim>::make_reference_stencil(SceneReader &reader)
+  {
+    SectionScope mpm(reader, "MPM");
+    compute_reference_stencil(
+      grid, kernel, *particles, run_settings.method.apic, stencil);
+    if (Utilities::MPI::logical_or(stencil.failed, comm))
+      reader.fail("Shape function",
+                  "a shape function whose stencil can be made at the "
+                  "reference positions (" +
+                    first_message(stencil.failure, comm) + ")");
+    const auto apart = bodies_apart(grid, *particles, stencil, bodies.size());
+    if (apart.first != apart.second)
+      reader.fail(
+        "Formulation",
+        "'updated Lagrangian' for bodies that start apart: bodies " +
+          std::to_string(apart.first + 1) + " and " +
+          std::to_string(apart.second + 1) +
+          " share no grid node, and total Lagrangian has no contact between "
+          "them (they would pass through each other)");
+    particle_to_grid(grid, *particles, stencil, nodal.core, true, false);
+    const std::set<types::boundary_id> untouched =
+      boundary_conditions.walls_without_mass(grid,
+                                             nodal.core.mass,
+                                             mass_threshold);
+    if (!untouched.empty())
+      {
+        std::string ids;
+        for (const types::boundary_id id : untouched)
+          ids += (ids.empty() ? "" : ", ") + std::to_string(id);
+        pcout << "warning: " << reader.file_name()
+              << ": no body touches the wall(s) of boundary id(s) " << ids
+              << " at the start; under 'MPM/Formulation = total Lagrangian' a "
+                 "wall holds only the material that starts on it, and a body "
+                 "reaching it would pass through"
+              << std::endl;
+      }
+  }
+
+#define DEALMPM_INSTANTIATE(dim)                                             \
+  template void Simulation<dim>::declare_parameters(ParameterHandler &,      \
+                                                    const SceneShape &);     \
+  template void Simulation<dim>::start_load_balance(const CheckpointInfo *); \
+  template void Simulation<dim>::choose_stages();                            \
+  template void Simulation<dim>::read_scene(SceneReader &,                   \
+                                            const SceneShape &);             \
+  template void Simulation<dim>::build_grid(SceneReader &,                   \
+                                            const CheckpointInfo *);         \
+  template void Simulation<dim>::create_particles(SceneReader &,             \
+                                                  const CheckpointInfo *);   \
+  template void Simulation<dim>::make_reference_stencil(SceneReader &);
+  DEALMPM_INSTANTIATE(2)
+  DEALMPM_INSTANTIATE(3)
+#undef DEALMPM_INSTANTIATE
+} // namespace dealmpm

@@ -1,0 +1,239 @@
+#include <deal.II/base/mpi.h>
+
+#include <dealmpm/fem/fem_regions.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <sstream>
+#include <utility>
+
+namespace dealmpm
+{
+  template <int dim>
+  void
+  FemRegions<dim>::declare_parameters(ParameterHandler  &prm,
+                                      const unsigned int n_regions)
+  {
+    prm.declare_entry("Number of FEM regions",
+                      "0",
+                      Patterns::Integer(0, 1000),
+                      "How many 'FEM region N' sections the scene has: "
+                      "finite element solids beside the MPM bodies.");
+    for (unsigned int r = 1; r <= n_regions; ++r)
+      {
+        prm.enter_subsection("FEM region " + std::to_string(r));
+        FemRegionSettings<dim>::declare_parameters(prm);
+        prm.leave_subsection();
+      }
+  }
+
+  template <int dim>
+  std::function<double(const Point<dim> &)>
+  FemRegions<dim>::potential() const
+  {
+    return [this](const Point<dim> &x) {
+      return dealmpm::potential_energy(effects, 1., x);
+    };
+  }
+
+  template <int dim>
+  void
+  FemRegions<dim>::make(
+    SceneReader                                       &reader,
+    const unsigned int                                 n_regions,
+    const std::vector<std::unique_ptr<Material<dim>>> &materials,
+    const unsigned int                                 n_bodies,
+    const BackgroundGrid<dim>                         &grid,
+    const bool                                         apic)
+  {
+    for (unsigned int r = 0; r < n_regions; ++r)
+      regions.push_back(
+        make_fem_region<dim>(reader, r, materials, n_bodies, grid));
+    for (FemRegion<dim> &region : regions)
+      region.solid->track_potential(potential(), false);
+    for (FemRegion<dim> &region : regions)
+      if (region.bonded && apic)
+        region.bonded->use_affine();
+  }
+
+  template <int dim>
+  void
+  FemRegions<dim>::compute_forces(const double               time,
+                                  const double               dt,
+                                  const BackgroundGrid<dim> &grid,
+                                  NodalFieldSet<dim>        &fields)
+  {
+    const BodyForce<dim> body_force = [&](const Point<dim>     &X,
+                                          const Point<dim>     &x,
+                                          const Tensor<1, dim> &v,
+                                          const double          t) {
+      Tensor<1, dim> b;
+      for (const auto &effect : effects)
+        b += effect->body_acceleration(X, x, v, t);
+      return b;
+    };
+    for (FemRegion<dim> &region : regions)
+      {
+        if (!effects.empty())
+          region.solid->track_potential(potential(), true);
+        region.solid->compute_forces(time, dt, body_force);
+        if (region.bonded)
+          region.bonded->deposit(grid, fields);
+      }
+  }
+
+  template <int dim>
+  void
+  FemRegions<dim>::update(const double               time,
+                          const double               dt,
+                          const double               mass_threshold,
+                          const BackgroundGrid<dim> &grid,
+                          NodalFieldSet<dim>        &fields)
+  {
+    for (FemRegion<dim> &region : regions)
+      {
+        if (region.bonded)
+          region.bonded->read_back(grid, fields);
+        if (region.contact)
+          region.contact->apply(grid, fields, mass_threshold, dt);
+        region.solid->advance(time, dt);
+        if (!effects.empty())
+          region.solid->track_potential(potential(), false);
+      }
+  }
+
+  template <int dim>
+  double
+  FemRegions<dim>::signal_rate() const
+  {
+    double rate = 0;
+    for (const FemRegion<dim> &region : regions)
+      rate = std::max(rate, region.solid->signal_rate());
+    return rate;
+  }
+
+  template <int dim>
+  std::vector<RegionTotals<dim>>
+  FemRegions<dim>::totals(const MPI_Comm comm) const
+  {
+    std::vector<RegionTotals<dim>> all(regions.size());
+    for (unsigned int r = 0; r < regions.size(); ++r)
+      {
+        const SolidRegion<dim> &solid = *regions[r].solid;
+        RegionTotals<dim>      &t     = all[r];
+        t.mass                        = solid.total_mass();
+        t.momentum                    = solid.momentum();
+        t.kinetic_energy              = solid.kinetic_energy();
+        t.strain_energy               = solid.strain_energy();
+        t.gravitational_energy        = solid.potential_energy(potential());
+        t.dissipates                  = solid.get_material().dissipates();
+        if (t.dissipates)
+          t.dissipated_work = solid.dissipated_work();
+        // The solid's sums are over the ranks already; the contact's not.
+        const std::string prefix = "fem" + std::to_string(r + 1) + "_";
+        const double      friction =
+          regions[r].contact ?
+                 Utilities::MPI::sum(regions[r].contact->friction_work(), comm) :
+                 0.;
+        for (const auto &[name, value] :
+             {std::pair<std::string, double>{"kinetic_energy",
+                                             t.kinetic_energy},
+              {"strain_energy", t.strain_energy},
+              {"gravitational_energy", t.gravitational_energy},
+              {"friction_work", friction}})
+          {
+            t.columns.push_back(prefix + name);
+            t.values.push_back(value);
+          }
+        if (solid.has_supports())
+          {
+            const Tensor<1, dim> R = solid.mean_support_force();
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                t.columns.push_back(prefix + "support_force_" +
+                                    std::string(1, "xyz"[d]));
+                t.values.push_back(R[d]);
+              }
+          }
+      }
+    return all;
+  }
+
+  template <int dim>
+  double
+  FemRegions<dim>::external_work() const
+  {
+    double work = 0;
+    for (const FemRegion<dim> &region : regions)
+      {
+        work += region.solid->external_work();
+        if (region.contact)
+          work += region.contact->work();
+      }
+    return work;
+  }
+
+  template <int dim>
+  void
+  FemRegions<dim>::start_statistics_row()
+  {
+    for (FemRegion<dim> &region : regions)
+      region.solid->start_statistics_row();
+  }
+
+  template <int dim>
+  std::string
+  FemRegions<dim>::saved_state(const unsigned int r) const
+  {
+    std::ostringstream text;
+    text << regions[r].solid->save_state();
+    if (regions[r].contact)
+      text << "contact " << std::hexfloat << regions[r].contact->work() << ' '
+           << regions[r].contact->friction_work() << '\n';
+    return text.str();
+  }
+
+  template <int dim>
+  void
+  FemRegions<dim>::restore_state(const unsigned int              r,
+                                 const std::vector<std::string> &parts,
+                                 const bool                      root)
+  {
+    // The contact's work is summed over the ranks that saved it.
+    double work = 0, friction = 0;
+    for (const std::string &part : parts)
+      {
+        std::istringstream lines(part);
+        std::string        line;
+        while (std::getline(lines, line))
+          if (line.rfind("contact ", 0) == 0)
+            {
+              std::istringstream values(line.substr(8));
+              std::string        a, b;
+              values >> a >> b;
+              work += std::strtod(a.c_str(), nullptr);
+              friction += std::strtod(b.c_str(), nullptr);
+            }
+      }
+    regions[r].solid->load_state(parts);
+    if (regions[r].contact)
+      regions[r].contact->restore_work(root ? work : 0., root ? friction : 0.);
+    regions[r].solid->track_potential(potential(), false);
+  }
+
+  template <int dim>
+  void
+  FemRegions<dim>::grid_changed(const BackgroundGrid<dim> &grid)
+  {
+    for (FemRegion<dim> &region : regions)
+      {
+        if (region.bonded)
+          region.bonded->grid_changed(grid);
+        if (region.contact)
+          region.contact->grid_changed(grid);
+      }
+  }
+
+  template class FemRegions<2>;
+  template class FemRegions<3>;
+} // namespace dealmpm
