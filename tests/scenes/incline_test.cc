@@ -2,7 +2,7 @@
 // angle theta): a block slides by s(t) = 1/2 g (sin theta - mu cos theta)
 // t^2 and stays put when tan theta <= mu; a disk rolls without slip at
 // 2/3 g sin theta when mu >= tan(theta) / 3, and slips otherwise with
-// g (sin theta - mu cos theta). shared/RESEARCH.md 5.2 has the numbers.
+// g (sin theta - mu cos theta). doc/research.md 5.2 has the numbers.
 #include <deal.II/base/mpi.h>
 
 #include <gtest/gtest.h>
@@ -200,7 +200,7 @@ namespace
   }
 } // namespace
 
-// theta = 30 deg, mu = 0.2: a = 3.2059 m/s^2 (RESEARCH.md 5.2), and the
+// theta = 30 deg, mu = 0.2: a = 3.2059 m/s^2 (doc/research.md 5.2), and the
 // friction's work -mu m g cos(theta) s closes the energy balance.
 TEST(Incline, BlockSlidesAtTheCoulombRate)
 {

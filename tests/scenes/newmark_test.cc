@@ -1,6 +1,6 @@
 // Newmark's particle update (MPM/Particle update = Newmark) against the
 // explicit one, in dt, on two vibrating bars:
-// - the single-particle bar (shared/VERIFICATION.md): one particle per half
+// - the single-particle bar (doc/research.md 7): one particle per half
 //   cell, mirrored about x = 0 so that the node there stays at rest without
 //   a wall, E = 4 pi^2, rho = 1, cell L = 1, x0 = 0.5, v0 = 0.1, Hencky
 //   elasticity (J2 plasticity that never yields, nu = 0) and F by its

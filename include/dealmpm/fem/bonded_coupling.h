@@ -11,7 +11,7 @@
 namespace dealmpm
 {
   /**
-   * The bonded nodes of a solid region (RESEARCH.md 1.2, the FEMP/AFEMP
+   * The bonded nodes of a solid region (doc/research.md 1.2, the FEMP/AFEMP
    * coupling): they are not integrated by the region; their mass, momentum
    * and force go to the background grid with the linear kernel, and they
    * take the grid's velocity v* back, so that they move with the MPM

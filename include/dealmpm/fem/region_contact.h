@@ -14,7 +14,7 @@ namespace dealmpm
 {
   /**
    * Frictional contact between an FEM region's surface and the MPM
-   * material, through the background grid (RESEARCH.md 1.3, CFEMP with
+   * material, through the background grid (doc/research.md 1.3, CFEMP with
    * Bardenhagen's multi-velocity-field contact): the region is a velocity
    * field of its own. Its contact nodes give the grid their mass, their
    * predicted momentum m (v + dt f / m) and their outward normals times

@@ -60,7 +60,7 @@ namespace dealmpm
    * comes from a dealmpm Material, which keeps its internal variables
    * there: L = grad_X v F^-1 of the half step that made F, so incremental
    * (hypoelastic, plastic) models see the same step as on particles.
-   * RESEARCH.md section 1.4.
+   * doc/research.md section 1.4.
    */
   template <int dim>
   class SolidRegion
