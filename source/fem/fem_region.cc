@@ -208,6 +208,85 @@ namespace dealmpm
     return s;
   }
 
+  namespace
+  {
+    /** Fail unless the region's mesh has every boundary id its
+     * conditions name. */
+    template <int dim>
+    void
+    check_boundary_ids(const SceneReader            &reader,
+                       const FemRegionSettings<dim> &s,
+                       const Triangulation<dim>     &mesh)
+    {
+      const std::vector<types::boundary_id> ids = mesh.get_boundary_ids();
+      std::map<types::boundary_id, int>     fixed;
+      for (const types::boundary_id id : s.conditions.fixed)
+        fixed[id] = 0;
+      check_ids(reader, "Fixed boundaries", fixed, ids);
+      check_ids(reader,
+                "Prescribed displacement",
+                s.conditions.displacement,
+                ids);
+      check_ids(reader, "Prescribed velocity", s.conditions.velocity, ids);
+      check_ids(reader, "Traction", s.conditions.traction, ids);
+      check_ids(reader, "Bonded boundaries", s.bonded_to, ids);
+      check_ids(reader, "Contact boundaries", s.contact, ids);
+    }
+
+    /** Fail unless every vertex is inside the background grid's box (the
+     * nodes move on it). */
+    template <int dim>
+    void
+    check_inside_grid(const SceneReader         &reader,
+                      const Triangulation<dim>  &mesh,
+                      const BackgroundGrid<dim> &grid)
+    {
+      const BoundingBox<dim> box = grid.bounding_box;
+      for (const auto &cell : mesh.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const unsigned int v : cell->vertex_indices())
+            if (!box.point_inside(cell->vertex(v), 1e-12))
+              {
+                std::ostringstream where;
+                where << cell->vertex(v);
+                reader.fail(reader.get("Type") == "rectangle" ? "Upper corner" :
+                                                                "Mesh file",
+                            "a region inside the background grid ('Grid'), "
+                            "which its vertex at (" +
+                              where.str() + ") is not");
+              }
+    }
+
+    /** Fail when the bonded boundaries' nodes are further apart than the
+     * background cells: grid nodes between two of them would see none of
+     * the region's mass. */
+    template <int dim>
+    void
+    check_bonded_spacing(const SceneReader            &reader,
+                         const FemRegionSettings<dim> &s,
+                         const SolidRegion<dim>       &solid,
+                         const BackgroundGrid<dim>    &grid)
+    {
+      double h_min = std::numeric_limits<double>::max();
+      for (const GridCell<dim> &c : grid.cells)
+        h_min = std::min(h_min, c.h);
+      h_min = Utilities::MPI::min(h_min, grid.comm);
+      std::set<types::boundary_id> bonded;
+      for (const auto &item : s.bonded_to)
+        bonded.insert(item.first);
+      const double spacing = solid.largest_node_spacing_on(bonded);
+      if (spacing > h_min * (1 + 1e-9))
+        {
+          std::ostringstream why;
+          why << "boundaries whose node spacing (" << spacing
+              << " m here) is at most the background cells' size (" << h_min
+              << " m): refine the region there ('Cells', 'Degree') or "
+                 "coarsen the grid";
+          reader.fail("Bonded boundaries", why.str());
+        }
+    }
+  } // namespace
+
   template <int dim>
   FemRegion<dim>
   make_fem_region(SceneReader                                       &reader,
@@ -231,62 +310,15 @@ namespace dealmpm
       std::make_unique<SolidRegion<dim>>(grid.comm, material, s.degree);
     SolidRegion<dim> &solid = *region.solid;
     read_coarse_mesh<dim>(reader, solid.triangulation);
-
-    const std::vector<types::boundary_id> ids =
-      solid.triangulation.get_boundary_ids();
-    std::map<types::boundary_id, int> fixed;
-    for (const types::boundary_id id : s.conditions.fixed)
-      fixed[id] = 0;
-    check_ids(reader, "Fixed boundaries", fixed, ids);
-    check_ids(reader,
-              "Prescribed displacement",
-              s.conditions.displacement,
-              ids);
-    check_ids(reader, "Prescribed velocity", s.conditions.velocity, ids);
-    check_ids(reader, "Traction", s.conditions.traction, ids);
-    check_ids(reader, "Bonded boundaries", s.bonded_to, ids);
-    check_ids(reader, "Contact boundaries", s.contact, ids);
-
-    // Every vertex inside the background grid's box (the nodes move on it).
-    const BoundingBox<dim> box = grid.bounding_box;
-    for (const auto &cell : solid.triangulation.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const unsigned int v : cell->vertex_indices())
-          if (!box.point_inside(cell->vertex(v), 1e-12))
-            {
-              std::ostringstream where;
-              where << cell->vertex(v);
-              reader.fail(reader.get("Type") == "rectangle" ? "Upper corner" :
-                                                              "Mesh file",
-                          "a region inside the background grid ('Grid'), "
-                          "which its vertex at (" +
-                            where.str() + ") is not");
-            }
+    check_boundary_ids(reader, s, solid.triangulation);
+    check_inside_grid(reader, solid.triangulation, grid);
 
     solid.setup(s.conditions);
     solid.set_velocity(Functions::ConstantFunction<dim>(std::vector<double>(
       &s.initial_velocity[0], &s.initial_velocity[0] + dim)));
     if (!s.bonded_to.empty())
       {
-        // Grid nodes between two bonded nodes would see none of the
-        // region's mass: a node spacing up to the cells' size.
-        double h_min = std::numeric_limits<double>::max();
-        for (const GridCell<dim> &c : grid.cells)
-          h_min = std::min(h_min, c.h);
-        h_min = Utilities::MPI::min(h_min, grid.comm);
-        std::set<types::boundary_id> bonded;
-        for (const auto &item : s.bonded_to)
-          bonded.insert(item.first);
-        const double spacing = solid.largest_node_spacing_on(bonded);
-        if (spacing > h_min * (1 + 1e-9))
-          {
-            std::ostringstream why;
-            why << "boundaries whose node spacing (" << spacing
-                << " m here) is at most the background cells' size (" << h_min
-                << " m): refine the region there ('Cells', 'Degree') or "
-                   "coarsen the grid";
-            reader.fail("Bonded boundaries", why.str());
-          }
+        check_bonded_spacing(reader, s, solid, grid);
         region.bonded =
           std::make_unique<BondedCoupling<dim>>(solid,
                                                 s.bonded_to.begin()->second);
