@@ -241,13 +241,11 @@ namespace dealmpm
                                                       write_checkpoint();
       }
     if (s.output.verbose)
-      {
-        computing_timer->print_summary();
-        print_run_summary(pcout,
-                          loop,
-                          grid.triangulation.n_global_active_cells(),
-                          comm);
-      }
+      print_run_summary(pcout,
+                        *computing_timer,
+                        loop,
+                        grid.triangulation.n_global_active_cells(),
+                        comm);
     if (stopped_by_signal != 0)
       pcout << "dealmpm: stopped by " << signal_name(stopped_by_signal)
             << " at step " << loop.step << " (t = " << loop.time
