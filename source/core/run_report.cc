@@ -8,10 +8,12 @@ namespace dealmpm
 {
   void
   print_run_summary(ConditionalOStream      &pcout,
+                    TimerOutput             &timer,
                     const RunState          &loop,
                     const unsigned long long n_active_cells,
                     const MPI_Comm           comm)
   {
+    timer.print_summary();
     pcout << "dealmpm: " << loop.accuracy.report() << std::endl;
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
     const double       rate =

@@ -35,11 +35,12 @@ namespace dealmpm
                     "/");
   }
 
-  /** The closing line of a run: steps, particle-steps per second per core,
-   * peak memory, and the counts of what happened to the grid and the
-   * particles on the way (collective). */
+  /** The timer's table and the closing line of a run: steps,
+   * particle-steps per second per core, peak memory, and the counts of what
+   * happened to the grid and the particles on the way (collective). */
   void
   print_run_summary(ConditionalOStream      &out,
+                    TimerOutput             &timer,
                     const RunState          &loop,
                     const unsigned long long n_active_cells,
                     const MPI_Comm           comm);
