@@ -14,6 +14,120 @@
 
 namespace dealmpm
 {
+  namespace
+  {
+    /** What an output error adds: how far the folder's output is complete
+     * (the files of earlier steps stay usable). */
+    std::string
+    completeness(const std::string &dir, const OutputRecord &record)
+    {
+      std::ostringstream context;
+      context << "; the output in " << dir << "/ is complete";
+      if (record.counter > 0)
+        context << " up to t = " << record.last_time;
+      else
+        context << " but empty";
+      return context.str();
+    }
+
+    /** Runs writers and keeps the first OutputError's message, so that a
+     * rank whose writer failed goes on with the others (each writer does
+     * its collective part before it can fail) and all ranks can then throw
+     * together. */
+    struct Attempts
+    {
+      std::string problem;
+
+      template <typename Write>
+      void
+      operator()(const Write &write)
+      {
+        try
+          {
+            write();
+          }
+        catch (const OutputError &e)
+          {
+            if (problem.empty())
+              problem = e.what();
+          }
+      }
+    };
+
+    /** The files one output step wrote that series list (empty: none). */
+    struct StepFiles
+    {
+      std::string              particles, grid;
+      std::vector<std::string> regions;
+    };
+
+    /** Adds the step's files at @p time to the @p record's series and
+     * rewrites those (rank 0). */
+    void
+    add_to_series(OutputRecord      &record,
+                  const StepFiles   &files,
+                  const double       time,
+                  const std::string &dir)
+    {
+      if (!files.particles.empty())
+        record.particle_series.add_and_write(time,
+                                             files.particles,
+                                             dir + "/particles.pvd");
+      if (!files.grid.empty())
+        record.grid_series.add_and_write(time, files.grid, dir + "/grid.pvd");
+      record.region_series.resize(files.regions.size());
+      for (unsigned int r = 0; r < files.regions.size(); ++r)
+        if (!files.regions[r].empty())
+          record.region_series[r].add_and_write(time,
+                                                files.regions[r],
+                                                dir + "/fem_region_" +
+                                                  std::to_string(r + 1) +
+                                                  ".pvd");
+    }
+
+    /** Writes the files of output @p counter that the @p settings ask for,
+     * on every rank, each writer in an @p attempt. */
+    template <int dim>
+    StepFiles
+    write_files(const OutputSettings                    &settings,
+                const typename OutputWriter<dim>::Scene &scene,
+                ParticleOutput<dim>                     &particle_output,
+                const unsigned int                       counter,
+                const MPI_Comm                           comm,
+                Attempts                                &attempt)
+    {
+      const std::string &dir = settings.directory;
+      StepFiles          files;
+      if (settings.write_particles)
+        attempt([&] {
+          particle_output.build_patches(scene.particles, scene.materials);
+          files.particles = particle_output.write(dir, counter, comm);
+        });
+      if (settings.write_grid)
+        attempt([&] {
+          files.grid =
+            write_grid_output(scene.grid, scene.fields, dir, counter);
+        });
+      files.regions.resize(scene.regions.size());
+      for (unsigned int r = 0; r < scene.regions.size(); ++r)
+        attempt([&] {
+          files.regions[r] =
+            write_region_output(*scene.regions[r].solid,
+                                dir,
+                                "fem_region_" + std::to_string(r + 1) + "_" +
+                                  Utilities::int_to_string(counter, 5));
+        });
+      if (settings.write_particle_csv)
+        attempt([&] {
+          std::ostringstream name;
+          name << dir << "/particles_" << std::setw(5) << std::setfill('0')
+               << counter << ".csv";
+          write_particle_csv(scene.particles, name.str(), comm);
+        });
+      return files;
+    }
+  } // namespace
+
   template <int dim>
   OutputWriter<dim>::OutputWriter(const OutputSettings &settings,
                                   const MPI_Comm        comm)
@@ -97,79 +211,23 @@ namespace dealmpm
     OutputRecord                                &record,
     const std::function<void(StatisticsFile &)> &write_row)
   {
-    const std::string &dir = settings.directory;
-    std::ostringstream context;
-    context << "; the output in " << dir << "/ is complete";
-    if (record.counter > 0)
-      context << " up to t = " << record.last_time;
-    else
-      context << " but empty";
+    const std::string &dir     = settings.directory;
+    const std::string  context = completeness(dir, record);
 
     // The files a series entry points to come first, on every rank; the
     // statistics row and the entries follow once all ranks have them, so
     // that a run stopped at any moment (or by a full disk) leaves no entry
-    // without its files and row. Each writer does its collective part
-    // before it can fail, so a rank that failed still takes part in the
-    // rest, and all ranks throw together.
-    std::string problem;
-    const auto  attempt = [&problem](const auto &write_files) {
-      try
-        {
-          write_files();
-        }
-      catch (const OutputError &e)
-        {
-          if (problem.empty())
-            problem = e.what();
-        }
-    };
-    std::string particle_file, grid_file;
-    if (settings.write_particles)
-      attempt([&] {
-        particle_output.build_patches(scene.particles, scene.materials);
-        particle_file = particle_output.write(dir, record.counter, comm);
-      });
-    if (settings.write_grid)
-      attempt([&] {
-        grid_file =
-          write_grid_output(scene.grid, scene.fields, dir, record.counter);
-      });
-    std::vector<std::string> region_files(scene.regions.size());
-    for (unsigned int r = 0; r < scene.regions.size(); ++r)
-      attempt([&] {
-        region_files[r] =
-          write_region_output(*scene.regions[r].solid,
-                              dir,
-                              "fem_region_" + std::to_string(r + 1) + "_" +
-                                Utilities::int_to_string(record.counter, 5));
-      });
-    if (settings.write_particle_csv)
-      attempt([&] {
-        std::ostringstream name;
-        name << dir << "/particles_" << std::setw(5) << std::setfill('0')
-             << record.counter << ".csv";
-        write_particle_csv(scene.particles, name.str(), comm);
-      });
-    agree_on_output_error(problem, context.str(), comm);
+    // without its files and row.
+    Attempts        attempt;
+    const StepFiles files = write_files<dim>(
+      settings, scene, particle_output, record.counter, comm, attempt);
+    agree_on_output_error(attempt.problem, context, comm);
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       attempt([&] {
         write_row(*statistics_file);
-        if (!particle_file.empty())
-          record.particle_series.add_and_write(time,
-                                               particle_file,
-                                               dir + "/particles.pvd");
-        if (!grid_file.empty())
-          record.grid_series.add_and_write(time, grid_file, dir + "/grid.pvd");
-        record.region_series.resize(region_files.size());
-        for (unsigned int r = 0; r < region_files.size(); ++r)
-          if (!region_files[r].empty())
-            record.region_series[r].add_and_write(time,
-                                                  region_files[r],
-                                                  dir + "/fem_region_" +
-                                                    std::to_string(r + 1) +
-                                                    ".pvd");
+        add_to_series(record, files, time, dir);
       });
-    agree_on_output_error(problem, context.str(), comm);
+    agree_on_output_error(attempt.problem, context, comm);
     ++record.counter;
     record.last_time = time;
     record.last_step = step;

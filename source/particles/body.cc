@@ -157,95 +157,120 @@ namespace dealmpm
       std::unique_ptr<GridTools::Cache<dim>> cache;
       BoundingBox<dim>                       box;
     };
+
+    /** The body's shape: which one, and each shape's dimensions (an entry
+     * serves every shape that names it). */
+    template <int dim>
+    void
+    declare_shape_entries(ParameterHandler &prm)
+    {
+      prm.declare_entry("Shape",
+                        "box",
+                        Patterns::Selection("box|ball|cylinder|mesh"),
+                        "'box' (Lower corner, Upper corner), 'ball' (a disk in "
+                        "2D: Center, Radius), 'cylinder' (3D: Center, Radius, "
+                        "Axis, Height), 'mesh' (the cells of Mesh file).");
+      prm.declare_entry("Lower corner",
+                        repeat_value<dim>("0"),
+                        Patterns::List(Patterns::Double(), dim, dim),
+                        "Box: lower corner.");
+      prm.declare_entry("Upper corner",
+                        repeat_value<dim>("1"),
+                        Patterns::List(Patterns::Double(), dim, dim),
+                        "Box: upper corner.");
+      prm.declare_entry("Center",
+                        repeat_value<dim>("0"),
+                        Patterns::List(Patterns::Double(), dim, dim),
+                        "Ball, cylinder: centre.");
+      prm.declare_entry("Inner radius",
+                        "0",
+                        Patterns::Double(),
+                        "Ball: the radius of a hole at the centre (an annulus "
+                        "or hollow sphere); 0: none.");
+      prm.declare_entry("Radius",
+                        "0.5",
+                        Patterns::Double(),
+                        "Ball, cylinder: radius.");
+      prm.declare_entry("Axis",
+                        "z",
+                        Patterns::Selection("x|y|z"),
+                        "Cylinder: axis direction.");
+      prm.declare_entry("Height",
+                        "1",
+                        Patterns::Double(),
+                        "Cylinder: length along the axis.");
+      prm.declare_entry(
+        "Mesh file",
+        "",
+        Patterns::FileName(),
+        "Mesh: Gmsh .msh file whose cells the body fills (relative to the scene file's folder or absolute).");
+    }
+
+    /** What fills the shape: the particles per cell, their material and
+     * velocity, and whether they may replace an earlier body's. */
+    template <int dim>
+    void
+    declare_filling_entries(ParameterHandler &prm)
+    {
+      prm.declare_entry(
+        "Particles per cell",
+        "2",
+        Patterns::Integer(1, 10),
+        "Particles per background cell and direction (n: n^dim per cell).");
+      prm.declare_entry("Material",
+                        "1",
+                        Patterns::Integer(1),
+                        "Number N of the 'Material N' section.");
+      prm.declare_entry("Velocity",
+                        repeat_value<dim>("0"),
+                        Patterns::List(Patterns::Double(), dim, dim),
+                        "Initial velocity (m/s).");
+      prm.declare_entry(
+        "Allow overlap",
+        "false",
+        Patterns::Bool(),
+        "Where this body overlaps bodies listed before it, its particles "
+        "replace theirs (an inclusion, a different material in a region); "
+        "otherwise overlapping bodies are refused (they would be filled "
+        "twice, at twice the density).");
+    }
+
+    /** The stress at t = 0: none, or geostatic with its lateral ratio K0. */
+    void
+    declare_initial_stress_entries(ParameterHandler &prm)
+    {
+      prm.declare_entry(
+        "Initial stress",
+        "none",
+        Patterns::Selection("none|geostatic"),
+        "The body's stress at t = 0: 'none' (stress-free: under gravity it "
+        "falls into its own weight and bounces) or 'geostatic' (at rest under "
+        "gravity: sigma = sigma_v (n (x) n + K0 (I - n (x) n)), n the "
+        "direction of gravity, sigma_v = -rho g d at depth d below the top of "
+        "the body's own bounding box: the weight of this body above, not of "
+        "other bodies resting on it; each particle's F and internal "
+        "variables are those of its material at that stress, and 'Density' "
+        "is the density at rest). Needs an effect with a uniform force field "
+        "(gravity); not with 'MPM/Formulation = total Lagrangian', whose "
+        "reference configuration is stress-free.");
+      prm.declare_entry(
+        "K0",
+        "elastic",
+        Patterns::Anything(),
+        "With 'Initial stress = geostatic': the lateral over the vertical "
+        "stress, a number >= 0 (e.g. Jaky's 1 - sin(phi) for a normally "
+        "consolidated soil), or 'elastic' for the material's own confined "
+        "response (nu / (1 - nu) for isotropic elasticity, 1 for a fluid).");
+    }
   } // namespace
 
   template <int dim>
   void
   Body<dim>::declare_parameters(ParameterHandler &prm)
   {
-    prm.declare_entry("Shape",
-                      "box",
-                      Patterns::Selection("box|ball|cylinder|mesh"),
-                      "'box' (Lower corner, Upper corner), 'ball' (a disk in "
-                      "2D: Center, Radius), 'cylinder' (3D: Center, Radius, "
-                      "Axis, Height), 'mesh' (the cells of Mesh file).");
-    prm.declare_entry("Lower corner",
-                      repeat_value<dim>("0"),
-                      Patterns::List(Patterns::Double(), dim, dim),
-                      "Box: lower corner.");
-    prm.declare_entry("Upper corner",
-                      repeat_value<dim>("1"),
-                      Patterns::List(Patterns::Double(), dim, dim),
-                      "Box: upper corner.");
-    prm.declare_entry("Center",
-                      repeat_value<dim>("0"),
-                      Patterns::List(Patterns::Double(), dim, dim),
-                      "Ball, cylinder: centre.");
-    prm.declare_entry("Inner radius",
-                      "0",
-                      Patterns::Double(),
-                      "Ball: the radius of a hole at the centre (an annulus "
-                      "or hollow sphere); 0: none.");
-    prm.declare_entry("Radius",
-                      "0.5",
-                      Patterns::Double(),
-                      "Ball, cylinder: radius.");
-    prm.declare_entry("Axis",
-                      "z",
-                      Patterns::Selection("x|y|z"),
-                      "Cylinder: axis direction.");
-    prm.declare_entry("Height",
-                      "1",
-                      Patterns::Double(),
-                      "Cylinder: length along the axis.");
-    prm.declare_entry(
-      "Mesh file",
-      "",
-      Patterns::FileName(),
-      "Mesh: Gmsh .msh file whose cells the body fills (relative to the scene file's folder or absolute).");
-    prm.declare_entry(
-      "Particles per cell",
-      "2",
-      Patterns::Integer(1, 10),
-      "Particles per background cell and direction (n: n^dim per cell).");
-    prm.declare_entry("Material",
-                      "1",
-                      Patterns::Integer(1),
-                      "Number N of the 'Material N' section.");
-    prm.declare_entry("Velocity",
-                      repeat_value<dim>("0"),
-                      Patterns::List(Patterns::Double(), dim, dim),
-                      "Initial velocity (m/s).");
-    prm.declare_entry(
-      "Allow overlap",
-      "false",
-      Patterns::Bool(),
-      "Where this body overlaps bodies listed before it, its particles "
-      "replace theirs (an inclusion, a different material in a region); "
-      "otherwise overlapping bodies are refused (they would be filled "
-      "twice, at twice the density).");
-    prm.declare_entry(
-      "Initial stress",
-      "none",
-      Patterns::Selection("none|geostatic"),
-      "The body's stress at t = 0: 'none' (stress-free: under gravity it "
-      "falls into its own weight and bounces) or 'geostatic' (at rest under "
-      "gravity: sigma = sigma_v (n (x) n + K0 (I - n (x) n)), n the "
-      "direction of gravity, sigma_v = -rho g d at depth d below the top of "
-      "the body's own bounding box: the weight of this body above, not of "
-      "other bodies resting on it; each particle's F and internal "
-      "variables are those of its material at that stress, and 'Density' "
-      "is the density at rest). Needs an effect with a uniform force field "
-      "(gravity); not with 'MPM/Formulation = total Lagrangian', whose "
-      "reference configuration is stress-free.");
-    prm.declare_entry(
-      "K0",
-      "elastic",
-      Patterns::Anything(),
-      "With 'Initial stress = geostatic': the lateral over the vertical "
-      "stress, a number >= 0 (e.g. Jaky's 1 - sin(phi) for a normally "
-      "consolidated soil), or 'elastic' for the material's own confined "
-      "response (nu / (1 - nu) for isotropic elasticity, 1 for a fluid).");
+    declare_shape_entries<dim>(prm);
+    declare_filling_entries<dim>(prm);
+    declare_initial_stress_entries(prm);
   }
 
   template <int dim>

@@ -109,6 +109,58 @@ namespace dealmpm
 
   namespace g2p_sweep
   {
+    /** The sums over particle @p k's stencil that a sweep needs, from the
+     * nodal arrays @p from: v_grid = sum N v (if it moves the particle),
+     * dv = sum N dv and, with APIC (@p affine), B = sum N v (x) (x_i - x_p)
+     * (if it updates the velocity), L = sum v (x) grad N (if it deforms).
+     */
+    template <bool motion,
+              bool move,
+              bool deformation,
+              int  dim,
+              typename Arrays>
+    DEAL_II_ALWAYS_INLINE inline void
+    gather(const BackgroundGrid<dim> &grid,
+           const Stencil<dim>        &stencil,
+           const std::size_t          k,
+           const Arrays              &from,
+           const bool                 affine,
+           Tensor<1, dim>            &v_grid,
+           Tensor<1, dim>            &dv,
+           Tensor<2, dim>            &L,
+           Tensor<2, dim>            &B)
+    {
+      const auto &velocity  = from.velocity;
+      const auto &increment = from.increment;
+      // APIC measures x_i - x_p from the stencil's positions (the
+      // particle's own in the updated Lagrangian sweeps, which have not
+      // moved it yet; its reference one in total Lagrangian).
+      const Point<dim> x_affine =
+        motion && affine ? stencil.position[k] : Point<dim>();
+      for (unsigned int e = stencil.begin[k]; e < stencil.begin[k + 1]; ++e)
+        {
+          const unsigned int n = stencil.node[e];
+          const double       N = stencil.N[e];
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              if (move)
+                v_grid[d] += N * velocity[d][n];
+              if (motion)
+                dv[d] += N * increment[d][n];
+              if (deformation)
+                for (unsigned int b = 0; b < dim; ++b)
+                  L[d][b] += velocity[d][n] * stencil.grad_N[e][b];
+            }
+          if (motion && affine)
+            {
+              const Tensor<1, dim> r = grid.node_positions[n] - x_affine;
+              for (unsigned int a = 0; a < dim; ++a)
+                for (unsigned int b = 0; b < dim; ++b)
+                  B[a][b] += N * velocity[a][n] * r[b];
+            }
+        }
+    }
+
     /** The particle's new velocity: with APIC, v = sum N v and the
      * B = sum N v (x) (x_i - x_p) P2G turns into C; else the FLIP/PIC blend
      * alpha (v_p + sum N dv) + (1 - alpha) sum N v. */
@@ -260,38 +312,10 @@ namespace dealmpm
         DEAL_II_ALWAYS_INLINE {
           Tensor<1, dim>          v_grid, dv;
           Tensor<2, dim>          L, B;
-          const Point<dim>        x_p       = p.get_location();
-          const ArrayView<double> props     = p.get_properties();
-          const auto             &from      = arrays.of(props);
-          const auto             &velocity  = from.velocity;
-          const auto             &increment = from.increment;
-          // APIC measures x_i - x_p from the stencil's positions (the
-          // particle's own in the updated Lagrangian sweeps, which have not
-          // moved it yet; its reference one in total Lagrangian).
-          const Point<dim> x_affine =
-            motion && affine ? stencil.position[k] : Point<dim>();
-          for (unsigned int e = stencil.begin[k]; e < stencil.begin[k + 1]; ++e)
-            {
-              const unsigned int n = stencil.node[e];
-              const double       N = stencil.N[e];
-              for (unsigned int d = 0; d < dim; ++d)
-                {
-                  if (move)
-                    v_grid[d] += N * velocity[d][n];
-                  if (motion)
-                    dv[d] += N * increment[d][n];
-                  if (deformation)
-                    for (unsigned int b = 0; b < dim; ++b)
-                      L[d][b] += velocity[d][n] * stencil.grad_N[e][b];
-                }
-              if (motion && affine)
-                {
-                  const Tensor<1, dim> r = grid.node_positions[n] - x_affine;
-                  for (unsigned int a = 0; a < dim; ++a)
-                    for (unsigned int b = 0; b < dim; ++b)
-                      B[a][b] += N * velocity[a][n] * r[b];
-                }
-            }
+          const Point<dim>        x_p   = p.get_location();
+          const ArrayView<double> props = p.get_properties();
+          g2p_sweep::gather<motion, move, deformation>(
+            grid, stencil, k, arrays.of(props), affine, v_grid, dv, L, B);
           if (motion)
             g2p_sweep::update_velocity(
               props, f, v_grid, dv, B, flip_fraction, affine);
