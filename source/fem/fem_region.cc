@@ -230,10 +230,10 @@ namespace dealmpm
     region.solid =
       std::make_unique<SolidRegion<dim>>(grid.comm, material, s.degree);
     SolidRegion<dim> &solid = *region.solid;
-    read_coarse_mesh<dim>(reader, solid.triangulation);
+    read_coarse_mesh<dim>(reader, solid.get_triangulation());
 
     const std::vector<types::boundary_id> ids =
-      solid.triangulation.get_boundary_ids();
+      solid.get_triangulation().get_boundary_ids();
     std::map<types::boundary_id, int> fixed;
     for (const types::boundary_id id : s.conditions.fixed)
       fixed[id] = 0;
@@ -249,7 +249,7 @@ namespace dealmpm
 
     // Every vertex inside the background grid's box (the nodes move on it).
     const BoundingBox<dim> box = grid.bounding_box;
-    for (const auto &cell : solid.triangulation.active_cell_iterators())
+    for (const auto &cell : solid.get_triangulation().active_cell_iterators())
       if (cell->is_locally_owned())
         for (const unsigned int v : cell->vertex_indices())
           if (!box.point_inside(cell->vertex(v), 1e-12))
