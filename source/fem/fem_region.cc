@@ -309,9 +309,9 @@ namespace dealmpm
     region.solid =
       std::make_unique<SolidRegion<dim>>(grid.comm, material, s.degree);
     SolidRegion<dim> &solid = *region.solid;
-    read_coarse_mesh<dim>(reader, solid.triangulation);
-    check_boundary_ids(reader, s, solid.triangulation);
-    check_inside_grid(reader, solid.triangulation, grid);
+    read_coarse_mesh<dim>(reader, solid.get_triangulation());
+    check_boundary_ids(reader, s, solid.get_triangulation());
+    check_inside_grid(reader, solid.get_triangulation(), grid);
 
     solid.setup(s.conditions);
     solid.set_velocity(Functions::ConstantFunction<dim>(std::vector<double>(

@@ -37,14 +37,32 @@ namespace dealmpm
   {
     n_values = n;
     n_mine   = mine.size() / n;
-    // Plain MPI (deal.II's all_gather of vectors serializes and compresses
-    // them: 0.9 M instructions a call for 49 points).
+    gather(mine, grid.comm);
+
     const unsigned int this_rank = Utilities::MPI::this_mpi_process(grid.comm);
-    const unsigned int n_ranks   = Utilities::MPI::n_mpi_processes(grid.comm);
+    on_this_rank.clear();
+    std::vector<std::pair<BoundingBox<dim>, unsigned int>> hits;
+    for (std::size_t point = 0; point < n_global; ++point)
+      {
+        Point<dim> x;
+        for (unsigned int d = 0; d < dim; ++d)
+          x[d] = value(point, d);
+        Point<dim>           xi;
+        const GridCell<dim> *cell = placing_cell(grid, x, this_rank, hits, xi);
+        if (cell != nullptr)
+          on_this_rank.push_back(place(grid, point, *cell, xi));
+      }
+  }
+
+  template <int dim>
+  void
+  NodesOnGrid<dim>::gather(const std::vector<double> &mine, const MPI_Comm comm)
+  {
+    const unsigned int this_rank = Utilities::MPI::this_mpi_process(comm);
+    const unsigned int n_ranks   = Utilities::MPI::n_mpi_processes(comm);
     const int          size      = static_cast<int>(mine.size());
     std::vector<int>   sizes(n_ranks), offsets(n_ranks + 1, 0);
-    int                ierr =
-      MPI_Allgather(&size, 1, MPI_INT, sizes.data(), 1, MPI_INT, grid.comm);
+    int ierr = MPI_Allgather(&size, 1, MPI_INT, sizes.data(), 1, MPI_INT, comm);
     AssertThrowMPI(ierr);
     for (unsigned int r = 0; r < n_ranks; ++r)
       offsets[r + 1] = offsets[r] + sizes[r];
@@ -56,69 +74,75 @@ namespace dealmpm
                           sizes.data(),
                           offsets.data(),
                           MPI_DOUBLE,
-                          grid.comm);
+                          comm);
     AssertThrowMPI(ierr);
-    first    = offsets[this_rank] / n;
-    n_global = all.size() / n;
+    first    = offsets[this_rank] / n_values;
+    n_global = all.size() / n_values;
+  }
 
-    constexpr unsigned int n_vertices = GridCell<dim>::n_vertices;
-    const std::size_t      n_owned    = grid.cells.size();
-    on_this_rank.clear();
-    std::vector<std::pair<BoundingBox<dim>, unsigned int>> hits;
-    for (std::size_t point = 0; point < n_global; ++point)
+  template <int dim>
+  const GridCell<dim> *
+  NodesOnGrid<dim>::placing_cell(
+    const BackgroundGrid<dim>                              &grid,
+    const Point<dim>                                       &x,
+    const unsigned int                                      this_rank,
+    std::vector<std::pair<BoundingBox<dim>, unsigned int>> &hits,
+    Point<dim>                                             &xi) const
+  {
+    const std::size_t n_owned = grid.cells.size();
+    hits.clear();
+    tree.query(boost::geometry::index::intersects(x), std::back_inserter(hits));
+    // The lowest rank that owns a cell holding x places it, in an
+    // owned cell of its own.
+    unsigned int         lowest     = std::numeric_limits<unsigned int>::max();
+    const GridCell<dim> *owned_cell = nullptr;
+    for (const auto &hit : hits)
       {
-        Point<dim> x;
+        const bool           is_owned = hit.second < n_owned;
+        const GridCell<dim> &c        = is_owned ?
+                                          grid.cells[hit.second] :
+                                          grid.ghost_cells[hit.second - n_owned];
+        const Point<dim>     unit     = c.reference_point(x);
+        bool                 inside   = true;
         for (unsigned int d = 0; d < dim; ++d)
-          x[d] = value(point, d);
-        hits.clear();
-        tree.query(boost::geometry::index::intersects(x),
-                   std::back_inserter(hits));
-        // The lowest rank that owns a cell holding x places it, in an
-        // owned cell of its own.
-        unsigned int         lowest = std::numeric_limits<unsigned int>::max();
-        const GridCell<dim> *owned_cell = nullptr;
-        Point<dim>           xi;
-        for (const auto &hit : hits)
-          {
-            const bool           is_owned = hit.second < n_owned;
-            const GridCell<dim> &c        = is_owned ?
-                                              grid.cells[hit.second] :
-                                              grid.ghost_cells[hit.second - n_owned];
-            const Point<dim>     unit     = c.reference_point(x);
-            bool                 inside   = true;
-            for (unsigned int d = 0; d < dim; ++d)
-              inside = inside && unit[d] > -1e-10 && unit[d] < 1 + 1e-10;
-            if (!inside)
-              continue;
-            lowest =
-              std::min(lowest, is_owned ? this_rank : c.cell->subdomain_id());
-            if (is_owned && owned_cell == nullptr)
-              {
-                owned_cell = &c;
-                xi         = unit;
-              }
-          }
-        if (lowest != this_rank || owned_cell == nullptr)
+          inside = inside && unit[d] > -1e-10 && unit[d] < 1 + 1e-10;
+        if (!inside)
           continue;
-        for (unsigned int d = 0; d < dim; ++d)
-          xi[d] = std::min(1., std::max(0., xi[d]));
-        double N[n_vertices];
-        q1_values<dim>(xi, N, nullptr);
-        const GridCell<dim> &c = *owned_cell;
-        Placed               p{point, {}, {}};
-        p.nodes.assign(&grid.cell_nodes[c.first_node],
-                       &grid.cell_nodes[c.first_node] + c.n_nodes);
-        p.weights.assign(c.n_nodes, 0.);
-        for (unsigned int k = 0; k < c.n_nodes; ++k)
-          if (c.first_weight == numbers::invalid_unsigned_int)
-            p.weights[k] = N[k];
-          else
-            for (unsigned int v = 0; v < n_vertices; ++v)
-              p.weights[k] +=
-                grid.cell_node_weights[c.first_weight + k * n_vertices + v] *
-                N[v];
-        on_this_rank.push_back(std::move(p));
+        lowest =
+          std::min(lowest, is_owned ? this_rank : c.cell->subdomain_id());
+        if (is_owned && owned_cell == nullptr)
+          {
+            owned_cell = &c;
+            xi         = unit;
+          }
       }
+    return lowest == this_rank ? owned_cell : nullptr;
+  }
+
+  template <int dim>
+  typename NodesOnGrid<dim>::Placed
+  NodesOnGrid<dim>::place(const BackgroundGrid<dim> &grid,
+                          const std::size_t          point,
+                          const GridCell<dim>       &c,
+                          Point<dim>                 xi) const
+  {
+    constexpr unsigned int n_vertices = GridCell<dim>::n_vertices;
+    for (unsigned int d = 0; d < dim; ++d)
+      xi[d] = std::min(1., std::max(0., xi[d]));
+    double N[n_vertices];
+    q1_values<dim>(xi, N, nullptr);
+    Placed p{point, {}, {}};
+    p.nodes.assign(&grid.cell_nodes[c.first_node],
+                   &grid.cell_nodes[c.first_node] + c.n_nodes);
+    p.weights.assign(c.n_nodes, 0.);
+    for (unsigned int k = 0; k < c.n_nodes; ++k)
+      if (c.first_weight == numbers::invalid_unsigned_int)
+        p.weights[k] = N[k];
+      else
+        for (unsigned int v = 0; v < n_vertices; ++v)
+          p.weights[k] +=
+            grid.cell_node_weights[c.first_weight + k * n_vertices + v] * N[v];
+    return p;
   }
 
   template <int dim>

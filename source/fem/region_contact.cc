@@ -16,17 +16,18 @@ namespace dealmpm
       ids.insert(item.first);
     // A node's mu: that of the first of its faces' ids (the area normals
     // of an id say which nodes are on its faces).
-    std::vector<double> node_mu(region.nodes.size(), -1.);
+    const auto         &nodes = region.get_nodes();
+    std::vector<double> node_mu(nodes.size(), -1.);
     for (const auto &[id, coefficient] : friction)
       {
         const std::vector<Tensor<1, dim>> a = region.area_normals({id});
-        for (unsigned int k = 0; k < region.nodes.size(); ++k)
+        for (unsigned int k = 0; k < nodes.size(); ++k)
           if (a[k].norm() > 0 && node_mu[k] < 0)
             node_mu[k] = coefficient;
       }
-    for (unsigned int k = 0; k < region.nodes.size(); ++k)
+    for (unsigned int k = 0; k < nodes.size(); ++k)
       if (node_mu[k] >= 0 &&
-          region.nodes[k].kind != SolidRegion<dim>::Node::Kind::bonded)
+          nodes[k].kind != SolidRegion<dim>::Node::Kind::bonded)
         {
           local.push_back(k);
           local_mu.push_back(node_mu[k]);
@@ -94,34 +95,35 @@ namespace dealmpm
   }
 
   template <int dim>
-  void
-  RegionContact<dim>::apply(const BackgroundGrid<dim> &grid,
-                            NodalFieldSet<dim>        &set,
-                            const double               mass_threshold,
-                            const double               dt)
+  std::vector<double>
+  RegionContact<dim>::node_values(const double dt) const
   {
     using Kind = typename SolidRegion<dim>::Node::Kind;
     // x, m, m v_predicted, a n, mu per node.
-    constexpr unsigned int            n_values = 3 * dim + 2;
-    const std::vector<Tensor<1, dim>> area     = region.area_normals(ids);
+    const std::vector<Tensor<1, dim>> area = region.area_normals(ids);
     std::vector<double>               mine;
     mine.reserve(local.size() * n_values);
     for (unsigned int j = 0; j < local.size(); ++j)
       {
-        const auto      &node = region.nodes[local[j]];
+        const auto      &node = region.get_nodes()[local[j]];
         const Point<dim> x    = region.position(node);
-        const double     m    = region.mass.local_element(node.dof[0]);
-        Tensor<1, dim>   v    = region.node_vector(region.velocity, node);
+        const double     m    = region.mass_of(node);
+        Tensor<1, dim>   v    = region.velocity_of(node);
         if (node.kind == Kind::free)
-          v += dt / m * region.node_vector(region.force, node);
+          v += dt / m * region.force_of(node);
         append_components<dim>(mine, x);
         mine.push_back(m);
         append_components<dim>(mine, m * v);
         append_components<dim>(mine, area[local[j]]);
         mine.push_back(local_mu[j]);
       }
-    points.gather_and_place(grid, mine, n_values);
+    return mine;
+  }
 
+  template <int dim>
+  void
+  RegionContact<dim>::spread_to_grid()
+  {
     for (NodalVector *v : {&mass, &mu})
       {
         *v = 0;
@@ -156,7 +158,13 @@ namespace dealmpm
         momentum[d].compress(VectorOperation::add);
         normal[d].compress(VectorOperation::add);
       }
+  }
 
+  template <int dim>
+  void
+  RegionContact<dim>::correct_all(NodalFieldSet<dim> &set,
+                                  const double        mass_threshold)
+  {
     // The MPM fields the region meets: each body's when bodies have
     // their own (contact between them), else the one core field. Pairs
     // are corrected one after the other, the region's field velocity
@@ -179,8 +187,12 @@ namespace dealmpm
         }
     for (unsigned int d = 0; d < dim; ++d)
       change[d].update_ghost_values();
+  }
 
-    // The region's nodes take their field's change.
+  template <int dim>
+  void
+  RegionContact<dim>::pass_back_changes(const BackgroundGrid<dim> &grid)
+  {
     std::vector<double> dv(dim * points.n_points(), 0.);
     for (const auto &p : points.placed())
       for (unsigned int n = 0; n < p.nodes.size(); ++n)
@@ -189,10 +201,24 @@ namespace dealmpm
             p.weights[n] * change[d].local_element(p.nodes[n]);
     const std::vector<double> mine_dv =
       points.sum_to_owners(dv, dim, grid.comm, false);
-    region.velocity_correction.assign(region.nodes.size(), Tensor<1, dim>());
+    std::vector<Tensor<1, dim>> correction(local.size());
     for (unsigned int j = 0; j < local.size(); ++j)
       for (unsigned int d = 0; d < dim; ++d)
-        region.velocity_correction[local[j]][d] = mine_dv[dim * j + d];
+        correction[j][d] = mine_dv[dim * j + d];
+    region.set_velocity_corrections(local, correction);
+  }
+
+  template <int dim>
+  void
+  RegionContact<dim>::apply(const BackgroundGrid<dim> &grid,
+                            NodalFieldSet<dim>        &set,
+                            const double               mass_threshold,
+                            const double               dt)
+  {
+    points.gather_and_place(grid, node_values(dt), n_values);
+    spread_to_grid();
+    correct_all(set, mass_threshold);
+    pass_back_changes(grid);
   }
 
   template class RegionContact<2>;

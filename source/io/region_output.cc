@@ -18,7 +18,7 @@ namespace dealmpm
                       const std::string      &base)
   {
     using Vector_ = LinearAlgebra::distributed::Vector<double>;
-    Vector_ u(region.displacement), v(region.velocity);
+    Vector_ u(region.get_displacement()), v(region.get_velocity());
     u.update_ghost_values();
     v.update_ghost_values();
 
@@ -26,7 +26,7 @@ namespace dealmpm
     std::vector<double>                von_mises;
     std::vector<std::vector<double>>   internal;
     region.cell_means(stress, von_mises, internal);
-    const unsigned int n_active = region.triangulation.n_active_cells();
+    const unsigned int n_active = region.get_triangulation().n_active_cells();
     static const char *names[6] = {"xx", "yy", "zz", "xy", "yz", "xz"};
     static const std::array<std::array<unsigned int, 2>, 6> index = {
       {{{0, 0}}, {{1, 1}}, {{2, 2}}, {{0, 1}}, {{1, 2}}, {{0, 2}}}};
@@ -40,7 +40,7 @@ namespace dealmpm
     std::vector<Vector<float>> internal_data(n_internal,
                                              Vector<float>(n_active));
     std::size_t                c = 0;
-    for (const auto &cell : region.triangulation.active_cell_iterators())
+    for (const auto &cell : region.get_triangulation().active_cell_iterators())
       if (cell->is_locally_owned())
         {
           const unsigned int a = cell->active_cell_index();
@@ -54,7 +54,7 @@ namespace dealmpm
         }
 
     DataOut<dim> data_out;
-    data_out.attach_dof_handler(region.dof_handler);
+    data_out.attach_dof_handler(region.get_dof_handler());
     const std::vector<DataComponentInterpretation::DataComponentInterpretation>
       vector(dim, DataComponentInterpretation::component_is_part_of_vector);
     data_out.add_data_vector(u,
@@ -82,11 +82,11 @@ namespace dealmpm
                                  DataOut<dim>::type_cell_data);
     data_out.add_data_vector(rank, "mpi_rank", DataOut<dim>::type_cell_data);
     // The deformed mesh, as the particles are shown where they are.
-    const MappingQEulerian<dim, Vector_> deformed(region.fe.degree,
-                                                  region.dof_handler,
+    const MappingQEulerian<dim, Vector_> deformed(region.degree(),
+                                                  region.get_dof_handler(),
                                                   u);
-    data_out.build_patches(deformed, region.fe.degree);
-    return write_pieces(data_out, directory, base, region.comm);
+    data_out.build_patches(deformed, region.degree());
+    return write_pieces(data_out, directory, base, region.get_communicator());
   }
 
   template std::string

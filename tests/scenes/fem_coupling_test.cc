@@ -98,7 +98,7 @@ namespace
     region.cell_means(stress, von_mises, internal);
     double      sum = 0, n = 0;
     std::size_t c = 0;
-    for (const auto &cell : region.triangulation.active_cell_iterators())
+    for (const auto &cell : region.get_triangulation().active_cell_iterators())
       if (cell->is_locally_owned())
         {
           if (cell->center()[0] > a && cell->center()[0] < b)
@@ -225,11 +225,10 @@ TEST(FemCoupling, BondedCompositeTranslatesRigidly)
   EXPECT_LT(end.strain_energy, 1e-20 * start.kinetic_energy);
   const SolidRegion<2> &region  = *simulation->fem_regions()[0].solid;
   double                largest = 0;
-  for (const auto &node : region.nodes)
-    largest = std::max(largest,
-                       (region.node_vector(region.velocity, node) -
-                        Tensor<1, 2>({0.5, 0.25}))
-                         .norm());
+  for (const auto &node : region.get_nodes())
+    largest =
+      std::max(largest,
+               (region.velocity_of(node) - Tensor<1, 2>({0.5, 0.25})).norm());
   EXPECT_LT(Utilities::MPI::max(largest, MPI_COMM_WORLD), 1e-13);
   const CoreFields &f      = simulation->particle_set().fields;
   double            stress = 0;
@@ -292,14 +291,12 @@ namespace
     for (const auto &region : simulation.fem_regions())
       {
         double free = 0;
-        for (const auto &node : region.solid->nodes)
+        for (const auto &node : region.solid->get_nodes())
           if (node.kind == SolidRegion<2>::Node::Kind::free)
             {
               const Point<2>     x = region.solid->position(node);
-              const Tensor<1, 2> v =
-                region.solid->node_vector(region.solid->velocity, node);
-              free += region.solid->mass.local_element(node.dof[0]) *
-                      (x[0] * v[1] - x[1] * v[0]);
+              const Tensor<1, 2> v = region.solid->velocity_of(node);
+              free += region.solid->mass_of(node) * (x[0] * v[1] - x[1] * v[0]);
             }
         sum += Utilities::MPI::sum(free, MPI_COMM_WORLD);
       }
@@ -403,16 +400,11 @@ namespace
       {
         SolidRegion<2> &region = *simulation->fem_regions()[0].solid;
         region.set_velocity(spin);
-        EXPECT_EQ(region.affine.size(), 2u);
-        for (const auto &node : region.nodes)
-          if (affine_start && region.affine.size() == 2 &&
+        EXPECT_EQ(region.n_affine_columns(), 2u);
+        for (const auto &node : region.get_nodes())
+          if (affine_start && region.n_affine_columns() == 2 &&
               node.kind == SolidRegion<2>::Node::Kind::bonded)
-            {
-              const Tensor<2, 2> B = W * linear_kernel_D(node.X, h);
-              for (unsigned int j = 0; j < 2; ++j)
-                for (unsigned int c = 0; c < 2; ++c)
-                  region.affine[j].local_element(node.dof[c]) = B[c][j];
-            }
+            region.set_affine(node, W * linear_kernel_D(node.X, h));
       }
     const double dt = simulation->time_step();
     simulation->advance(dt);
@@ -643,7 +635,7 @@ TEST(FemCoupling, BallDroppedOnAPlate)
   // The plate's top surface y(x) from its top nodes (all ranks).
   const auto surface_gap = [&]() {
     std::vector<std::pair<double, double>> mine;
-    for (const auto &node : plate.nodes)
+    for (const auto &node : plate.get_nodes())
       if (std::abs(node.X[1] - 0.3) < 1e-12)
         {
           const Point<2> x = plate.position(node);

@@ -48,8 +48,11 @@ namespace
     material.density = rho;
     SolidRegion<2> region(MPI_COMM_WORLD, material, degree);
     const double   H = L / cells;
-    GridGenerator::subdivided_hyper_rectangle(
-      region.triangulation, {cells, 1}, Point<2>(0, 0), Point<2>(L, H), true);
+    GridGenerator::subdivided_hyper_rectangle(region.get_triangulation(),
+                                              {cells, 1},
+                                              Point<2>(0, 0),
+                                              Point<2>(L, H),
+                                              true);
     region.setup({0});
     region.set_velocity(FirstMode());
     const double c = std::sqrt(E / rho), w = M_PI * c / (2 * L);
@@ -57,8 +60,8 @@ namespace
     const double period = 2 * M_PI / w;
     BarResult    result{0, 0, 0};
     double       mass = 0;
-    for (unsigned int i = 0; i < region.mass.locally_owned_size(); ++i)
-      mass += region.mass.local_element(i);
+    for (unsigned int i = 0; i < region.get_mass().locally_owned_size(); ++i)
+      mass += region.get_mass().local_element(i);
     result.mass = Utilities::MPI::sum(mass, MPI_COMM_WORLD) / 2 / (rho * L * H);
     const double e0 = region.kinetic_energy();
     double       t  = 0;

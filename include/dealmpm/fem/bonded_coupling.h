@@ -60,9 +60,33 @@ namespace dealmpm
     }
 
   private:
+    /** Per bonded node of this rank: x, m, m v, f (and B column by
+     * column), the values deposit() gathers. */
+    std::vector<double>
+    node_values() const;
+
+    /** m C = m B D^+ of placed point @p p at @p x (APIC): D from the
+     * grid nodes it touches. */
+    Tensor<2, dim>
+    affine_momentum(const typename NodesOnGrid<dim>::Placed &p,
+                    const Point<dim>                        &x,
+                    const BackgroundGrid<dim>               &grid) const;
+
+    /** Add the placed points' m, momentum (with its affine part) and f
+     * to @p fields. Collective. */
+    void
+    add_to(NodalFields<dim> &fields, const BackgroundGrid<dim> &grid) const;
+
+    /** The grid's velocity (and B) at the placed points, summed to the
+     * points' owners: per node of this rank, v (and B column by
+     * column). Collective. */
+    std::vector<double>
+    grid_velocities(const BackgroundGrid<dim> &grid,
+                    const NodalFields<dim>    &fields) const;
+
     SolidRegion<dim> &region;
     unsigned int      body;
-    /** Indices into region.nodes of this rank's bonded nodes. */
+    /** Indices into region.get_nodes() of this rank's bonded nodes. */
     std::vector<unsigned int> local;
     std::size_t               n_global = 0;
     NodesOnGrid<dim>          points;

@@ -85,6 +85,31 @@ namespace dealmpm
     }
 
   private:
+    /** Every rank's @p mine into all (by plain MPI: deal.II's all_gather
+     * of vectors serializes and compresses them, 0.9 M instructions a
+     * call for 49 points); this rank's first point. Collective. */
+    void
+    gather(const std::vector<double> &mine, const MPI_Comm comm);
+
+    /** The owned cell of @p grid that places @p x, if this rank
+     * (@p this_rank) is the lowest that owns a cell holding it (else
+     * nullptr); @p xi its reference point there. @p hits is scratch
+     * space for the tree's answer. */
+    const GridCell<dim> *
+    placing_cell(const BackgroundGrid<dim> &grid,
+                 const Point<dim>          &x,
+                 const unsigned int         this_rank,
+                 std::vector<std::pair<BoundingBox<dim>, unsigned int>> &hits,
+                 Point<dim> &xi) const;
+
+    /** Point @p point placed in cell @p c at reference point @p xi: the
+     * cell's effective nodes and their linear weights. */
+    Placed
+    place(const BackgroundGrid<dim> &grid,
+          const std::size_t          point,
+          const GridCell<dim>       &c,
+          Point<dim>                 xi) const;
+
     RTree<std::pair<BoundingBox<dim>, unsigned int>> tree;
     std::vector<double>                              all;
     unsigned int                                     n_values = 0;

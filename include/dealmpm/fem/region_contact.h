@@ -74,6 +74,32 @@ namespace dealmpm
     }
 
   private:
+    /** Values per node for NodesOnGrid: x, m, m v, a n, mu. */
+    static constexpr unsigned int n_values = 3 * dim + 2;
+
+    /** Per contact node of this rank: x, m, the predicted momentum
+     * m (v + dt f / m) (free nodes; m v else), the area normal of its
+     * contact faces and its mu. Collective (the area normals). */
+    std::vector<double>
+    node_values(const double dt) const;
+
+    /** The region's field on the grid from the placed nodes: mass,
+     * mass-weighted mu, momentum and area normals; no change yet. */
+    void
+    spread_to_grid();
+
+    /** Correct each pair of an MPM field of @p set (each body's when
+     * bodies have their own, else the core) and the region's field, at
+     * every owned grid node. */
+    void
+    correct_all(NodalFieldSet<dim> &set, const double mass_threshold);
+
+    /** The region's nodes take their field's change (summed to the
+     * nodes' owners) as velocity corrections for its next advance().
+     * Collective. */
+    void
+    pass_back_changes(const BackgroundGrid<dim> &grid);
+
     /** The pair (MPM field @p fields, the region's field) at owned node
      * @p i: the correction when the MPM side approaches. */
     void
@@ -83,7 +109,7 @@ namespace dealmpm
 
     SolidRegion<dim>            &region;
     std::set<types::boundary_id> ids;
-    /** Per local contact node (index into region.nodes): its mu. */
+    /** Per local contact node (index into region.get_nodes()): its mu. */
     std::vector<unsigned int> local;
     std::vector<double>       local_mu;
     NodesOnGrid<dim>          points;

@@ -87,6 +87,17 @@ namespace dealmpm
                 const Material<dim> &material,
                 const unsigned int   degree);
 
+    /** @name Set-up (source/fem/solid_region_setup.cc) */
+    /** @{ */
+
+    /** The mesh in the reference configuration: to be made (or read)
+     * before setup(). */
+    parallel::distributed::Triangulation<dim> &
+    get_triangulation()
+    {
+      return triangulation;
+    }
+
     /** After the triangulation is made: DoFs, the lumped mass, the nodes
      * and their conditions, the tractions' nodal forces, the
      * quadrature-point state. */
@@ -100,6 +111,10 @@ namespace dealmpm
     /** v = @p velocity at the nodes (at t = 0, the first half step's). */
     void
     set_velocity(const Function<dim> &velocity);
+
+    /** @} */
+    /** @name The step (source/fem/solid_region_step.cc) */
+    /** @{ */
 
     /** The largest stable step times @p cfl: the smallest node spacing
      * (h / k) over the dilatational wave speed. Collective. */
@@ -129,6 +144,10 @@ namespace dealmpm
     step(const double          dt,
          const double          time       = 0,
          const BodyForce<dim> &body_force = {});
+
+    /** @} */
+    /** @name Statistics (source/fem/solid_region_statistics.cc) */
+    /** @{ */
 
     double
     kinetic_energy() const;
@@ -186,11 +205,22 @@ namespace dealmpm
     double
     node_velocity(const Point<dim> &x, const unsigned int component) const;
 
-    /** Per owned node (by index into nodes), the outward normal times the
-     * node's share of the current area of the faces with ids @p ids
-     * (Nanson: J F^-T N dA); zero off them. Collective. */
-    std::vector<Tensor<1, dim>>
-    area_normals(const std::set<types::boundary_id> &ids) const;
+    /** Per owned cell, the mean over its quadrature points of the full
+     * 3 x 3 stress (2D: with sigma_zz), the von Mises stress and each
+     * internal variable component (for output). */
+    void
+    cell_means(std::vector<SymmetricTensor<2, 3>> &cell_stress,
+               std::vector<double>                &cell_von_mises,
+               std::vector<std::vector<double>>   &cell_internal) const;
+
+    /** The largest node spacing (edge over degree) on faces with ids
+     * @p ids. Collective. */
+    double
+    largest_node_spacing_on(const std::set<types::boundary_id> &ids) const;
+
+    /** @} */
+    /** @name Saved state (source/fem/solid_region_state.cc) */
+    /** @{ */
 
     /** This rank's part of the region's state (its dofs' u and v by the
      * mesh object they sit on, its cells' quadrature-point state by cell
@@ -202,67 +232,128 @@ namespace dealmpm
     void
     load_state(const std::vector<std::string> &parts);
 
+    /** @} */
+    /** @name The couplings' nodes (fem/bonded_coupling.h,
+     * fem/region_contact.h; source/fem/solid_region.cc) */
+    /** @{ */
+
+    /** The owned nodes, ordered by global dof index. */
+    const std::vector<Node> &
+    get_nodes() const
+    {
+      return nodes;
+    }
+
     /** Current position of an owned node. */
     Point<dim>
     position(const Node &node) const;
+    /** Its lumped mass. */
+    double
+    mass_of(const Node &node) const
+    {
+      return mass.local_element(node.dof[0]);
+    }
     Tensor<1, dim>
-    node_vector(const LinearAlgebra::distributed::Vector<double> &v,
-                const Node                                       &node) const;
+    velocity_of(const Node &node) const
+    {
+      return node_vector(velocity, node);
+    }
+    /** The force of the last compute_forces(). */
+    Tensor<1, dim>
+    force_of(const Node &node) const
+    {
+      return node_vector(force, node);
+    }
 
-    /** Per owned cell, the mean over its quadrature points of the full
-     * 3 x 3 stress (2D: with sigma_zz), the von Mises stress and each
-     * internal variable component (for output). */
+    /** Per owned node (by index into get_nodes()), the outward normal
+     * times the node's share of the current area of the faces with ids
+     * @p ids (Nanson: J F^-T N dA); zero off them. Collective. */
+    std::vector<Tensor<1, dim>>
+    area_normals(const std::set<types::boundary_id> &ids) const;
+
+    /** Keep an affine matrix B per node for APIC of the bonded nodes
+     * (fem/bonded_coupling.h), zero at first; saved with the state. */
     void
-    cell_means(std::vector<SymmetricTensor<2, 3>> &cell_stress,
-               std::vector<double>                &cell_von_mises,
-               std::vector<std::vector<double>>   &cell_internal) const;
+    use_affine();
+    /** dim columns of B when use_affine() was called, else none. */
+    unsigned int
+    n_affine_columns() const
+    {
+      return static_cast<unsigned int>(affine.size());
+    }
+    /** B = sum N v_I (x) (x_I - x) of a node (use_affine()). */
+    Tensor<2, dim>
+    affine_of(const Node &node) const;
+    void
+    set_affine(const Node &node, const Tensor<2, dim> &B);
 
+    /** The bonded coupling's read-back: node @p bonded[k] (an index into
+     * get_nodes()) takes the velocity @p v[k] and, unless @p B is empty
+     * (use_affine()), B[k]; advance() keeps them. */
+    void
+    set_bonded_velocities(const std::vector<unsigned int>   &bonded,
+                          const std::vector<Tensor<1, dim>> &v,
+                          const std::vector<Tensor<2, dim>> &B);
+
+    /** Contact (fem/region_contact.h): node @p indices[k] (into
+     * get_nodes()) gets the velocity change @p change[k], which the next
+     * advance() adds to it if it is free, after its update; the other
+     * nodes none. */
+    void
+    set_velocity_corrections(const std::vector<unsigned int>   &indices,
+                             const std::vector<Tensor<1, dim>> &change);
+
+    /** @} */
+    /** @name For output and tests */
+    /** @{ */
+
+    const parallel::distributed::Triangulation<dim> &
+    get_triangulation() const
+    {
+      return triangulation;
+    }
+    const DoFHandler<dim> &
+    get_dof_handler() const
+    {
+      return dof_handler;
+    }
+    /** The polynomial degree k of the FE_Q(k) displacement. */
+    unsigned int
+    degree() const
+    {
+      return fe.degree;
+    }
+    MPI_Comm
+    get_communicator() const
+    {
+      return comm;
+    }
+    /** Owned entries, with ghosts when updated. */
+    const LinearAlgebra::distributed::Vector<double> &
+    get_displacement() const
+    {
+      return displacement;
+    }
+    const LinearAlgebra::distributed::Vector<double> &
+    get_velocity() const
+    {
+      return velocity;
+    }
+    /** The lumped mass per dof. */
+    const LinearAlgebra::distributed::Vector<double> &
+    get_mass() const
+    {
+      return mass;
+    }
     const Material<dim> &
     get_material() const
     {
       return material;
     }
 
-    /** The largest node spacing (edge over degree) on faces with ids
-     * @p ids. Collective. */
-    double
-    largest_node_spacing_on(const std::set<types::boundary_id> &ids) const;
-
-    MPI_Comm                                  comm;
-    parallel::distributed::Triangulation<dim> triangulation;
-    FESystem<dim>                             fe;
-    DoFHandler<dim>                           dof_handler;
-    MappingQ1<dim>                            mapping;
-    /** Owned, with the ghosts the cells need. */
-    LinearAlgebra::distributed::Vector<double> displacement, velocity, mass,
-      force;
-    /** The owned nodes, ordered by global dof index. */
-    std::vector<Node> nodes;
-    /** Per node, a velocity change that advance() adds to free nodes
-     * after their update and then clears (contact, fem/region_contact.h);
-     * empty when unused. */
-    std::vector<Tensor<1, dim>> velocity_correction;
-    /** APIC for bonded nodes (fem/bonded_coupling.h): per column j, the
-     * entry (c, j) of the node's B = sum N v_I (x) (x_I - x) at the dof of
-     * its component c, like the velocity; empty unless used. */
-    std::vector<LinearAlgebra::distributed::Vector<double>> affine;
+    /** @} */
 
   private:
-    /** The integral over the region (reference volume, all ranks) of
-     * density(k, internal variables) at quadrature point k. */
-    template <typename Density>
-    double
-    integral(const Density &density) const;
-
-    /** potential_energy() of this rank's nodes. */
-    double
-    local_potential_energy(
-      const std::function<double(const Point<dim> &)> &potential) const;
-
-    /** f = -int grad N : P (F) with the stress advanced over dt. */
-    void
-    internal_force(const double dt);
-
     /** What the per-step loops need of the owned cells, fixed in the
      * reference configuration (total Lagrangian), computed once by
      * setup(): FEValues and FEFaceValues cost more than the loops
@@ -289,8 +380,60 @@ namespace dealmpm
       std::vector<double>             face_value;
     };
 
+    /** Set-up: the DoFs and the nodal vectors. */
+    void
+    distribute_dofs();
+    /** m_i = int rho N_i^2 dV with Gauss-Lobatto points (lumped). */
+    void
+    make_lumped_mass();
+    /** The owned nodes with the conditions of their faces' ids. */
+    void
+    make_nodes();
+    /** The owned nodes (keyed by their x dof), without conditions. */
+    std::map<types::global_dof_index, Node>
+    find_owned_nodes() const;
+    /** Each owned node on a boundary face takes the face's condition. */
+    void
+    apply_face_conditions(std::map<types::global_dof_index, Node> &found) const;
+    /** Nominal tractions: int N_i t dA over the reference faces. */
+    void
+    make_traction_force();
+    /** Stress, F = I and the material's initial internal variables at
+     * every quadrature point; no step made, no work done. */
+    void
+    make_quadrature_state();
     void
     make_reference_data();
+    /** The reference data of cell @p values is at (JxW, gradients). */
+    void
+    add_cell_reference(const FEValues<dim, dim> &values);
+    /** The reference data of the boundary face @p face_values is at, of
+     * owned cell @p cell, with id @p id. */
+    void
+    add_face_reference(const FEFaceValues<dim, dim> &face_values,
+                       const unsigned int            cell,
+                       const types::boundary_id      id);
+
+    /** The step: f = -int grad N : P (F) with the stress advanced over
+     * dt. */
+    void
+    internal_force(const double dt);
+    /** RunError unless J > 0 at owned cell @p cell. */
+    void
+    check_orientation(const double J, const unsigned int cell) const;
+    /** The velocity a node takes in the step from @p time by @p dt. */
+    Tensor<1, dim>
+    new_velocity(const unsigned int k,
+                 const double       time,
+                 const double       dt) const;
+    /** A prescribed node taking @p v: the support's work and reaction. */
+    void
+    add_support_reaction(const Node           &node,
+                         const Tensor<1, dim> &v,
+                         const double          dt);
+    /** The tractions' work over the step just made (f_t . v). */
+    void
+    add_traction_work(const double time, const double dt);
 
     /** grad_X of the field @p w (ghosts updated) on cell @p cell at the
      * point whose reference gradients of the scalar shape functions start
@@ -299,6 +442,58 @@ namespace dealmpm
     reference_gradient(const LinearAlgebra::distributed::Vector<double> &w,
                        const unsigned int                                cell,
                        const Tensor<1, dim> *grad) const;
+
+    Tensor<1, dim>
+    node_vector(const LinearAlgebra::distributed::Vector<double> &v,
+                const Node                                       &node) const;
+
+    /** Statistics: the integral over the region (reference volume, all
+     * ranks) of density(k, internal variables) at quadrature point k. */
+    template <typename Density>
+    double
+    integral(const Density &density) const;
+
+    /** potential_energy() of this rank's nodes. */
+    double
+    local_potential_energy(
+      const std::function<double(const Point<dim> &)> &potential) const;
+
+    /** Saved state: the "step" line's values, per dof key u, v and the
+     * affine columns, per cell id the rest of its line. */
+    struct SavedParts
+    {
+      double                                     last_dt = 0, work = 0;
+      double                                     row_time = 0;
+      Tensor<1, dim>                             impulse;
+      std::map<std::string, std::vector<double>> dofs;
+      std::map<std::string, std::string>         cells;
+    };
+    /** All ranks' parts read (the work and the impulse summed). */
+    SavedParts
+    read_parts(const std::vector<std::string> &parts) const;
+    void
+    load_dofs(const std::map<std::string, std::vector<double>> &dofs);
+    void
+    load_cells(const std::map<std::string, std::string> &cells);
+
+    MPI_Comm                                  comm;
+    parallel::distributed::Triangulation<dim> triangulation;
+    FESystem<dim>                             fe;
+    DoFHandler<dim>                           dof_handler;
+    MappingQ1<dim>                            mapping;
+    /** Owned, with the ghosts the cells need. */
+    LinearAlgebra::distributed::Vector<double> displacement, velocity, mass,
+      force;
+    /** The owned nodes, ordered by global dof index. */
+    std::vector<Node> nodes;
+    /** Per node, a velocity change that advance() adds to free nodes
+     * after their update and then clears (contact, fem/region_contact.h);
+     * empty when unused. */
+    std::vector<Tensor<1, dim>> velocity_correction;
+    /** APIC for bonded nodes (fem/bonded_coupling.h): per column j, the
+     * entry (c, j) of the node's B = sum N v_I (x) (x_I - x) at the dof of
+     * its component c, like the velocity; empty unless used. */
+    std::vector<LinearAlgebra::distributed::Vector<double>> affine;
 
     ReferenceData                              reference;
     const Material<dim>                       &material;
