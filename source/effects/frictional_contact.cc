@@ -1,6 +1,8 @@
 #include <dealmpm/effects/frictional_contact.h>
 #include <dealmpm/transfer/stencil_order.h>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace dealmpm
@@ -294,4 +296,114 @@ namespace dealmpm
 
   template class FrictionalContact<2>;
   template class FrictionalContact<3>;
+
+  namespace
+  {
+    /** "1 2: 0.4, 2 3: 0.1": body pairs (1-based in the scene, 0-based
+     * and ordered in the map) to friction coefficients. */
+    std::map<std::pair<unsigned int, unsigned int>, double>
+    read_pair_friction(SceneReader &reader, const std::string &entry)
+    {
+      const std::string expected =
+        "a list of 'b c: mu' items (two different body numbers, each pair "
+        "once, and a number mu >= 0)";
+      std::map<std::pair<unsigned int, unsigned int>, double> pairs;
+      for (const auto &item :
+           Utilities::split_string_list(reader.get(entry), ','))
+        {
+          const auto parts = Utilities::split_string_list(item, ':');
+          if (parts.size() != 2)
+            reader.fail(entry, expected);
+          std::vector<long> bodies;
+          double            mu = -1;
+          try
+            {
+              for (const auto &word :
+                   Utilities::split_string_list(parts[0], ' '))
+                if (!word.empty())
+                  bodies.push_back(Utilities::string_to_int(word));
+              mu = Utilities::string_to_double(parts[1]);
+            }
+          catch (...)
+            {
+              reader.fail(entry, expected);
+            }
+          if (bodies.size() != 2 || bodies[0] < 1 || bodies[1] < 1 ||
+              bodies[0] == bodies[1] || !(mu >= 0.) || !std::isfinite(mu))
+            reader.fail(entry, expected);
+          const std::pair<unsigned int, unsigned int> key(
+            std::min(bodies[0], bodies[1]) - 1,
+            std::max(bodies[0], bodies[1]) - 1);
+          if (pairs.count(key) > 0)
+            reader.fail(entry, expected);
+          pairs[key] = mu;
+        }
+      return pairs;
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  add_frictional_contact_effect(Registry<Effect<dim>> &registry)
+  {
+    registry.add(
+      "frictional contact",
+      "contact between bodies with Coulomb friction: each body moves in "
+      "its own nodal velocity field, corrected where bodies meet and "
+      "approach (section Frictional contact: Friction coefficient, Pair "
+      "friction coefficients, Normals).",
+      [](ParameterHandler &prm) {
+        prm.declare_entry("Friction coefficient",
+                          "0",
+                          Patterns::Double(0),
+                          "Coulomb coefficient mu >= 0 between any two "
+                          "bodies (0: frictionless).");
+        prm.declare_entry(
+          "Pair friction coefficients",
+          "",
+          Patterns::Anything(),
+          "Coefficients for particular pairs of bodies, e.g. '1 2: 0.4, "
+          "2 3: 0.1'; the other pairs take 'Friction coefficient'.");
+        prm.declare_entry(
+          "Normals",
+          "steepest mass gradient",
+          Patterns::Selection(
+            "steepest mass gradient|difference of bodies|mass gradient"),
+          "The contact normal of body b at node i, from g_b = sum over "
+          "b's particles of m_p grad N_i(x_p), which points out of b: "
+          "'steepest mass gradient' along g_b or -g_c, whichever of b "
+          "and the other body c is steeper (Nairn's maximum volume "
+          "gradient: the flat face of a base, not the corner of a block "
+          "sliding on it), 'difference of bodies' along g_b - g_others, "
+          "'mass gradient' along g_b alone (Bardenhagen's). The first two "
+          "give two bodies opposite normals, so that momentum is kept to "
+          "round-off.");
+        prm.declare_entry(
+          "Separation check",
+          "0",
+          Patterns::Double(0, 1),
+          "Contact at a node only where the bodies' particles fill at "
+          "least this fraction of the node's volume (integral of N_i; "
+          "Uintah's volume constraint): bodies that share a node across "
+          "a gap narrower than a cell then do not touch before the gap "
+          "closes. 0: off (contact wherever two bodies have mass at a "
+          "node); 0.9 is a usual value. Costs a sweep over the particles.");
+      },
+      [](SceneReader &reader) -> std::unique_ptr<Effect<dim>> {
+        return std::make_unique<FrictionalContact<dim>>(
+          reader.get_nonnegative("Friction coefficient"),
+          read_pair_friction(reader, "Pair friction coefficients"),
+          reader.get("Normals") == "mass gradient" ?
+            FrictionalContact<dim>::Normals::own_mass_gradient :
+          reader.get("Normals") == "difference of bodies" ?
+            FrictionalContact<dim>::Normals::difference_of_bodies :
+            FrictionalContact<dim>::Normals::steepest_mass_gradient,
+          reader.get_double("Separation check"));
+      });
+  }
+
+  template void
+  add_frictional_contact_effect(Registry<Effect<2>> &);
+  template void
+  add_frictional_contact_effect(Registry<Effect<3>> &);
 } // namespace dealmpm

@@ -178,4 +178,10 @@ namespace dealmpm
     double                         work          = 0;
     double                         friction_part = 0;
   };
+
+  /** Register "frictional contact" in the effect table: its parameters (section
+   * Frictional contact), their reading and checks. */
+  template <int dim>
+  void
+  add_frictional_contact_effect(Registry<Effect<dim>> &registry);
 } // namespace dealmpm
