@@ -53,4 +53,56 @@ namespace dealmpm
 
   template class AbsorbingBoundary<2>;
   template class AbsorbingBoundary<3>;
+
+  template <int dim>
+  void
+  add_absorbing_boundary_effect(Registry<Effect<dim>> &registry)
+  {
+    registry.add(
+      "absorbing boundary",
+      "viscous dashpots on free grid boundaries that let waves leave "
+      "the grid (section Absorbing boundary: Boundary ids, Density, "
+      "P-wave speed, S-wave speed).",
+      [](ParameterHandler &prm) {
+        prm.declare_entry("Boundary ids",
+                          "",
+                          Patterns::List(Patterns::Integer(0)),
+                          "The free boundaries (ids without a condition "
+                          "in 'Grid/Boundary conditions') that absorb, "
+                          "e.g. '1, 2'.");
+        prm.declare_entry("Density",
+                          "0",
+                          Patterns::Double(0),
+                          "Density rho (kg/m^3) of the ground beyond the "
+                          "boundary, usually the body's next to it.");
+        prm.declare_entry("P-wave speed",
+                          "0",
+                          Patterns::Double(0),
+                          "c_p (m/s) of the ground beyond, sqrt((lambda "
+                          "+ 2 mu) / rho) for an elastic one: the normal "
+                          "dashpot is rho c_p per unit area.");
+        prm.declare_entry("S-wave speed",
+                          "0",
+                          Patterns::Double(0),
+                          "c_s (m/s), sqrt(mu / rho): the tangential "
+                          "dashpot is rho c_s per unit area.");
+      },
+      [](SceneReader &reader) -> std::unique_ptr<Effect<dim>> {
+        std::set<types::boundary_id> ids;
+        for (const double id : reader.get_doubles("Boundary ids"))
+          ids.insert(static_cast<types::boundary_id>(id));
+        if (ids.empty())
+          reader.fail("Boundary ids", "at least one boundary id");
+        return std::make_unique<AbsorbingBoundary<dim>>(
+          ids,
+          reader.get_positive("Density"),
+          reader.get_positive("P-wave speed"),
+          reader.get_nonnegative("S-wave speed"));
+      });
+  }
+
+  template void
+  add_absorbing_boundary_effect(Registry<Effect<2>> &);
+  template void
+  add_absorbing_boundary_effect(Registry<Effect<3>> &);
 } // namespace dealmpm

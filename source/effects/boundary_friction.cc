@@ -104,4 +104,37 @@ namespace dealmpm
 
   template class BoundaryFriction<2>;
   template class BoundaryFriction<3>;
+
+  template <int dim>
+  void
+  add_boundary_friction_effect(Registry<Effect<dim>> &registry)
+  {
+    registry.add(
+      "boundary friction",
+      "Coulomb friction on slip walls of the grid (section Boundary "
+      "friction: Coefficients).",
+      [](ParameterHandler &prm) {
+        prm.declare_entry(
+          "Coefficients",
+          "",
+          Patterns::Anything(),
+          "Friction coefficient per boundary id, e.g. '2: 0.3, 3: 0.5'; "
+          "each id must have 'slip' in 'Grid/Boundary conditions'.");
+      },
+      [](SceneReader &reader) -> std::unique_ptr<Effect<dim>> {
+        const std::map<unsigned int, double> read =
+          reader.get_id_nonnegatives("Coefficients");
+        const std::map<types::boundary_id, double> coefficients(read.begin(),
+                                                                read.end());
+        if (coefficients.empty())
+          reader.fail("Coefficients",
+                      "at least one 'id: friction coefficient' pair");
+        return std::make_unique<BoundaryFriction<dim>>(coefficients);
+      });
+  }
+
+  template void
+  add_boundary_friction_effect(Registry<Effect<2>> &);
+  template void
+  add_boundary_friction_effect(Registry<Effect<3>> &);
 } // namespace dealmpm

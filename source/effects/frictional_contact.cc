@@ -1,6 +1,8 @@
 #include <dealmpm/effects/frictional_contact.h>
 #include <dealmpm/transfer/stencil_order.h>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace dealmpm
@@ -171,6 +173,181 @@ namespace dealmpm
         body.velocity[d].update_ghost_values();
   }
 
+  namespace
+  {
+    /** The bodies with more than @p threshold mass at owned node @p i. */
+    template <int dim>
+    void
+    bodies_at(const NodalFieldSet<dim>  &set,
+              const unsigned int         i,
+              const double               threshold,
+              std::vector<unsigned int> &present)
+    {
+      present.clear();
+      for (unsigned int b = 0; b < set.body.size(); ++b)
+        if (set.body[b].mass.local_element(i) > threshold)
+          present.push_back(b);
+    }
+
+    /** Body @p b's g_b = sum_{p in b} m_p grad N_i(x_p) at owned node @p i. */
+    template <int dim>
+    Tensor<1, dim>
+    gradient_of(const NodalFieldSet<dim> &set,
+                const unsigned int        b,
+                const unsigned int        i)
+    {
+      Tensor<1, dim> g;
+      for (unsigned int d = 0; d < dim; ++d)
+        g[d] = set.mass_gradient[b][d].local_element(i);
+      return g;
+    }
+
+    /** The other body of @p present that @p b presses on at node @p i: the
+     * one with the steepest mass gradient (the fullest surface at the
+     * node); and that gradient. */
+    template <int dim>
+    std::pair<unsigned int, Tensor<1, dim>>
+    pressed_body(const NodalFieldSet<dim>        &set,
+                 const std::vector<unsigned int> &present,
+                 const unsigned int               b,
+                 const unsigned int               i)
+    {
+      unsigned int   other = b;
+      Tensor<1, dim> g_other;
+      for (const unsigned int c : present)
+        if (c != b && (other == b || gradient_of(set, c, i).norm_square() >
+                                       g_other.norm_square()))
+          {
+            other   = c;
+            g_other = gradient_of(set, c, i);
+          }
+      return {other, g_other};
+    }
+  } // namespace
+
+  template <int dim>
+  bool
+  FrictionalContact<dim>::filled(
+    const std::vector<const NodalVector *> &volumes,
+    const std::vector<unsigned int>        &present,
+    const unsigned int                      i) const
+  {
+    if (!(separation_check > 0))
+      return true;
+    // A gap at the node: the bodies' particles leave part of it
+    // empty, and they do not touch there yet.
+    double filled = 0;
+    for (const unsigned int b : present)
+      filled += volumes[b]->local_element(i);
+    return !(filled < separation_check * full_volume.local_element(i));
+  }
+
+  template <int dim>
+  Tensor<1, dim>
+  FrictionalContact<dim>::normal_direction(
+    const unsigned int    b,
+    const Tensor<1, dim> &g_b,
+    const unsigned int    other,
+    const Tensor<1, dim> &g_other,
+    const Tensor<1, dim> &gradient_sum) const
+  {
+    // sum_p m_p grad N_i(x_p) points from the particles towards
+    // the node: out of the body (it is minus the gradient of the
+    // nodal mass with respect to the node's position).
+    Tensor<1, dim> direction;
+    switch (normals)
+      {
+        case Normals::own_mass_gradient:
+          direction = g_b;
+          break;
+        case Normals::difference_of_bodies:
+          direction = 2. * g_b - gradient_sum;
+          break;
+        case Normals::steepest_mass_gradient:
+          // Of the pair, the body whose surface the node sees
+          // best gives the normal (the base, at a block's corner
+          // sliding on it); ties go to the lower number.
+          direction =
+            g_b.norm_square() > g_other.norm_square() ||
+                (g_b.norm_square() == g_other.norm_square() && b < other) ?
+              g_b :
+              -g_other;
+          break;
+      }
+    return direction;
+  }
+
+  template <int dim>
+  void
+  FrictionalContact<dim>::correct_body(NodalFields<dim>     &body,
+                                       const unsigned int    i,
+                                       const Tensor<1, dim> &v_cm,
+                                       const Tensor<1, dim> &n,
+                                       const unsigned int    b,
+                                       const unsigned int    other,
+                                       double               &taken,
+                                       double               &by_friction) const
+  {
+    const double   m_b = body.mass.local_element(i);
+    Tensor<1, dim> v;
+    for (unsigned int d = 0; d < dim; ++d)
+      v[d] = body.velocity[d].local_element(i);
+    const Tensor<1, dim> relative = v - v_cm;
+    const double         approach = relative * n;
+    if (!(approach > 0.))
+      return;
+    const double         mu          = coefficient(b, other);
+    const Tensor<1, dim> tangential  = relative - approach * n;
+    const double         slip        = tangential.norm();
+    Tensor<1, dim>       change      = -approach * n;
+    const Tensor<1, dim> normal_only = v + change;
+    if (slip > 0.)
+      change -= std::min(1., mu * approach / slip) * tangential;
+    const Tensor<1, dim> v_new = v + change;
+    // The contact force m_b change / dt works on the velocity the
+    // particles move with, v_new: the normal parts of a pair cancel
+    // (both end at the centre of mass's normal velocity), friction
+    // works on the slip that is left. (The kinetic energy the
+    // change takes off the node, 1/2 m_b (|v_new|^2 - |v|^2), has
+    // an extra -1/2 m_b |change|^2 that FLIP particles do not
+    // lose: counted, it made frictionless disks gain 4 % of their
+    // energy in the balance while their total energy held.)
+    taken += m_b * (change * v_new);
+    by_friction += m_b * ((v_new - normal_only) * v_new);
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        body.velocity[d].local_element(i) = v_new[d];
+        body.velocity_increment[d].local_element(i) += change[d];
+      }
+  }
+
+  template <int dim>
+  void
+  FrictionalContact<dim>::correct_node(NodalFieldSet<dim>              &set,
+                                       const unsigned int               i,
+                                       const std::vector<unsigned int> &present,
+                                       double                          &taken,
+                                       double &by_friction) const
+  {
+    Tensor<1, dim> v_cm, gradient_sum;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        v_cm[d] = set.core.velocity[d].local_element(i);
+        for (const unsigned int b : present)
+          gradient_sum[d] += set.mass_gradient[b][d].local_element(i);
+      }
+    for (const unsigned int b : present)
+      {
+        const auto [other, g_other]    = pressed_body(set, present, b, i);
+        const Tensor<1, dim> direction = normal_direction(
+          b, gradient_of(set, b, i), other, g_other, gradient_sum);
+        if (!(direction.norm() > 0.))
+          continue;
+        const Tensor<1, dim> n = direction / direction.norm();
+        correct_body(set.body[b], i, v_cm, n, b, other, taken, by_friction);
+      }
+  }
+
   template <int dim>
   std::pair<double, double>
   FrictionalContact<dim>::correct(NodalFieldSet<dim> &set,
@@ -186,112 +363,124 @@ namespace dealmpm
         volumes.push_back(&set.per_body("contact volume", b, 0));
     for (unsigned int i = 0; i < n_owned; ++i)
       {
-        present.clear();
-        for (unsigned int b = 0; b < n_bodies; ++b)
-          if (set.body[b].mass.local_element(i) > threshold)
-            present.push_back(b);
-        if (present.size() < 2)
+        bodies_at(set, i, threshold, present);
+        if (present.size() < 2 || !filled(volumes, present, i))
           continue;
-        if (separation_check > 0)
-          {
-            // A gap at the node: the bodies' particles leave part of it
-            // empty, and they do not touch there yet.
-            double filled = 0;
-            for (const unsigned int b : present)
-              filled += volumes[b]->local_element(i);
-            if (filled < separation_check * full_volume.local_element(i))
-              continue;
-          }
-        Tensor<1, dim> v_cm, gradient_sum;
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            v_cm[d] = set.core.velocity[d].local_element(i);
-            for (const unsigned int b : present)
-              gradient_sum[d] += set.mass_gradient[b][d].local_element(i);
-          }
-        const auto gradient_of = [&](const unsigned int b) {
-          Tensor<1, dim> g;
-          for (unsigned int d = 0; d < dim; ++d)
-            g[d] = set.mass_gradient[b][d].local_element(i);
-          return g;
-        };
-        for (const unsigned int b : present)
-          {
-            NodalFields<dim> &body = set.body[b];
-            const double      m_b  = body.mass.local_element(i);
-            Tensor<1, dim>    v;
-            for (unsigned int d = 0; d < dim; ++d)
-              v[d] = body.velocity[d].local_element(i);
-            // The other body b presses on: the one with the steepest mass
-            // gradient (the fullest surface at the node).
-            unsigned int   other = b;
-            Tensor<1, dim> g_other;
-            for (const unsigned int c : present)
-              if (c != b && (other == b || gradient_of(c).norm_square() >
-                                             g_other.norm_square()))
-                {
-                  other   = c;
-                  g_other = gradient_of(c);
-                }
-            // sum_p m_p grad N_i(x_p) points from the particles towards
-            // the node: out of the body (it is minus the gradient of the
-            // nodal mass with respect to the node's position).
-            const Tensor<1, dim> g_b = gradient_of(b);
-            Tensor<1, dim>       direction;
-            switch (normals)
-              {
-                case Normals::own_mass_gradient:
-                  direction = g_b;
-                  break;
-                case Normals::difference_of_bodies:
-                  direction = 2. * g_b - gradient_sum;
-                  break;
-                case Normals::steepest_mass_gradient:
-                  // Of the pair, the body whose surface the node sees
-                  // best gives the normal (the base, at a block's corner
-                  // sliding on it); ties go to the lower number.
-                  direction = g_b.norm_square() > g_other.norm_square() ||
-                                  (g_b.norm_square() == g_other.norm_square() &&
-                                   b < other) ?
-                                g_b :
-                                -g_other;
-                  break;
-              }
-            if (!(direction.norm() > 0.))
-              continue;
-            const Tensor<1, dim> n        = direction / direction.norm();
-            const Tensor<1, dim> relative = v - v_cm;
-            const double         approach = relative * n;
-            if (!(approach > 0.))
-              continue;
-            const double         mu          = coefficient(b, other);
-            const Tensor<1, dim> tangential  = relative - approach * n;
-            const double         slip        = tangential.norm();
-            Tensor<1, dim>       change      = -approach * n;
-            const Tensor<1, dim> normal_only = v + change;
-            if (slip > 0.)
-              change -= std::min(1., mu * approach / slip) * tangential;
-            const Tensor<1, dim> v_new = v + change;
-            // The contact force m_b change / dt works on the velocity the
-            // particles move with, v_new: the normal parts of a pair cancel
-            // (both end at the centre of mass's normal velocity), friction
-            // works on the slip that is left. (The kinetic energy the
-            // change takes off the node, 1/2 m_b (|v_new|^2 - |v|^2), has
-            // an extra -1/2 m_b |change|^2 that FLIP particles do not
-            // lose: counted, it made frictionless disks gain 4 % of their
-            // energy in the balance while their total energy held.)
-            taken += m_b * (change * v_new);
-            by_friction += m_b * ((v_new - normal_only) * v_new);
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                body.velocity[d].local_element(i) = v_new[d];
-                body.velocity_increment[d].local_element(i) += change[d];
-              }
-          }
+        correct_node(set, i, present, taken, by_friction);
       }
     return {taken, by_friction};
   }
 
   template class FrictionalContact<2>;
   template class FrictionalContact<3>;
+
+  namespace
+  {
+    /** "1 2: 0.4, 2 3: 0.1": body pairs (1-based in the scene, 0-based
+     * and ordered in the map) to friction coefficients. */
+    std::map<std::pair<unsigned int, unsigned int>, double>
+    read_pair_friction(SceneReader &reader, const std::string &entry)
+    {
+      const std::string expected =
+        "a list of 'b c: mu' items (two different body numbers, each pair "
+        "once, and a number mu >= 0)";
+      std::map<std::pair<unsigned int, unsigned int>, double> pairs;
+      for (const auto &item :
+           Utilities::split_string_list(reader.get(entry), ','))
+        {
+          const auto parts = Utilities::split_string_list(item, ':');
+          if (parts.size() != 2)
+            reader.fail(entry, expected);
+          std::vector<long> bodies;
+          double            mu = -1;
+          try
+            {
+              for (const auto &word :
+                   Utilities::split_string_list(parts[0], ' '))
+                if (!word.empty())
+                  bodies.push_back(Utilities::string_to_int(word));
+              mu = Utilities::string_to_double(parts[1]);
+            }
+          catch (...)
+            {
+              reader.fail(entry, expected);
+            }
+          if (bodies.size() != 2 || bodies[0] < 1 || bodies[1] < 1 ||
+              bodies[0] == bodies[1] || !(mu >= 0.) || !std::isfinite(mu))
+            reader.fail(entry, expected);
+          const std::pair<unsigned int, unsigned int> key(
+            std::min(bodies[0], bodies[1]) - 1,
+            std::max(bodies[0], bodies[1]) - 1);
+          if (pairs.count(key) > 0)
+            reader.fail(entry, expected);
+          pairs[key] = mu;
+        }
+      return pairs;
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  add_frictional_contact_effect(Registry<Effect<dim>> &registry)
+  {
+    registry.add(
+      "frictional contact",
+      "contact between bodies with Coulomb friction: each body moves in "
+      "its own nodal velocity field, corrected where bodies meet and "
+      "approach (section Frictional contact: Friction coefficient, Pair "
+      "friction coefficients, Normals).",
+      [](ParameterHandler &prm) {
+        prm.declare_entry("Friction coefficient",
+                          "0",
+                          Patterns::Double(0),
+                          "Coulomb coefficient mu >= 0 between any two "
+                          "bodies (0: frictionless).");
+        prm.declare_entry(
+          "Pair friction coefficients",
+          "",
+          Patterns::Anything(),
+          "Coefficients for particular pairs of bodies, e.g. '1 2: 0.4, "
+          "2 3: 0.1'; the other pairs take 'Friction coefficient'.");
+        prm.declare_entry(
+          "Normals",
+          "steepest mass gradient",
+          Patterns::Selection(
+            "steepest mass gradient|difference of bodies|mass gradient"),
+          "The contact normal of body b at node i, from g_b = sum over "
+          "b's particles of m_p grad N_i(x_p), which points out of b: "
+          "'steepest mass gradient' along g_b or -g_c, whichever of b "
+          "and the other body c is steeper (Nairn's maximum volume "
+          "gradient: the flat face of a base, not the corner of a block "
+          "sliding on it), 'difference of bodies' along g_b - g_others, "
+          "'mass gradient' along g_b alone (Bardenhagen's). The first two "
+          "give two bodies opposite normals, so that momentum is kept to "
+          "round-off.");
+        prm.declare_entry(
+          "Separation check",
+          "0",
+          Patterns::Double(0, 1),
+          "Contact at a node only where the bodies' particles fill at "
+          "least this fraction of the node's volume (integral of N_i; "
+          "Uintah's volume constraint): bodies that share a node across "
+          "a gap narrower than a cell then do not touch before the gap "
+          "closes. 0: off (contact wherever two bodies have mass at a "
+          "node); 0.9 is a usual value. Costs a sweep over the particles.");
+      },
+      [](SceneReader &reader) -> std::unique_ptr<Effect<dim>> {
+        return std::make_unique<FrictionalContact<dim>>(
+          reader.get_nonnegative("Friction coefficient"),
+          read_pair_friction(reader, "Pair friction coefficients"),
+          reader.get("Normals") == "mass gradient" ?
+            FrictionalContact<dim>::Normals::own_mass_gradient :
+          reader.get("Normals") == "difference of bodies" ?
+            FrictionalContact<dim>::Normals::difference_of_bodies :
+            FrictionalContact<dim>::Normals::steepest_mass_gradient,
+          reader.get_double("Separation check"));
+      });
+  }
+
+  template void
+  add_frictional_contact_effect(Registry<Effect<2>> &);
+  template void
+  add_frictional_contact_effect(Registry<Effect<3>> &);
 } // namespace dealmpm

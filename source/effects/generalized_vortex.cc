@@ -93,4 +93,41 @@ namespace dealmpm
 
   template class GeneralizedVortex<2>;
   template class GeneralizedVortex<3>;
+
+  template <int dim>
+  void
+  add_generalized_vortex_effect(Registry<Effect<dim>> &registry)
+  {
+    registry.add(
+      "generalized vortex",
+      "the generalized vortex on the annulus 0.75 < R < 1.25 (2D): "
+      "initial velocity, body force and exact displacement for error "
+      "norms (section Generalized vortex: Amplitude, Wave speed, and the "
+      "neo-Hookean material's Young's modulus, Poisson's ratio and "
+      "Density).",
+      [](ParameterHandler &prm) {
+        declare_known_motion(prm,
+                             1e3,
+                             "1000",
+                             "1",
+                             "1",
+                             "A in alpha = A sin(c pi t) h(R).",
+                             "c in sin(c pi t): the period is 2 / c.");
+      },
+      [](SceneReader &reader) -> std::unique_ptr<Effect<dim>> {
+        if (dim != 2)
+          reader.fail("Amplitude",
+                      "Dimension = 2: the generalized vortex is a 2D problem");
+        return std::make_unique<GeneralizedVortex<dim>>(
+          read_elastic_constants(reader).mu,
+          reader.get_positive("Density"),
+          reader.get_positive("Amplitude"),
+          reader.get_positive("Wave speed"));
+      });
+  }
+
+  template void
+  add_generalized_vortex_effect(Registry<Effect<2>> &);
+  template void
+  add_generalized_vortex_effect(Registry<Effect<3>> &);
 } // namespace dealmpm

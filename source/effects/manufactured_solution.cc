@@ -97,4 +97,38 @@ namespace dealmpm
 
   template class ManufacturedSolution<2>;
   template class ManufacturedSolution<3>;
+
+  template <int dim>
+  void
+  add_manufactured_solution_effect(Registry<Effect<dim>> &registry)
+  {
+    registry.add(
+      "manufactured solution",
+      "the axis-aligned manufactured solution of Wallstedt and Guilkey "
+      "(2008) on the unit square/cube: initial velocity, body force and "
+      "exact displacement for error norms (section Manufactured solution: "
+      "Amplitude, Wave speed, and the neo-Hookean material's Young's "
+      "modulus, Poisson's ratio and Density).",
+      [](ParameterHandler &prm) {
+        declare_known_motion(prm,
+                             1e4,
+                             "1",
+                             "0.05",
+                             "100",
+                             "Displacement amplitude A.",
+                             "c in sin(c pi t + phi): the period is 2 / c.");
+      },
+      [](SceneReader &reader) -> std::unique_ptr<Effect<dim>> {
+        return std::make_unique<ManufacturedSolution<dim>>(
+          read_elastic_constants(reader),
+          reader.get_positive("Density"),
+          reader.get_positive("Amplitude"),
+          reader.get_positive("Wave speed"));
+      });
+  }
+
+  template void
+  add_manufactured_solution_effect(Registry<Effect<2>> &);
+  template void
+  add_manufactured_solution_effect(Registry<Effect<3>> &);
 } // namespace dealmpm

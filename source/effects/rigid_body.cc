@@ -257,4 +257,139 @@ namespace dealmpm
   template struct RigidShape<3>;
   template class RigidBody<2>;
   template class RigidBody<3>;
+
+  namespace
+  {
+    template <int dim>
+    void
+    declare_rigid_body_parameters(ParameterHandler &prm)
+    {
+      const std::string zero = dim == 2 ? "0, 0" : "0, 0, 0";
+      prm.declare_entry("Shape",
+                        "box",
+                        Patterns::Selection("box|cylinder|half-space"),
+                        "box (Lower corner, Upper corner), cylinder "
+                        "(Center, Radius; a disk in 2D, along z in 3D) "
+                        "or half-space (Point on its face, outward "
+                        "Normal), where it starts.");
+      prm.declare_entry("Lower corner",
+                        zero,
+                        Patterns::List(Patterns::Double(), dim, dim),
+                        "Box: lower corner (m).");
+      prm.declare_entry("Upper corner",
+                        zero,
+                        Patterns::List(Patterns::Double(), dim, dim),
+                        "Box: upper corner (m).");
+      prm.declare_entry("Center",
+                        zero,
+                        Patterns::List(Patterns::Double(), dim, dim),
+                        "Cylinder: centre (m).");
+      prm.declare_entry("Radius",
+                        "0",
+                        Patterns::Double(0),
+                        "Cylinder: radius (m).");
+      prm.declare_entry("Point",
+                        zero,
+                        Patterns::List(Patterns::Double(), dim, dim),
+                        "Half-space: a point of its face (m).");
+      prm.declare_entry("Normal",
+                        zero,
+                        Patterns::List(Patterns::Double(), dim, dim),
+                        "Half-space: its outward normal, towards the "
+                        "material (need not be unit).");
+      prm.declare_entry("Velocity",
+                        dim == 2 ? "0; 0" : "0; 0; 0",
+                        Patterns::Anything(),
+                        "Its velocity (m/s), one expression of t per "
+                        "direction separated by ';'.");
+      prm.declare_entry("Load curve",
+                        "",
+                        Patterns::Anything(),
+                        "A factor on the velocity, piecewise linear in "
+                        "time: 't0: f0, t1: f1, ...' (a velocity "
+                        "table); empty for 1.");
+      prm.declare_entry("Direction mask",
+                        dim == 2 ? "1, 1" : "1, 1, 1",
+                        Patterns::List(Patterns::Integer(0, 1), dim, dim),
+                        "1 where it acts on the material's velocity "
+                        "component, 0 where it leaves it alone.");
+      prm.declare_entry("Friction coefficient",
+                        "0",
+                        Patterns::Double(0),
+                        "Coulomb's mu between it and the material.");
+      prm.declare_entry(
+        "Touch check",
+        "false",
+        Patterns::Bool(),
+        "true: it acts only on the nodes of particles whose domain "
+        "(half a particle spacing around them) reaches it, not on "
+        "every node with mass inside it: a disk rolling on it is held "
+        "at its contact point only, not on a cell-wide patch. Costs a "
+        "sweep over the particles.");
+    }
+
+    template <int dim>
+    std::unique_ptr<Effect<dim>>
+    read_rigid_body(SceneReader &reader)
+    {
+      typename RigidBody<dim>::Settings settings;
+      RigidShape<dim>                  &shape = settings.shape;
+      const std::string                 kind  = reader.get("Shape");
+      if (kind == "box")
+        {
+          shape.kind  = RigidShape<dim>::Kind::box;
+          shape.lower = reader.get_point<dim>("Lower corner");
+          shape.upper = reader.get_point<dim>("Upper corner");
+          for (unsigned int d = 0; d < dim; ++d)
+            if (!(shape.lower[d] < shape.upper[d]))
+              reader.fail("Upper corner",
+                          "a point above 'Lower corner' in every "
+                          "direction");
+        }
+      else if (kind == "cylinder")
+        {
+          shape.kind   = RigidShape<dim>::Kind::cylinder;
+          shape.centre = reader.get_point<dim>("Center");
+          shape.radius = reader.get_positive("Radius");
+        }
+      else
+        {
+          shape.kind                  = RigidShape<dim>::Kind::half_space;
+          shape.centre                = reader.get_point<dim>("Point");
+          const Tensor<1, dim> normal = reader.get_vector<dim>("Normal");
+          if (normal.norm() == 0.)
+            reader.fail("Normal", "a direction that is not zero");
+          shape.face_normal = normal / normal.norm();
+        }
+      settings.velocity =
+        Utilities::split_string_list(reader.get("Velocity"), ';');
+      settings.curve                 = LoadCurve::read(reader, "Load curve");
+      const std::vector<double> mask = reader.get_doubles("Direction mask");
+      for (unsigned int d = 0; d < dim; ++d)
+        settings.mask[d] = mask.at(d) != 0.;
+      settings.friction    = reader.get_nonnegative("Friction coefficient");
+      settings.touch_check = reader.get_bool("Touch check");
+      return std::make_unique<RigidBody<dim>>(settings, reader);
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  add_rigid_body_effect(Registry<Effect<dim>> &registry)
+  {
+    registry.add(
+      "rigid body",
+      "a rigid body moving with a prescribed velocity (a punch, a "
+      "piston, a moving wall or a fixed obstacle), with friction; its "
+      "reaction force goes to the statistics (section Rigid body: Shape, "
+      "Lower corner, Upper corner, Center, Radius, Point, Normal, "
+      "Velocity, Load curve, Direction mask, Friction coefficient).",
+      declare_rigid_body_parameters<dim>,
+      read_rigid_body<dim>);
+  }
+
+  template void
+  add_rigid_body_effect(Registry<Effect<2>> &);
+  template void
+  add_rigid_body_effect(Registry<Effect<3>> &);
 } // namespace dealmpm

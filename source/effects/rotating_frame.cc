@@ -75,4 +75,60 @@ namespace dealmpm
 
   template class RotatingFrame<2>;
   template class RotatingFrame<3>;
+
+  template <int dim>
+  void
+  add_rotating_frame_effect(Registry<Effect<dim>> &registry)
+  {
+    registry.add(
+      "rotating frame",
+      "the scene in a frame turning about an axis (a centrifuge): "
+      "centrifugal, Coriolis and, while it ramps up, Euler accelerations "
+      "(section Rotating frame: Angular velocity, Axis point, Ramp "
+      "time).",
+      [](ParameterHandler &prm) {
+        if (dim == 2)
+          prm.declare_entry("Angular velocity",
+                            "0",
+                            Patterns::Double(),
+                            "Omega (rad/s) about the z axis, "
+                            "counter-clockwise positive.");
+        else
+          prm.declare_entry("Angular velocity",
+                            "0, 0, 0",
+                            Patterns::List(Patterns::Double(), 3, 3),
+                            "The angular velocity vector omega (rad/s): "
+                            "the axis's direction times the rate.");
+        prm.declare_entry("Axis point",
+                          dim == 2 ? "0, 0" : "0, 0, 0",
+                          Patterns::List(Patterns::Double(), dim, dim),
+                          "A point on the axis of rotation.");
+        prm.declare_entry("Ramp time",
+                          "0",
+                          Patterns::Double(0),
+                          "0: full rotation from t = 0. T > 0: omega "
+                          "grows linearly from 0 over [0, T] (s), as a "
+                          "centrifuge spins up.");
+      },
+      [](SceneReader &reader) -> std::unique_ptr<Effect<dim>> {
+        Tensor<1, 3> omega;
+        if (dim == 2)
+          omega[2] = reader.get_double("Angular velocity");
+        else
+          omega = reader.get_vector<3>("Angular velocity");
+        if (omega.norm() == 0.)
+          reader.fail("Angular velocity",
+                      "a rotation that is not zero (without one, leave "
+                      "'rotating frame' out of 'Effects')");
+        return std::make_unique<RotatingFrame<dim>>(
+          omega,
+          reader.get_point<dim>("Axis point"),
+          reader.get_nonnegative("Ramp time"));
+      });
+  }
+
+  template void
+  add_rotating_frame_effect(Registry<Effect<2>> &);
+  template void
+  add_rotating_frame_effect(Registry<Effect<3>> &);
 } // namespace dealmpm

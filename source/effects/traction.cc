@@ -216,4 +216,96 @@ namespace dealmpm
 
   template class Traction<2>;
   template class Traction<3>;
+
+  namespace
+  {
+    template <int dim>
+    void
+    declare_traction_parameters(ParameterHandler &prm)
+    {
+      prm.declare_entry("Bodies",
+                        "",
+                        Patterns::List(Patterns::Integer(1)),
+                        "Bodies (numbers from 1) whose surface "
+                        "particles carry the load, e.g. '1, 3'.");
+      prm.declare_entry("Surface selection",
+                        "1",
+                        Patterns::Anything(),
+                        "Which of their surface particles: an "
+                        "expression of the initial position (x, y, z) "
+                        "that is nonzero where the load acts, e.g. "
+                        "'y > 0.99' for a top face.");
+      prm.declare_entry("Boundary ids",
+                        "",
+                        Patterns::List(Patterns::Integer(0)),
+                        "Free grid boundaries (ids without a condition "
+                        "in 'Grid/Boundary conditions') loaded where "
+                        "material touches them.");
+      prm.declare_entry("Traction",
+                        dim == 2 ? "0; 0" : "0; 0; 0",
+                        Patterns::Anything(),
+                        "Force per unit area (Pa), one expression of "
+                        "x, y, (z,) t per direction separated by ';', "
+                        "per unit initial area on particles.");
+      prm.declare_entry("Pressure",
+                        "0",
+                        Patterns::Anything(),
+                        "Pressure (Pa) pushing into the body, an "
+                        "expression of x, y, (z,) t.");
+      prm.declare_entry("Follower pressure",
+                        "false",
+                        Patterns::Bool(),
+                        "On particles: true, the pressure acts on the "
+                        "deformed surface (J F^-T A0); false, on the "
+                        "initial one (dead load).");
+      prm.declare_entry("Load curve",
+                        "",
+                        Patterns::Anything(),
+                        "A factor on both, piecewise linear in time: "
+                        "'t0: f0, t1: f1, ...', constant outside; "
+                        "empty for 1.");
+    }
+
+    template <int dim>
+    std::unique_ptr<Effect<dim>>
+    read_traction(SceneReader &reader)
+    {
+      typename Traction<dim>::Settings settings;
+      for (const double b : reader.get_doubles("Bodies"))
+        settings.bodies.insert(static_cast<unsigned int>(b) - 1);
+      for (const double id : reader.get_doubles("Boundary ids"))
+        settings.boundary_ids.insert(static_cast<types::boundary_id>(id));
+      if (settings.bodies.empty() && settings.boundary_ids.empty())
+        reader.fail("Bodies",
+                    "at least one body or one of 'Boundary ids' to "
+                    "load");
+      settings.selection = reader.get("Surface selection");
+      settings.traction =
+        Utilities::split_string_list(reader.get("Traction"), ';');
+      settings.pressure = reader.get("Pressure");
+      settings.follower = reader.get_bool("Follower pressure");
+      settings.curve    = LoadCurve::read(reader, "Load curve");
+      return std::make_unique<Traction<dim>>(settings, reader);
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  add_traction_effect(Registry<Effect<dim>> &registry)
+  {
+    registry.add(
+      "traction",
+      "surface loads, a traction and a pressure (expressions of x and t "
+      "times a load curve), on the surface particles of bodies and on "
+      "free grid boundaries (section Traction: Bodies, Surface "
+      "selection, Boundary ids, Traction, Pressure, Follower pressure, "
+      "Load curve).",
+      declare_traction_parameters<dim>,
+      read_traction<dim>);
+  }
+
+  template void
+  add_traction_effect(Registry<Effect<2>> &);
+  template void
+  add_traction_effect(Registry<Effect<3>> &);
 } // namespace dealmpm

@@ -1,4 +1,5 @@
 #include <dealmpm/materials/drucker_prager.h>
+#include <dealmpm/materials/friction_angles.h>
 
 #include <cmath>
 
@@ -82,4 +83,59 @@ namespace dealmpm
 
   template class DruckerPrager<2>;
   template class DruckerPrager<3>;
+
+  namespace
+  {
+    void
+    declare_drucker_prager_parameters(ParameterHandler &prm)
+    {
+      // Aluminium bars of Bui et al. (2008)'s granular column.
+      declare_elastic_constants(prm, 0.84e6, 0.3);
+      declare_friction_parameters(prm,
+                                  "19.8",
+                                  "Mohr-Coulomb friction angle phi "
+                                  "(degrees), in [0, 90).",
+                                  "Cohesion c (Pa), >= 0; 0: no tension.");
+      prm.declare_entry(
+        "Matching",
+        "plane strain",
+        Patterns::Selection("plane strain|outer cone|inner cone"),
+        "How the cone matches Mohr-Coulomb: 'plane strain' (the same "
+        "collapse loads in plane strain), 'outer cone' (triaxial "
+        "compression), 'inner cone' (triaxial extension).");
+    }
+
+    DruckerPragerCone
+    read_drucker_prager(SceneReader &reader)
+    {
+      const auto angles = read_friction_angles(reader);
+      return DruckerPragerCone::matched(reader.get("Matching"),
+                                        angles[0],
+                                        angles[1],
+                                        reader.get_nonnegative("Cohesion"));
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  add_drucker_prager_material(Registry<Material<dim>> &registry)
+  {
+    registry.add(
+      "Drucker-Prager",
+      "non-associative Drucker-Prager plasticity on Hencky elasticity, "
+      "perfectly plastic, return to the cone or its apex (Young's "
+      "modulus, Poisson's ratio, Friction angle, Dilation angle, "
+      "Cohesion, Matching); for soils and granular flows.",
+      declare_drucker_prager_parameters,
+      [](SceneReader &reader) -> std::unique_ptr<Material<dim>> {
+        const LameParameters lame = read_elastic_constants(reader);
+        return std::make_unique<DruckerPrager<dim>>(
+          lame, read_drucker_prager(reader));
+      });
+  }
+
+  template void
+  add_drucker_prager_material(Registry<Material<2>> &);
+  template void
+  add_drucker_prager_material(Registry<Material<3>> &);
 } // namespace dealmpm

@@ -104,4 +104,67 @@ namespace dealmpm
 
   template class J2Plasticity<2>;
   template class J2Plasticity<3>;
+
+  namespace
+  {
+    void
+    declare_j2_parameters(ParameterHandler &prm)
+    {
+      declare_elastic_constants(prm, 200e9, 0.3);
+      prm.declare_entry("Yield stress",
+                        "250e6",
+                        Patterns::Double(),
+                        "Initial yield stress sigma_y0 (Pa), > 0.");
+      prm.declare_entry("Hardening modulus",
+                        "0",
+                        Patterns::Double(),
+                        "Linear hardening modulus H (Pa), >= 0.");
+      prm.declare_entry("Hardening coefficient",
+                        "0",
+                        Patterns::Double(),
+                        "Power-law hardening coefficient B (Pa), >= 0.");
+      prm.declare_entry("Hardening exponent",
+                        "1",
+                        Patterns::Double(),
+                        "Power-law hardening exponent n, in (0, 1].");
+    }
+
+    IsotropicHardening
+    read_j2_hardening(SceneReader &reader)
+    {
+      IsotropicHardening h;
+      h.yield_stress = reader.get_positive("Yield stress");
+      h.modulus      = reader.get_nonnegative("Hardening modulus");
+      h.coefficient  = reader.get_nonnegative("Hardening coefficient");
+      h.exponent     = reader.get_positive("Hardening exponent");
+      if (h.exponent > 1)
+        reader.fail("Hardening exponent", "a number in (0, 1]");
+      return h;
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  add_j2_plasticity_material(Registry<Material<dim>> &registry)
+  {
+    registry.add(
+      "J2 plasticity",
+      "finite-strain von Mises plasticity (Simo 1992): Hencky "
+      "elasticity in the logarithmic elastic strain, radial return, "
+      "isotropic hardening sigma_y = Yield stress + Hardening modulus "
+      "alpha + Hardening coefficient alpha^Hardening exponent (Young's "
+      "modulus, Poisson's ratio, Yield stress, Hardening modulus, "
+      "Hardening coefficient, Hardening exponent).",
+      declare_j2_parameters,
+      [](SceneReader &reader) -> std::unique_ptr<Material<dim>> {
+        const LameParameters lame = read_elastic_constants(reader);
+        return std::make_unique<J2Plasticity<dim>>(lame,
+                                                   read_j2_hardening(reader));
+      });
+  }
+
+  template void
+  add_j2_plasticity_material(Registry<Material<2>> &);
+  template void
+  add_j2_plasticity_material(Registry<Material<3>> &);
 } // namespace dealmpm

@@ -89,4 +89,113 @@ namespace dealmpm
 
   template class JohnsonCook<2>;
   template class JohnsonCook<3>;
+
+  namespace
+  {
+    /** The Johnson-Cook entries: name, default, documentation. */
+    struct JohnsonCookEntry
+    {
+      const char *name;
+      double JohnsonCookParameters::*member;
+      const char                    *documentation;
+    };
+    const JohnsonCookEntry johnson_cook_entries[] = {
+      {"A", &JohnsonCookParameters::A, "Yield stress A (Pa), > 0."},
+      {"B", &JohnsonCookParameters::B, "Hardening coefficient B (Pa), >= 0."},
+      {"n", &JohnsonCookParameters::n, "Hardening exponent n, in (0, 1]."},
+      {"C", &JohnsonCookParameters::C, "Strain-rate coefficient C, >= 0."},
+      {"Reference strain rate",
+       &JohnsonCookParameters::reference_rate,
+       "Reference equivalent plastic strain rate (1/s), > 0."},
+      {"m", &JohnsonCookParameters::m, "Thermal softening exponent m, > 0."},
+      {"Room temperature",
+       &JohnsonCookParameters::room_temperature,
+       "Room (and initial) temperature (K), > 0."},
+      {"Melting temperature",
+       &JohnsonCookParameters::melting_temperature,
+       "Melting temperature (K), > Room temperature."},
+      {"Specific heat",
+       &JohnsonCookParameters::specific_heat,
+       "Specific heat c_p (J/(kg K)), > 0."},
+      {"Taylor-Quinney coefficient",
+       &JohnsonCookParameters::taylor_quinney,
+       "Fraction of the plastic work that heats the material, in [0, 1]; "
+       "0: no heating."},
+      {"D1",
+       &JohnsonCookParameters::D1,
+       "Damage constant D1 (with Damage indicator)."},
+      {"D2", &JohnsonCookParameters::D2, "Damage constant D2."},
+      {"D3", &JohnsonCookParameters::D3, "Damage constant D3 (triaxiality)."},
+      {"D4", &JohnsonCookParameters::D4, "Damage constant D4 (strain rate)."},
+      {"D5", &JohnsonCookParameters::D5, "Damage constant D5 (temperature)."}};
+
+    void
+    declare_johnson_cook_parameters(ParameterHandler &prm)
+    {
+      // OFHC copper (Johnson and Cook 1983).
+      declare_elastic_constants(prm, 124e9, 0.34);
+      const JohnsonCookParameters copper;
+      for (const auto &e : johnson_cook_entries)
+        prm.declare_entry(e.name,
+                          Utilities::to_string(copper.*(e.member)),
+                          Patterns::Double(),
+                          e.documentation);
+      prm.declare_entry(
+        "Damage indicator",
+        "false",
+        Patterns::Bool(),
+        "Accumulate Johnson and Cook's (1985) damage D = sum d eps_p / eps_f, "
+        "eps_f = [D1 + D2 exp(D3 sigma*)][1 + D4 ln(rate*)][1 + D5 T*], as "
+        "the particle field 'damage' (1: the model predicts fracture); the "
+        "stress is not softened.");
+    }
+
+    JohnsonCookParameters
+    read_johnson_cook(SceneReader &reader)
+    {
+      JohnsonCookParameters jc;
+      for (const auto &e : johnson_cook_entries)
+        jc.*(e.member) = reader.get_double(e.name);
+      for (const char *positive : {"A",
+                                   "Reference strain rate",
+                                   "m",
+                                   "Room temperature",
+                                   "Specific heat"})
+        reader.get_positive(positive);
+      for (const char *nonnegative : {"B", "C"})
+        reader.get_nonnegative(nonnegative);
+      if (!(jc.n > 0 && jc.n <= 1))
+        reader.fail("n", "a number in (0, 1]");
+      if (!(jc.melting_temperature > jc.room_temperature))
+        reader.fail("Melting temperature",
+                    "a number above Room temperature (" +
+                      Utilities::to_string(jc.room_temperature) + ")");
+      if (!(jc.taylor_quinney >= 0 && jc.taylor_quinney <= 1))
+        reader.fail("Taylor-Quinney coefficient", "a number in [0, 1]");
+      jc.damage_indicator = reader.get_bool("Damage indicator");
+      return jc;
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  add_johnson_cook_material(Registry<Material<dim>> &registry)
+  {
+    registry.add("Johnson-Cook",
+                 "J2 plasticity with Johnson and Cook's flow stress (A + B "
+                 "alpha^n)(1 + C ln(rate / reference))(1 - T*^m) and adiabatic "
+                 "heating (temperature an internal variable); defaults: OFHC "
+                 "copper.",
+                 declare_johnson_cook_parameters,
+                 [](SceneReader &reader) -> std::unique_ptr<Material<dim>> {
+                   const LameParameters lame = read_elastic_constants(reader);
+                   return std::make_unique<JohnsonCook<dim>>(
+                     lame, read_johnson_cook(reader));
+                 });
+  }
+
+  template void
+  add_johnson_cook_material(Registry<Material<2>> &);
+  template void
+  add_johnson_cook_material(Registry<Material<3>> &);
 } // namespace dealmpm

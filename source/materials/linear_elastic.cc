@@ -55,4 +55,24 @@ namespace dealmpm
 
   template class LinearElastic<2>;
   template class LinearElastic<3>;
+
+  template <int dim>
+  void
+  add_linear_elastic_material(Registry<Material<dim>> &registry)
+  {
+    registry.add(
+      "linear elastic",
+      "isotropic small-strain elasticity in rate form (Young's modulus, "
+      "Poisson's ratio).",
+      [](ParameterHandler &prm) { declare_elastic_constants(prm, 1e3, 0.3); },
+      [](SceneReader &reader) -> std::unique_ptr<Material<dim>> {
+        return std::make_unique<LinearElastic<dim>>(
+          read_elastic_constants(reader));
+      });
+  }
+
+  template void
+  add_linear_elastic_material(Registry<Material<2>> &);
+  template void
+  add_linear_elastic_material(Registry<Material<3>> &);
 } // namespace dealmpm

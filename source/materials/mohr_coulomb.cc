@@ -1,3 +1,4 @@
+#include <dealmpm/materials/friction_angles.h>
 #include <dealmpm/materials/mohr_coulomb.h>
 
 #include <Eigen/Dense>
@@ -200,4 +201,70 @@ namespace dealmpm
 
   template class MohrCoulomb<2>;
   template class MohrCoulomb<3>;
+
+  namespace
+  {
+    void
+    declare_mohr_coulomb_parameters(ParameterHandler &prm)
+    {
+      // A dense sand.
+      declare_elastic_constants(prm, 50e6, 0.3);
+      declare_friction_parameters(
+        prm,
+        "30",
+        "Friction angle phi (degrees), in [0, 90); 0: Tresca.",
+        "Cohesion c (Pa), >= 0; 0: no tension (the apex at zero stress). "
+        "Tresca (phi = 0) needs c > 0.");
+      prm.declare_entry("Tension cut-off",
+                        "false",
+                        Patterns::Bool(),
+                        "Cap every principal stress at the Tensile strength "
+                        "(Rankine), below Mohr-Coulomb's own apex c cot(phi).");
+      prm.declare_entry("Tensile strength",
+                        "0",
+                        Patterns::Double(),
+                        "T (Pa), >= 0: the largest principal stress with the "
+                        "Tension cut-off.");
+    }
+
+    MohrCoulombParameters
+    read_mohr_coulomb(SceneReader &reader)
+    {
+      MohrCoulombParameters mc;
+      const auto            angles = read_friction_angles(reader);
+      mc.friction_angle            = angles[0];
+      mc.dilation_angle            = angles[1];
+      mc.cohesion                  = reader.get_nonnegative("Cohesion");
+      if (mc.friction_angle == 0 && !(mc.cohesion > 0))
+        reader.fail("Cohesion", "a positive number when Friction angle is 0");
+      const double strength = reader.get_nonnegative("Tensile strength");
+      if (reader.get_bool("Tension cut-off"))
+        mc.tension_cut_off = strength;
+      return mc;
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  add_mohr_coulomb_material(Registry<Material<dim>> &registry)
+  {
+    registry.add(
+      "Mohr-Coulomb",
+      "non-associative Mohr-Coulomb plasticity on Hencky elasticity, "
+      "perfectly plastic, principal-stress return to a plane, an edge "
+      "or the apex, optional tension cut-off (Young's modulus, "
+      "Poisson's ratio, Friction angle, Dilation angle, Cohesion, "
+      "Tension cut-off, Tensile strength); for soils and rock.",
+      declare_mohr_coulomb_parameters,
+      [](SceneReader &reader) -> std::unique_ptr<Material<dim>> {
+        const LameParameters lame = read_elastic_constants(reader);
+        return std::make_unique<MohrCoulomb<dim>>(lame,
+                                                  read_mohr_coulomb(reader));
+      });
+  }
+
+  template void
+  add_mohr_coulomb_material(Registry<Material<2>> &);
+  template void
+  add_mohr_coulomb_material(Registry<Material<3>> &);
 } // namespace dealmpm

@@ -63,4 +63,24 @@ namespace dealmpm
 
   template class NeoHookean<2>;
   template class NeoHookean<3>;
+
+  template <int dim>
+  void
+  add_neo_hookean_material(Registry<Material<dim>> &registry)
+  {
+    registry.add(
+      "neo-Hookean",
+      "compressible neo-Hookean hyperelasticity, stress from F "
+      "(Young's modulus, Poisson's ratio).",
+      [](ParameterHandler &prm) { declare_elastic_constants(prm, 1e3, 0.3); },
+      [](SceneReader &reader) -> std::unique_ptr<Material<dim>> {
+        return std::make_unique<NeoHookean<dim>>(
+          read_elastic_constants(reader));
+      });
+  }
+
+  template void
+  add_neo_hookean_material(Registry<Material<2>> &);
+  template void
+  add_neo_hookean_material(Registry<Material<3>> &);
 } // namespace dealmpm

@@ -91,4 +91,65 @@ namespace dealmpm
 
   template class TaitFluid<2>;
   template class TaitFluid<3>;
+
+  namespace
+  {
+    void
+    declare_tait_parameters(ParameterHandler &prm)
+    {
+      prm.declare_entry("Sound speed",
+                        "50",
+                        Patterns::Double(),
+                        "c0 (m/s), > 0: about 10 times the fastest flow keeps "
+                        "the density within 1 % (weakly compressible); the "
+                        "time step scales with 1 / c0.");
+      prm.declare_entry("Exponent",
+                        "7",
+                        Patterns::Double(),
+                        "gamma of Tait's equation p = B (J^-gamma - 1), "
+                        "> 1 (7 for water).");
+      prm.declare_entry("Viscosity",
+                        "1e-3",
+                        Patterns::Double(),
+                        "Dynamic viscosity mu (Pa s), >= 0 (1e-3 for water).");
+      prm.declare_entry("Tension cut-off",
+                        "true",
+                        Patterns::Bool(),
+                        "No negative pressure (free surfaces do not pull).");
+    }
+
+    TaitParameters
+    read_tait(SceneReader &reader)
+    {
+      TaitParameters t;
+      t.sound_speed = reader.get_positive("Sound speed");
+      t.exponent    = reader.get_double("Exponent");
+      if (!(t.exponent > 1))
+        reader.fail("Exponent", "a number > 1");
+      t.viscosity       = reader.get_nonnegative("Viscosity");
+      t.tension_cut_off = reader.get_bool("Tension cut-off");
+      return t;
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  add_tait_fluid_material(Registry<Material<dim>> &registry)
+  {
+    registry.add(
+      "Tait fluid",
+      "weakly compressible Newtonian fluid: Tait's equation of state "
+      "from J, viscous stress 2 mu dev(D), optional tension cut-off; F "
+      "is reset to J^(1/dim) I (Sound speed, Exponent, Viscosity, "
+      "Tension cut-off).",
+      declare_tait_parameters,
+      [](SceneReader &reader) -> std::unique_ptr<Material<dim>> {
+        return std::make_unique<TaitFluid<dim>>(read_tait(reader));
+      });
+  }
+
+  template void
+  add_tait_fluid_material(Registry<Material<2>> &);
+  template void
+  add_tait_fluid_material(Registry<Material<3>> &);
 } // namespace dealmpm

@@ -64,4 +64,10 @@ namespace dealmpm
     double                         s_wave_speed;
     std::vector<BoundaryNode<dim>> nodes;
   };
+
+  /** Register "absorbing boundary" in the effect table: its parameters (section
+   * Absorbing boundary), their reading and checks. */
+  template <int dim>
+  void
+  add_absorbing_boundary_effect(Registry<Effect<dim>> &registry);
 } // namespace dealmpm

@@ -72,4 +72,10 @@ namespace dealmpm
     std::vector<BoundaryNode<dim>>       nodes;
     std::vector<double>                  pressed; ///< per node, this step
   };
+
+  /** Register "boundary friction" in the effect table: its parameters (section
+   * Boundary friction), their reading and checks. */
+  template <int dim>
+  void
+  add_boundary_friction_effect(Registry<Effect<dim>> &registry);
 } // namespace dealmpm

@@ -2,6 +2,8 @@
 
 #include <dealmpm/effects/effect.h>
 
+#include <string>
+
 namespace dealmpm
 {
   /**
@@ -60,4 +62,16 @@ namespace dealmpm
     /** Left-point sum of the power over the steps. */
     double work = 0;
   };
+
+  /** The entries of an effect with a known motion: the neo-Hookean
+   * material's constants (which must equal the material's), its
+   * amplitude and its wave speed. */
+  void
+  declare_known_motion(ParameterHandler  &prm,
+                       const double       youngs_modulus,
+                       const std::string &density,
+                       const std::string &amplitude,
+                       const std::string &wave_speed,
+                       const std::string &amplitude_doc,
+                       const std::string &wave_speed_doc);
 } // namespace dealmpm

@@ -165,6 +165,50 @@ namespace dealmpm
     std::pair<double, double>
     correct(NodalFieldSet<dim> &set, const double mass_threshold) const;
 
+    /** With the separation check: whether the particles of the bodies
+     * @p present at owned node @p i (their volumes at the nodes,
+     * @p volumes) fill enough of it to touch; true without it. */
+    bool
+    filled(const std::vector<const NodalVector *> &volumes,
+           const std::vector<unsigned int>        &present,
+           const unsigned int                      i) const;
+
+    /** The contact normal of body @p b (not yet of unit length, possibly
+     * zero) from its mass gradient @p g_b, that of the body @p other it
+     * presses on, @p g_other, and the sum over the bodies at the node,
+     * @p gradient_sum, as Normals asks. */
+    Tensor<1, dim>
+    normal_direction(const unsigned int    b,
+                     const Tensor<1, dim> &g_b,
+                     const unsigned int    other,
+                     const Tensor<1, dim> &g_other,
+                     const Tensor<1, dim> &gradient_sum) const;
+
+    /** Coulomb's correction of body @p b's velocity and its increment at
+     * owned node @p i against the centre of mass's @p v_cm, along the unit
+     * normal @p n, if it approaches; its pair's coefficient with @p other.
+     * Adds the correction's work to @p taken, its friction part to
+     * @p by_friction. */
+    void
+    correct_body(NodalFields<dim>     &body,
+                 const unsigned int    i,
+                 const Tensor<1, dim> &v_cm,
+                 const Tensor<1, dim> &n,
+                 const unsigned int    b,
+                 const unsigned int    other,
+                 double               &taken,
+                 double               &by_friction) const;
+
+    /** Contact at owned node @p i between the bodies @p present there (two
+     * or more): each body's normal against the one it presses on, then its
+     * correction. Adds the work as correct_body() does. */
+    void
+    correct_node(NodalFieldSet<dim>              &set,
+                 const unsigned int               i,
+                 const std::vector<unsigned int> &present,
+                 double                          &taken,
+                 double                          &by_friction) const;
+
     double                                                  friction;
     std::map<std::pair<unsigned int, unsigned int>, double> pair_friction;
     Normals                                                 normals;
@@ -178,4 +222,10 @@ namespace dealmpm
     double                         work          = 0;
     double                         friction_part = 0;
   };
+
+  /** Register "frictional contact" in the effect table: its parameters (section
+   * Frictional contact), their reading and checks. */
+  template <int dim>
+  void
+  add_frictional_contact_effect(Registry<Effect<dim>> &registry);
 } // namespace dealmpm

@@ -36,4 +36,10 @@ namespace dealmpm
   private:
     double mu, density, amplitude, wave_speed;
   };
+
+  /** Register "generalized vortex" in the effect table: its parameters (section
+   * Generalized vortex), their reading and checks. */
+  template <int dim>
+  void
+  add_generalized_vortex_effect(Registry<Effect<dim>> &registry);
 } // namespace dealmpm

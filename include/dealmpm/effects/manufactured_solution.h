@@ -43,4 +43,10 @@ namespace dealmpm
     double         amplitude;
     double         wave_speed;
   };
+
+  /** Register "manufactured solution" in the effect table: its parameters
+   * (section Manufactured solution), their reading and checks. */
+  template <int dim>
+  void
+  add_manufactured_solution_effect(Registry<Effect<dim>> &registry);
 } // namespace dealmpm

@@ -2,8 +2,8 @@
 
 #include <deal.II/base/function_parser.h>
 
-#include <dealmpm/effects/effect.h>
 #include <dealmpm/base/load_curve.h>
+#include <dealmpm/effects/effect.h>
 
 #include <string>
 #include <vector>
@@ -156,4 +156,10 @@ namespace dealmpm
     NodalVector touched;
     double      work = 0;
   };
+
+  /** Register "rigid body" in the effect table: its parameters (section
+   * Rigid body), their reading and checks. */
+  template <int dim>
+  void
+  add_rigid_body_effect(Registry<Effect<dim>> &registry);
 } // namespace dealmpm

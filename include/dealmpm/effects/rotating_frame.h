@@ -66,4 +66,10 @@ namespace dealmpm
     Point<dim>   axis_point;
     double       ramp_time;
   };
+
+  /** Register "rotating frame" in the effect table: its parameters (section
+   * Rotating frame), their reading and checks. */
+  template <int dim>
+  void
+  add_rotating_frame_effect(Registry<Effect<dim>> &registry);
 } // namespace dealmpm

@@ -2,8 +2,8 @@
 
 #include <deal.II/base/function_parser.h>
 
-#include <dealmpm/effects/effect_with_work.h>
 #include <dealmpm/base/load_curve.h>
+#include <dealmpm/effects/effect_with_work.h>
 #include <dealmpm/grid/boundary_nodes.h>
 
 #include <memory>
@@ -90,4 +90,10 @@ namespace dealmpm
     std::vector<BoundaryNode<dim>> nodes;
     std::array<NodalVector, dim>   nodal_load;
   };
+
+  /** Register "traction" in the effect table: its parameters (section
+   * Traction), their reading and checks. */
+  template <int dim>
+  void
+  add_traction_effect(Registry<Effect<dim>> &registry);
 } // namespace dealmpm

@@ -52,4 +52,11 @@ namespace dealmpm
   private:
     DruckerPragerCone cone;
   };
+
+  /** Register "Drucker-Prager" in the material table: its parameters
+   * (subsection "Drucker-Prager" of a "Material N" section), their reading and
+   * checks. */
+  template <int dim>
+  void
+  add_drucker_prager_material(Registry<Material<dim>> &registry);
 } // namespace dealmpm

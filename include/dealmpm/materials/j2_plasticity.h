@@ -71,4 +71,10 @@ namespace dealmpm
 
     const IsotropicHardening hardening;
   };
+
+  /** Register "J2 plasticity" in the material table: its parameters (subsection
+   * "J2 plasticity" of a "Material N" section), their reading and checks. */
+  template <int dim>
+  void
+  add_j2_plasticity_material(Registry<Material<dim>> &registry);
 } // namespace dealmpm

@@ -93,4 +93,10 @@ namespace dealmpm
   private:
     JohnsonCookParameters jc;
   };
+
+  /** Register "Johnson-Cook" in the material table: its parameters (subsection
+   * "Johnson-Cook" of a "Material N" section), their reading and checks. */
+  template <int dim>
+  void
+  add_johnson_cook_material(Registry<Material<dim>> &registry);
 } // namespace dealmpm

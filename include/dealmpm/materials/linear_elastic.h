@@ -54,4 +54,11 @@ namespace dealmpm
   private:
     LameParameters lame;
   };
+
+  /** Register "linear elastic" in the material table: its parameters
+   * (subsection "linear elastic" of a "Material N" section), their reading and
+   * checks. */
+  template <int dim>
+  void
+  add_linear_elastic_material(Registry<Material<dim>> &registry);
 } // namespace dealmpm

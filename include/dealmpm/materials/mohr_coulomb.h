@@ -56,4 +56,10 @@ namespace dealmpm
     MohrCoulombParameters parameters;
     double                sin_phi, sin_psi, two_c_cos_phi;
   };
+
+  /** Register "Mohr-Coulomb" in the material table: its parameters (subsection
+   * "Mohr-Coulomb" of a "Material N" section), their reading and checks. */
+  template <int dim>
+  void
+  add_mohr_coulomb_material(Registry<Material<dim>> &registry);
 } // namespace dealmpm

@@ -41,4 +41,10 @@ namespace dealmpm
   private:
     LameParameters lame;
   };
+
+  /** Register "neo-Hookean" in the material table: its parameters (subsection
+   * "neo-Hookean" of a "Material N" section), their reading and checks. */
+  template <int dim>
+  void
+  add_neo_hookean_material(Registry<Material<dim>> &registry);
 } // namespace dealmpm

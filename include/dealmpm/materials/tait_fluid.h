@@ -78,4 +78,10 @@ namespace dealmpm
   private:
     TaitParameters parameters;
   };
+
+  /** Register "Tait fluid" in the material table: its parameters (subsection
+   * "Tait fluid" of a "Material N" section), their reading and checks. */
+  template <int dim>
+  void
+  add_tait_fluid_material(Registry<Material<dim>> &registry);
 } // namespace dealmpm
