@@ -52,10 +52,8 @@ namespace dealmpm
     const CheckpointInfo *saved_run = saved ? &*saved : nullptr;
     build_grid(reader, saved_run);
     create_particles(reader, saved_run);
-    if (adaptivity.enabled())
-      start_adaptivity(reader);
-    if (run_settings.load_balance.enabled)
-      start_load_balance(saved_run);
+    start_adaptivity(reader);
+    start_load_balance(saved_run);
     for (const auto &effect : effects)
       {
         for (const FieldDescription &field : effect->nodal_fields_per_body())

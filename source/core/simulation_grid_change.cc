@@ -18,7 +18,7 @@ namespace dealmpm
   Simulation<dim>::start_adaptivity(SceneReader &reader)
   {
     // A resumed run has its adapted grid from the checkpoint.
-    if (!resumed_checkpoint.empty())
+    if (!adaptivity.enabled() || !resumed_checkpoint.empty())
       return;
     // One level per round (the particles criterion refines only the cells
     // that hold particles now); after each, the bodies are filled again on

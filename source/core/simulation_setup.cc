@@ -74,6 +74,8 @@ namespace dealmpm
   void
   Simulation<dim>::start_load_balance(const CheckpointInfo *saved)
   {
+    if (!run_settings.load_balance.enabled)
+      return;
     particle_weights =
       connect_particle_weights(grid.triangulation,
                                particles->handler,
