@@ -4,9 +4,9 @@
 // "set Criteria = ground band" in its Adaptivity section.
 //
 //   ./custom_refinement ../examples/custom_refinement.prm
+#include <dealmpm/adaptivity/adaptivity.h>
 #include <dealmpm/app/program.h>
 #include <dealmpm/core/simulation.h>
-#include <dealmpm/adaptivity/adaptivity.h>
 
 using namespace dealmpm;
 

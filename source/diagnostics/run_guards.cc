@@ -1,5 +1,5 @@
-#include <dealmpm/diagnostics/run_guards.h>
 #include <dealmpm/base/run_messages.h>
+#include <dealmpm/diagnostics/run_guards.h>
 #include <dealmpm/diagnostics/statistics.h>
 
 #include <iomanip>

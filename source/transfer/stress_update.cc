@@ -1,5 +1,5 @@
-#include <dealmpm/transfer/stress_update.h>
 #include <dealmpm/transfer/stencil_order.h>
+#include <dealmpm/transfer/stress_update.h>
 
 namespace dealmpm
 {

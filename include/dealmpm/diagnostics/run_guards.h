@@ -3,8 +3,8 @@
 #include <dealmpm/base/errors.h>
 #include <dealmpm/effects/effect.h>
 #include <dealmpm/materials/material.h>
-#include <dealmpm/transfer/stress_update.h>
 #include <dealmpm/particles/particle_set.h>
+#include <dealmpm/transfer/stress_update.h>
 
 #include <functional>
 #include <memory>

@@ -1,8 +1,8 @@
 #pragma once
 
+#include <dealmpm/adaptivity/load_balance.h>
 #include <dealmpm/effects/effect.h>
 #include <dealmpm/grid/background_grid.h>
-#include <dealmpm/adaptivity/load_balance.h>
 #include <dealmpm/materials/material.h>
 #include <dealmpm/particles/particle_set.h>
 

@@ -1,7 +1,7 @@
 #pragma once
 
-#include <dealmpm/grid/nodal_fields.h>
 #include <dealmpm/base/property_layout.h>
+#include <dealmpm/grid/nodal_fields.h>
 
 #include <memory>
 #include <stdexcept>

@@ -4,8 +4,8 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
-#include <dealmpm/base/registry.h>
 #include <dealmpm/base/property_layout.h>
+#include <dealmpm/base/registry.h>
 
 #include <memory>
 #include <string>
