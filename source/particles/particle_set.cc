@@ -29,6 +29,55 @@ namespace dealmpm
     }
   } // namespace
 
+  namespace
+  {
+    /** One block of internal variables per model in use, shared by the
+     * materials of that model: each material's count and offset. */
+    void
+    add_internal_variables(
+      const std::vector<std::string>                   &model_names,
+      const std::vector<std::vector<FieldDescription>> &internal_variables,
+      PropertyLayout                                   &layout,
+      std::vector<unsigned int>                        &n_internal,
+      std::vector<unsigned int>                        &internal_offset)
+    {
+      std::map<std::string, unsigned int> block_of_model;
+      for (unsigned int m = 0; m < internal_variables.size(); ++m)
+        {
+          unsigned int n = 0;
+          for (const auto &f : internal_variables[m])
+            n += f.n_components;
+          n_internal.push_back(n);
+          const auto it = block_of_model.find(model_names[m]);
+          if (it != block_of_model.end())
+            {
+              internal_offset.push_back(it->second);
+              continue;
+            }
+          unsigned int first = layout.size();
+          for (const auto &f : internal_variables[m])
+            layout.add(f.name, f.n_components);
+          block_of_model[model_names[m]] = first;
+          internal_offset.push_back(first);
+        }
+    }
+
+    /** The effects' fields; one under a name already taken would silently
+     * share (or overwrite) another part's storage. */
+    void
+    add_effect_fields(const std::vector<FieldDescription> &effect_fields,
+                      PropertyLayout                      &layout)
+    {
+      for (const FieldDescription &f : effect_fields)
+        {
+          if (layout.has(f.name))
+            throw std::logic_error("the particle field '" + f.name +
+                                   "' of an effect is already in the layout");
+          layout.add(f.name, f.n_components);
+        }
+    }
+  } // namespace
+
   template <int dim>
   ParticleSet<dim>::ParticleSet(
     const Triangulation<dim>                         &tria,
@@ -50,36 +99,9 @@ namespace dealmpm
     fields.acceleration       = layout.has("acceleration") ?
                                   layout.offset("acceleration") :
                                   numbers::invalid_unsigned_int;
-    // One block of internal variables per model in use, shared by the
-    // materials of that model.
-    std::map<std::string, unsigned int> block_of_model;
-    for (unsigned int m = 0; m < internal_variables.size(); ++m)
-      {
-        unsigned int n = 0;
-        for (const auto &f : internal_variables[m])
-          n += f.n_components;
-        n_internal.push_back(n);
-        const auto it = block_of_model.find(model_names[m]);
-        if (it != block_of_model.end())
-          {
-            internal_offset.push_back(it->second);
-            continue;
-          }
-        unsigned int first = layout.size();
-        for (const auto &f : internal_variables[m])
-          layout.add(f.name, f.n_components);
-        block_of_model[model_names[m]] = first;
-        internal_offset.push_back(first);
-      }
-    // An effect's field under a name already taken would silently share
-    // (or overwrite) another part's storage.
-    for (const FieldDescription &f : effect_fields)
-      {
-        if (layout.has(f.name))
-          throw std::logic_error("the particle field '" + f.name +
-                                 "' of an effect is already in the layout");
-        layout.add(f.name, f.n_components);
-      }
+    add_internal_variables(
+      model_names, internal_variables, layout, n_internal, internal_offset);
+    add_effect_fields(effect_fields, layout);
     handler.initialize(tria, mapping, layout.size());
   }
 
