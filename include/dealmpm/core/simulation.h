@@ -112,7 +112,7 @@ namespace dealmpm
     change_grid(const std::function<void(Triangulation<dim> &)> &set_flags);
 
     /** Adapt the grid to the scene's 'Adaptivity' criteria (see
-     * grid/adaptivity.h), then split the particles too large for their
+     * adaptivity/adaptivity.h), then split the particles too large for their
      * new cells. Returns whether any cell was flagged. Collective. */
     bool
     adapt_grid();
