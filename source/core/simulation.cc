@@ -144,6 +144,14 @@ namespace dealmpm
     if (!regions.empty())
       state.fem_regions = &regions;
     state.previous_dt = loop.last_dt;
+    // Not with APIC yet: its C = B D^-1 is not reliable with linear shape
+    // functions (README "Limits"), and a spinning APIC body went unstable
+    // with the weights.
+    if (run_settings.method.scheme == UpdateScheme::USL &&
+        !run_settings.method.particle_update.newmark &&
+        !run_settings.method.apic && !kernel.gradient_shrinks_with_weight())
+      state.stable_mass =
+        stable_nodal_mass(dim, dt * max_signal_rate, mean_particle_mass);
     for (const Stage<dim> &stage : stages)
       stage.run(state, stage.name);
 

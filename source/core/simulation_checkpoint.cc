@@ -36,16 +36,17 @@ namespace dealmpm
       try
         {
           CheckpointInfo info;
-          info.dim             = dim;
-          info.n_ranks         = Utilities::MPI::n_mpi_processes(comm);
-          info.step            = loop.step;
-          info.time            = loop.time;
-          info.coarse_grid     = grid.coarse_checksum;
-          info.particle_layout = layout_description(particles->layout);
-          info.scene           = scene_entry_list;
-          info.mass_threshold  = mass_threshold;
-          info.max_signal_rate = max_signal_rate;
-          info.cfl_warned      = cfl_warned;
+          info.dim                = dim;
+          info.n_ranks            = Utilities::MPI::n_mpi_processes(comm);
+          info.step               = loop.step;
+          info.time               = loop.time;
+          info.coarse_grid        = grid.coarse_checksum;
+          info.particle_layout    = layout_description(particles->layout);
+          info.scene              = scene_entry_list;
+          info.mass_threshold     = mass_threshold;
+          info.mean_particle_mass = mean_particle_mass;
+          info.max_signal_rate    = max_signal_rate;
+          info.cfl_warned         = cfl_warned;
           info.write(folder + "/checkpoint.txt");
           std::ostringstream text;
           state.save(text);
@@ -135,7 +136,9 @@ namespace dealmpm
         effects[e]->restore_state(state);
       }
     restore_fem_regions(regions, resumed_checkpoint, saved.n_ranks, comm);
-    mass_threshold       = saved.mass_threshold;
+    mass_threshold = saved.mass_threshold;
+    if (saved.mean_particle_mass > 0)
+      mean_particle_mass = saved.mean_particle_mass;
     max_signal_rate      = saved.max_signal_rate;
     cfl_warned           = saved.cfl_warned;
     last_checkpoint_step = loop.step;

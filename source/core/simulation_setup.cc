@@ -260,8 +260,9 @@ namespace dealmpm
                            *particles,
                            comm);
     const Statistics s = statistics();
+    mean_particle_mass = s.mass / s.n_particles;
     mass_threshold =
-      run_settings.method.relative_mass_threshold * s.mass / s.n_particles;
+      run_settings.method.relative_mass_threshold * mean_particle_mass;
   }
 
   template <int dim>

@@ -1,4 +1,5 @@
 #include <dealmpm/effects/frictional_contact.h>
+#include <dealmpm/grid/grid_update.h>
 #include <dealmpm/transfer/stencil_order.h>
 
 #include <algorithm>
@@ -137,6 +138,9 @@ namespace dealmpm
     for (NodalFields<dim> &body : set.body)
       conditions->project_with_increment(body.velocity,
                                          body.velocity_increment);
+    if (state.stable_mass > 0)
+      for (NodalFields<dim> &body : set.body)
+        set_increment_weights(body, state.stable_mass);
     const auto [taken, by_friction] = correct(set, threshold);
     work += taken;
     friction_part += by_friction;

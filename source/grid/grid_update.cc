@@ -1,16 +1,35 @@
 #include <dealmpm/grid/grid_update.h>
 
+#include <algorithm>
+
 namespace dealmpm
 {
+  template <int dim>
+  void
+  set_increment_weights(NodalFields<dim> &fields, const double stable_mass)
+  {
+    if (fields.increment_weight.size() != fields.mass.size())
+      fields.increment_weight.reinit(fields.mass);
+    const unsigned int n_owned = fields.mass.locally_owned_size();
+    const double      *mass    = fields.mass.begin();
+    double            *w       = fields.increment_weight.begin();
+    for (unsigned int i = 0; i < n_owned; ++i)
+      w[i] = std::min(1., mass[i] / stable_mass);
+    fields.increment_weight.update_ghost_values();
+  }
+
   template <int dim>
   void
   update_nodal_velocity(NodalFields<dim>              &fields,
                         const double                   dt,
                         const double                   mass_threshold,
-                        const BoundaryConditions<dim> &boundary_conditions)
+                        const BoundaryConditions<dim> &boundary_conditions,
+                        const double                   stable_mass)
   {
     const unsigned int n_owned = fields.mass.locally_owned_size();
     const double      *mass    = fields.mass.begin();
+    if (stable_mass > 0)
+      set_increment_weights(fields, stable_mass);
     for (unsigned int d = 0; d < dim; ++d)
       {
         const double *p  = fields.momentum[d].begin();
@@ -57,13 +76,15 @@ namespace dealmpm
   }
 
 #define DEALMPM_INSTANTIATE(dim)                                         \
+  template void set_increment_weights(NodalFields<dim> &, double);       \
   template void velocity_from_momentum(NodalFields<dim> &,               \
                                        double,                           \
                                        const BoundaryConditions<dim> &); \
   template void update_nodal_velocity(NodalFields<dim> &,                \
                                       double,                            \
                                       double,                            \
-                                      const BoundaryConditions<dim> &);
+                                      const BoundaryConditions<dim> &,   \
+                                      double);
   DEALMPM_INSTANTIATE(2)
   DEALMPM_INSTANTIATE(3)
 #undef DEALMPM_INSTANTIATE

@@ -132,6 +132,7 @@ namespace dealmpm
         << "time " << hex(time) << '\n'
         << "coarse-grid " << coarse_grid << '\n'
         << "mass-threshold " << hex(mass_threshold) << '\n'
+        << "mean-particle-mass " << hex(mean_particle_mass) << '\n'
         << "max-signal-rate " << hex(max_signal_rate) << '\n'
         << "cfl-warned " << cfl_warned << '\n';
     for (const std::string &field : particle_layout)
@@ -182,6 +183,8 @@ namespace dealmpm
               info.coarse_grid = value;
             else if (key == "mass-threshold")
               info.mass_threshold = std::strtod(value.c_str(), nullptr);
+            else if (key == "mean-particle-mass")
+              info.mean_particle_mass = std::strtod(value.c_str(), nullptr);
             else if (key == "max-signal-rate")
               info.max_signal_rate = std::strtod(value.c_str(), nullptr);
             else if (key == "cfl-warned")

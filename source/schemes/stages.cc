@@ -260,10 +260,8 @@ namespace dealmpm
     grid_update(StepState<dim> &s, const std::string &timer_section)
     {
       TimerOutput::Scope t(s.timer, timer_section);
-      update_nodal_velocity(s.fields,
-                            s.dt,
-                            s.mass_threshold,
-                            s.boundary_conditions);
+      update_nodal_velocity(
+        s.fields, s.dt, s.mass_threshold, s.boundary_conditions, s.stable_mass);
     }
 
     template <int dim>

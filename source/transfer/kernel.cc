@@ -25,6 +25,12 @@ namespace dealmpm
       {
         compute_linear_stencil(grid, particles, stencil);
       }
+
+      bool
+      gradient_shrinks_with_weight() const override
+      {
+        return false;
+      }
     };
 
     /** GIMP and CPDI keep each particle's initial domain half-lengths. */

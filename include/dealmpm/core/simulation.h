@@ -308,6 +308,8 @@ namespace dealmpm
     /** Only when the scene's materials differ in stiffness. */
     std::unique_ptr<MixedCellSplit<dim>> mixed_cells;
     double                               mass_threshold = 0;
+    /** At the start, for USL's stable nodal mass (stable_nodal_mass()). */
+    double mean_particle_mass = 0;
     /** Made last in the constructor: a TimerOutput destroyed while an
      * input error propagates prints a warning about MPI. */
     std::unique_ptr<TimerOutput> computing_timer;

@@ -37,6 +37,9 @@ namespace dealmpm
     double mass_threshold;
     /** The scene's effects, for the potential energy of a mass. */
     const std::vector<std::unique_ptr<Effect<dim>>> &effects;
+    /** USL's stable nodal mass (stable_nodal_mass()), 0 in other
+     * schemes. */
+    double stable_mass = 0;
 
     /** Potential energy of a mass @p m at @p x in every effect's field
      * (gravity's), as the statistics count it. */

@@ -26,12 +26,17 @@ namespace dealmpm
     std::array<NodalVector, dim> force;
     std::array<NodalVector, dim> velocity;           ///< v* after the update
     std::array<NodalVector, dim> velocity_increment; ///< v* - v
+    /** USL only (empty otherwise): the share of a node's own increment its
+     * velocity gradient uses, min(1, m / stable mass); see
+     * update_nodal_velocity(). */
+    NodalVector increment_weight;
 
     void
     reinit(
       const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner)
     {
       mass.reinit(partitioner);
+      increment_weight = NodalVector(); // sized again on first use
       for (unsigned int d = 0; d < dim; ++d)
         {
           momentum[d].reinit(partitioner);

@@ -66,9 +66,11 @@ namespace dealmpm
     /** The scene's entries that a resume must not change (scene_entries). */
     std::vector<std::string> scene;
     /** The run's numbers that are not in its RunState. */
-    double mass_threshold  = 0;
-    double max_signal_rate = 0;
-    bool   cfl_warned      = false;
+    double mass_threshold = 0;
+    /** 0 in checkpoints written before it was saved: keep the scene's. */
+    double mean_particle_mass = 0;
+    double max_signal_rate    = 0;
+    bool   cfl_warned         = false;
 
     void
     write(const std::string &file) const;

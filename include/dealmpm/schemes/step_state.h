@@ -79,6 +79,9 @@ namespace dealmpm
     const MethodSettings                              &method;
     /** Nodes lighter than this are inactive. */
     double mass_threshold;
+    /** USL: nodes lighter than this lend the velocity gradient only part of
+     * their own increment (update_nodal_velocity()); 0: all of it. */
+    double stable_mass = 0;
     /** The step's number (from 1) and its start time, for messages. */
     unsigned int step;
     double       time;
@@ -102,8 +105,15 @@ namespace dealmpm
     EffectContext<dim>
     effect_context() const
     {
-      return {
-        grid, particles, stencil, time, dt, field_set, mass_threshold, effects};
+      return {grid,
+              particles,
+              stencil,
+              time,
+              dt,
+              field_set,
+              mass_threshold,
+              effects,
+              stable_mass};
     }
   };
 } // namespace dealmpm

@@ -51,9 +51,14 @@ namespace dealmpm
   {
     const double *velocity[dim];
     const double *increment[dim];
+    /** USL's increment weights (NodalFields::increment_weight), or
+     * nullptr. */
+    const double *weight = nullptr;
 
     explicit VelocityArrays(const NodalFields<dim> &fields)
     {
+      if (fields.increment_weight.size() == fields.mass.size())
+        weight = fields.increment_weight.begin();
       for (unsigned int d = 0; d < dim; ++d)
         {
           velocity[d]  = fields.velocity[d].begin();
@@ -137,10 +142,16 @@ namespace dealmpm
       // moved it yet; its reference one in total Lagrangian).
       const Point<dim> x_affine =
         motion && affine ? stencil.position[k] : Point<dim>();
+      // USL: a node lighter than its stable mass lends the velocity
+      // gradient only the weight w of its own increment and the particle's
+      // interpolated one for the rest: v_i - (1 - w) (dv_i - dv_p).
+      const bool     weighted = motion && deformation && from.weight;
+      Tensor<1, dim> light_gradient;
       for (unsigned int e = stencil.begin[k]; e < stencil.begin[k + 1]; ++e)
         {
-          const unsigned int n = stencil.node[e];
-          const double       N = stencil.N[e];
+          const unsigned int n     = stencil.node[e];
+          const double       N     = stencil.N[e];
+          const double       light = weighted ? 1. - from.weight[n] : 0.;
           for (unsigned int d = 0; d < dim; ++d)
             {
               if (move)
@@ -149,8 +160,11 @@ namespace dealmpm
                 dv[d] += N * increment[d][n];
               if (deformation)
                 for (unsigned int b = 0; b < dim; ++b)
-                  L[d][b] += velocity[d][n] * stencil.grad_N[e][b];
+                  L[d][b] += (velocity[d][n] - light * increment[d][n]) *
+                             stencil.grad_N[e][b];
             }
+          if (weighted)
+            light_gradient += light * stencil.grad_N[e];
           if (motion && affine)
             {
               const Tensor<1, dim> r = grid.node_positions[n] - x_affine;
@@ -159,6 +173,8 @@ namespace dealmpm
                   B[a][b] += N * velocity[a][n] * r[b];
             }
         }
+      if (weighted)
+        L += outer_product(dv, light_gradient);
     }
 
     /** The particle's new velocity: with APIC, v = sum N v and the

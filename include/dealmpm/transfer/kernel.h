@@ -43,6 +43,17 @@ namespace dealmpm
       return false;
     }
 
+    /** Whether a node's gradient at a particle shrinks with its weight
+     * there, as it does for every shape function smoother than linear: if
+     * not, a node a particle has just reached has a full gradient on a
+     * sliver of mass, and USL weights that node's increment
+     * (stable_nodal_mass()). */
+    virtual bool
+    gradient_shrinks_with_weight() const
+    {
+      return true;
+    }
+
     /** Per-particle fields it stores (GIMP and CPDI: the particle domain's
      * initial half-lengths, "domain_half_length"). */
     virtual std::vector<FieldDescription>
@@ -107,6 +118,12 @@ namespace dealmpm
     particle_fields() const
     {
       return shape_function->particle_fields();
+    }
+
+    bool
+    gradient_shrinks_with_weight() const
+    {
+      return shape_function->gradient_shrinks_with_weight();
     }
 
   private:
