@@ -226,6 +226,12 @@ namespace dealmpm
       grid,
       particles.handler,
       [&](const std::size_t k, const auto &p, const GridCell<dim> &) {
+        // Most particles reach no node of the region: leave them at once.
+        bool near = false;
+        for (unsigned int e = stencil.begin[k]; e < stencil.begin[k + 1]; ++e)
+          near = near || mass.local_element(stencil.node[e]) > 0;
+        if (!near)
+          return;
         const auto   props = p.get_properties();
         NodalVector &g =
           gap[n_fields == 1 ? 0 : static_cast<unsigned int>(props[f.body])];
