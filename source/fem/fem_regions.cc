@@ -88,14 +88,17 @@ namespace dealmpm
                           const double               dt,
                           const double               mass_threshold,
                           const BackgroundGrid<dim> &grid,
-                          NodalFieldSet<dim>        &fields)
+                          NodalFieldSet<dim>        &fields,
+                          const ParticleSet<dim>    &particles,
+                          const Stencil<dim>        &stencil)
   {
     for (FemRegion<dim> &region : regions)
       {
         if (region.bonded)
           region.bonded->read_back(grid, fields);
         if (region.contact)
-          region.contact->apply(grid, fields, mass_threshold, dt);
+          region.contact->apply(
+            grid, fields, particles, stencil, mass_threshold, dt);
         region.solid->advance(time, dt);
         if (!effects.empty())
           region.solid->track_potential(potential(), false);

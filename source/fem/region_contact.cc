@@ -1,11 +1,38 @@
 #include <deal.II/base/mpi.h>
 
 #include <dealmpm/fem/region_contact.h>
+#include <dealmpm/transfer/stencil_order.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 namespace dealmpm
 {
+  namespace
+  {
+    /** How far the domain of the particle at @p x (its initial volume's
+     * cube of side 2 @p half_side, carried by @p F: a parallelepiped)
+     * is from the plane through @p surface with unit normal @p n, on the
+     * normal's side (negative: it reaches past the plane). */
+    template <int dim>
+    double
+    domain_distance(const Point<dim>     &x,
+                    const double          half_side,
+                    const Tensor<2, dim> &F,
+                    const Point<dim>     &surface,
+                    const Tensor<1, dim> &n)
+    {
+      // The half-extent along n: the sum over the half-edges F (a e_d)
+      // of |n . F a e_d|.
+      const Tensor<1, dim> Ftn    = transpose(F) * n;
+      double               extent = 0;
+      for (unsigned int d = 0; d < dim; ++d)
+        extent += half_side * std::abs(Ftn[d]);
+      return (x - surface) * n - extent;
+    }
+  } // namespace
+
   template <int dim>
   RegionContact<dim>::RegionContact(
     SolidRegion<dim>                           &region,
@@ -42,15 +69,18 @@ namespace dealmpm
     for (NodalVector *v : {&mass, &mu})
       v->reinit(grid.partitioner);
     for (unsigned int d = 0; d < dim; ++d)
-      for (auto *v : {&momentum[d], &normal[d], &change[d]})
+      for (auto *v : {&momentum[d], &normal[d], &position[d], &change[d]})
         v->reinit(grid.partitioner);
+    gap.clear(); // sized for the MPM fields in measure_gaps()
   }
 
   template <int dim>
   void
   RegionContact<dim>::correct(NodalFields<dim>  &fields,
                               const unsigned int i,
-                              const double       mass_threshold)
+                              const double       gap_i,
+                              const double       mass_threshold,
+                              const double       dt)
   {
     const double m_a = fields.mass.local_element(i);
     const double m_b = mass.local_element(i);
@@ -72,6 +102,9 @@ namespace dealmpm
       m_b / (m_a + m_b) * (v_a - v_b); // v_a - v_cm
     const double approach = relative * n;
     if (!(approach < 0))
+      return;
+    // Apart at the end of the step: no contact yet (the gap check).
+    if (!(gap_i + (v_a - v_b) * n * dt < 0))
       return;
     const Tensor<1, dim> tangential    = relative - approach * n;
     const double         slip          = tangential.norm();
@@ -130,7 +163,8 @@ namespace dealmpm
         v->zero_out_ghost_values();
       }
     for (unsigned int d = 0; d < dim; ++d)
-      for (NodalVector *v : {&momentum[d], &normal[d], &change[d]})
+      for (NodalVector *v :
+           {&momentum[d], &normal[d], &position[d], &change[d]})
         {
           *v = 0;
           v->zero_out_ghost_values();
@@ -149,21 +183,94 @@ namespace dealmpm
                 w * points.value(p.point, dim + 1 + d);
               normal[d].local_element(i) +=
                 w * points.value(p.point, 2 * dim + 1 + d);
+              position[d].local_element(i) += w * m * points.value(p.point, d);
             }
         }
     mass.compress(VectorOperation::add);
     mu.compress(VectorOperation::add);
+    // The gaps are measured from the particles, which reach ghost nodes.
+    mass.update_ghost_values();
     for (unsigned int d = 0; d < dim; ++d)
       {
         momentum[d].compress(VectorOperation::add);
-        normal[d].compress(VectorOperation::add);
+        for (NodalVector *v : {&normal[d], &position[d]})
+          {
+            v->compress(VectorOperation::add);
+            v->update_ghost_values();
+          }
       }
   }
 
   template <int dim>
   void
+  RegionContact<dim>::measure_gaps(const BackgroundGrid<dim> &grid,
+                                   const ParticleSet<dim>    &particles,
+                                   const Stencil<dim>        &stencil,
+                                   const unsigned int         n_fields)
+  {
+    if (gap.size() != n_fields)
+      {
+        gap.resize(n_fields);
+        for (NodalVector &g : gap)
+          g.reinit(grid.partitioner);
+      }
+    // Ghost entries too: the particles of this rank reach them.
+    const double far = std::numeric_limits<double>::max();
+    for (NodalVector &g : gap)
+      for (unsigned int i = 0; i < g.get_partitioner()->locally_owned_size() +
+                                     g.get_partitioner()->n_ghost_indices();
+           ++i)
+        g.local_element(i) = far;
+    const CoreFields &f = particles.fields;
+    for_each_particle_in_stencil_order(
+      grid,
+      particles.handler,
+      [&](const std::size_t k, const auto &p, const GridCell<dim> &) {
+        // Most particles reach no node of the region: leave them at once.
+        bool near = false;
+        for (unsigned int e = stencil.begin[k]; e < stencil.begin[k + 1]; ++e)
+          near = near || mass.local_element(stencil.node[e]) > 0;
+        if (!near)
+          return;
+        const auto   props = p.get_properties();
+        NodalVector &g =
+          gap[n_fields == 1 ? 0 : static_cast<unsigned int>(props[f.body])];
+        const double half_side =
+          0.5 * std::pow(props[f.initial_volume], 1. / dim);
+        const Tensor<2, dim> F =
+          read_tensor<dim>(&props[0] + f.deformation_gradient);
+        for (unsigned int e = stencil.begin[k]; e < stencil.begin[k + 1]; ++e)
+          {
+            const unsigned int i = stencil.node[e];
+            if (!(stencil.N[e] > 0) || !(mass.local_element(i) > 0))
+              continue;
+            Tensor<1, dim> n;
+            Point<dim>     surface;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                n[d]       = normal[d].local_element(i);
+                surface[d] = position[d].local_element(i);
+              }
+            if (!(n.norm() > 0))
+              continue;
+            const double distance =
+              domain_distance(p.get_location(),
+                              half_side,
+                              F,
+                              surface / mass.local_element(i),
+                              n / n.norm());
+            g.local_element(i) = std::min(g.local_element(i), distance);
+          }
+      });
+    for (NodalVector &g : gap)
+      g.compress(VectorOperation::min);
+  }
+
+  template <int dim>
+  void
   RegionContact<dim>::correct_all(NodalFieldSet<dim> &set,
-                                  const double        mass_threshold)
+                                  const double        mass_threshold,
+                                  const double        dt)
   {
     // The MPM fields the region meets: each body's when bodies have
     // their own (contact between them), else the one core field. Pairs
@@ -176,9 +283,9 @@ namespace dealmpm
     else
       mpm_fields.push_back(&set.core);
     const unsigned int n_owned = mass.locally_owned_size();
-    for (NodalFields<dim> *fields : mpm_fields)
+    for (unsigned int b = 0; b < mpm_fields.size(); ++b)
       for (unsigned int i = 0; i < n_owned; ++i)
-        correct(*fields, i, mass_threshold);
+        correct(*mpm_fields[b], i, gap[b].local_element(i), mass_threshold, dt);
     for (unsigned int d = 0; d < dim; ++d)
       for (NodalFields<dim> *fields : mpm_fields)
         {
@@ -212,12 +319,18 @@ namespace dealmpm
   void
   RegionContact<dim>::apply(const BackgroundGrid<dim> &grid,
                             NodalFieldSet<dim>        &set,
+                            const ParticleSet<dim>    &particles,
+                            const Stencil<dim>        &stencil,
                             const double               mass_threshold,
                             const double               dt)
   {
     points.gather_and_place(grid, node_values(dt), n_values);
     spread_to_grid();
-    correct_all(set, mass_threshold);
+    measure_gaps(grid,
+                 particles,
+                 stencil,
+                 set.has_body_fields() ? set.body.size() : 1);
+    correct_all(set, mass_threshold, dt);
     pass_back_changes(grid);
   }
 

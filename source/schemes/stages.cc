@@ -473,8 +473,13 @@ namespace dealmpm
     fem_update(StepState<dim> &s, const std::string &timer_section)
     {
       TimerOutput::Scope t(s.timer, timer_section);
-      s.fem_regions->update(
-        s.time, s.dt, s.mass_threshold, s.grid, s.field_set);
+      s.fem_regions->update(s.time,
+                            s.dt,
+                            s.mass_threshold,
+                            s.grid,
+                            s.field_set,
+                            s.particles,
+                            s.stencil);
     }
 
     template <int dim>

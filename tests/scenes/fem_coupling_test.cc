@@ -602,7 +602,9 @@ TEST(FemCoupling, ContactBarsBounceOffEachOther)
 //   the nodal mass threshold off: at its default 1e-9 the ball's GIMP
 //   fringe nodes below it drop their internal force, a loss of 1e-9 of
 //   the momentum that MPM alone has as well);
-// - no ball particle's centre passes the plate's current top surface;
+// - no ball particle's centre passes the plate's current top surface, and
+//   they touch: the nearest comes within half a cell (its domain's half
+//   size is a quarter; contact across the gap stopped it at 0.95 of one);
 // - the momentum the plate takes lies between what a perfectly plastic
 //   collision (both at the common velocity) and a perfectly elastic one of
 //   rigid bodies give, m M / (m + M) v0 and twice that, and the two part
@@ -689,6 +691,7 @@ TEST(FemCoupling, BallDroppedOnAPlate)
             << largest_energy / start.total_energy() << std::endl;
   EXPECT_LT(largest_drift, 1e-12 * p0);
   EXPECT_GT(smallest_gap, 0);
+  EXPECT_LT(smallest_gap, 0.5 * 0.05);
   EXPECT_LT(plate_p, -plastic * 0.999);
   EXPECT_GT(plate_p, -2 * plastic * 1.001);
   EXPECT_GE(ball_p / m, plate_p / M);

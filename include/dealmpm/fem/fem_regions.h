@@ -79,13 +79,16 @@ namespace dealmpm
                    NodalFieldSet<dim>        &fields);
 
     /** After the grid update: bonded nodes take the grid's velocity,
-     * contact corrects both sides, the regions advance. */
+     * contact corrects both sides where the particles (their weights in
+     * @p stencil) meet a region, the regions advance. */
     void
     update(const double               time,
            const double               dt,
            const double               mass_threshold,
            const BackgroundGrid<dim> &grid,
-           NodalFieldSet<dim>        &fields);
+           NodalFieldSet<dim>        &fields,
+           const ParticleSet<dim>    &particles,
+           const Stencil<dim>        &stencil);
 
     /** The largest wave speed over node spacing, 0 without regions.
      * Collective. */
