@@ -3,6 +3,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <dealmpm/core/simulation.h>
+#include <dealmpm/fem/solid_region.h>
 
 #include <gtest/gtest.h>
 
@@ -54,6 +55,33 @@ namespace dealmpm::test
         return s.effect_values[c];
     ADD_FAILURE() << "no statistics column " << name;
     return 0;
+  }
+
+  /** Mean sigma_xx of an FE region's cells with centre x in (a, b), over
+   * all ranks. */
+  inline double
+  region_stress(const SolidRegion<2> &region, const double a, const double b)
+  {
+    std::vector<SymmetricTensor<2, 3>> stress;
+    std::vector<double>                von_mises;
+    std::vector<std::vector<double>>   internal;
+    region.cell_means(stress, von_mises, internal);
+    double      sum = 0, n = 0;
+    std::size_t c = 0;
+    for (const auto &cell : region.get_triangulation().active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          if (cell->center()[0] > a && cell->center()[0] < b)
+            {
+              sum += stress[c][0][0];
+              n += 1;
+            }
+          ++c;
+        }
+    sum = Utilities::MPI::sum(sum, MPI_COMM_WORLD);
+    n   = Utilities::MPI::sum(n, MPI_COMM_WORLD);
+    EXPECT_GT(n, 0);
+    return sum / n;
   }
 
   /** Move every particle to a random point of its cell. */

@@ -30,6 +30,8 @@ namespace dealmpm
     const double      *mass    = fields.mass.begin();
     if (stable_mass > 0)
       set_increment_weights(fields, stable_mass);
+    else if (fields.increment_weight.size() > 0)
+      fields.increment_weight = NodalVector(); // none stale in G2P
     for (unsigned int d = 0; d < dim; ++d)
       {
         const double *p  = fields.momentum[d].begin();

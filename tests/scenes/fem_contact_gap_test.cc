@@ -68,30 +68,6 @@ namespace
     return s.str();
   }
 
-  /** Mean sigma_xx of the region's cells with centre x in (a, b). */
-  double
-  region_stress(const SolidRegion<2> &region, const double a, const double b)
-  {
-    std::vector<SymmetricTensor<2, 3>> stress;
-    std::vector<double>                von_mises;
-    std::vector<std::vector<double>>   internal;
-    region.cell_means(stress, von_mises, internal);
-    double      sum = 0, n = 0;
-    std::size_t k = 0;
-    for (const auto &cell : region.get_triangulation().active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          if (cell->center()[0] > a && cell->center()[0] < b)
-            {
-              sum += stress[k][0][0];
-              n += 1;
-            }
-          ++k;
-        }
-    return Utilities::MPI::sum(sum, MPI_COMM_WORLD) /
-           Utilities::MPI::sum(n, MPI_COMM_WORLD);
-  }
-
   /** What the impact gave. */
   struct Impact
   {
@@ -132,9 +108,9 @@ namespace
           {
             // The face has moved by v0 t_meet towards the other bar.
             const double x = face + sign * v0 * t_meet;
-            stress_sum += fe_left ?
-                            region_stress(region, x - 0.3 * L, x - 0.1 * L) :
-                            region_stress(region, x + 0.1 * L, x + 0.3 * L);
+            stress_sum +=
+              fe_left ? test::region_stress(region, x - 0.3 * L, x - 0.1 * L) :
+                        test::region_stress(region, x + 0.1 * L, x + 0.3 * L);
             n_stress += 1;
           }
       }

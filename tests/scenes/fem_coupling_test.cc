@@ -88,31 +88,6 @@ namespace
     return {stress / n, velocity / n};
   }
 
-  /** Mean sigma_xx of the region's cells with centre x in (a, b). */
-  double
-  region_stress(const SolidRegion<2> &region, const double a, const double b)
-  {
-    std::vector<SymmetricTensor<2, 3>> stress;
-    std::vector<double>                von_mises;
-    std::vector<std::vector<double>>   internal;
-    region.cell_means(stress, von_mises, internal);
-    double      sum = 0, n = 0;
-    std::size_t c = 0;
-    for (const auto &cell : region.get_triangulation().active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          if (cell->center()[0] > a && cell->center()[0] < b)
-            {
-              sum += stress[c][0][0];
-              n += 1;
-            }
-          ++c;
-        }
-    sum = Utilities::MPI::sum(sum, MPI_COMM_WORLD);
-    n   = Utilities::MPI::sum(n, MPI_COMM_WORLD);
-    EXPECT_GT(n, 0);
-    return sum / n;
-  }
 } // namespace
 
 // One material: the bar moves away from the wall, so the wave from the
@@ -134,7 +109,7 @@ TEST(FemCoupling, BondedBarTransmitsWithoutReflection)
   const auto [ahead, v_ahead]    = particle_means(*bonded, 0.88, 1.0);
   const auto [mpm_behind, mpm_v] = particle_means(*all_mpm, 0.55, 0.72);
   const double in_region =
-    region_stress(*bonded->fem_regions()[0].solid, 0.05, 0.45);
+    test::region_stress(*bonded->fem_regions()[0].solid, 0.05, 0.45);
   std::cout << "bonded bar at t = 0.08: stress behind the front " << behind
             << " (all MPM " << mpm_behind << ", exact " << sigma
             << "), velocity " << v_behind << " (all MPM " << mpm_v
@@ -179,7 +154,7 @@ TEST(FemCoupling, BondedBarSplitsByImpedance)
   // it is at x = 0.1; between it and the interface the stress is
   // sigma_I (1 + R) = sigma_T.
   const double in_region =
-    region_stress(*bonded->fem_regions()[0].solid, 0.2, 0.45);
+    test::region_stress(*bonded->fem_regions()[0].solid, 0.2, 0.45);
   std::cout << "impedances: transmitted " << behind << " (exact " << sigma_T
             << "), region behind the reflected front " << in_region
             << "; incident " << sigma_I << std::endl;
@@ -570,7 +545,7 @@ TEST(FemCoupling, ContactBarsBounceOffEachOther)
     return region.momentum()[0];
   };
   run(0.02);
-  const double stress = region_stress(region, 0.35, 0.48);
+  const double stress = test::region_stress(region, 0.35, 0.48);
   const double p_02   = region.momentum()[0];
   const double p_04   = run(0.04);
   const double p_06   = run(0.06);

@@ -142,16 +142,10 @@ namespace dealmpm
       // moved it yet; its reference one in total Lagrangian).
       const Point<dim> x_affine =
         motion && affine ? stencil.position[k] : Point<dim>();
-      // USL: a node lighter than its stable mass lends the velocity
-      // gradient only the weight w of its own increment and the particle's
-      // interpolated one for the rest: v_i - (1 - w) (dv_i - dv_p).
-      const bool     weighted = motion && deformation && from.weight;
-      Tensor<1, dim> light_gradient;
       for (unsigned int e = stencil.begin[k]; e < stencil.begin[k + 1]; ++e)
         {
-          const unsigned int n     = stencil.node[e];
-          const double       N     = stencil.N[e];
-          const double       light = weighted ? 1. - from.weight[n] : 0.;
+          const unsigned int n = stencil.node[e];
+          const double       N = stencil.N[e];
           for (unsigned int d = 0; d < dim; ++d)
             {
               if (move)
@@ -160,11 +154,8 @@ namespace dealmpm
                 dv[d] += N * increment[d][n];
               if (deformation)
                 for (unsigned int b = 0; b < dim; ++b)
-                  L[d][b] += (velocity[d][n] - light * increment[d][n]) *
-                             stencil.grad_N[e][b];
+                  L[d][b] += velocity[d][n] * stencil.grad_N[e][b];
             }
-          if (weighted)
-            light_gradient += light * stencil.grad_N[e];
           if (motion && affine)
             {
               const Tensor<1, dim> r = grid.node_positions[n] - x_affine;
@@ -173,8 +164,21 @@ namespace dealmpm
                   B[a][b] += N * velocity[a][n] * r[b];
             }
         }
-      if (weighted)
-        L += outer_product(dv, light_gradient);
+      // USL's light nodes (update_nodal_velocity()) lend L only the weight
+      // w of their own increment and the particle's interpolated dv for the
+      // rest: v_i - (1 - w) (dv_i - dv). A second pass over the stencil,
+      // which is in cache, so that no other sweep pays for it.
+      if (motion && deformation && from.weight)
+        for (unsigned int e = stencil.begin[k]; e < stencil.begin[k + 1]; ++e)
+          {
+            const unsigned int n     = stencil.node[e];
+            const double       light = 1. - from.weight[n];
+            if (light > 0)
+              for (unsigned int d = 0; d < dim; ++d)
+                for (unsigned int b = 0; b < dim; ++b)
+                  L[d][b] +=
+                    light * (dv[d] - increment[d][n]) * stencil.grad_N[e][b];
+          }
     }
 
     /** The particle's new velocity: with APIC, v = sum N v and the
