@@ -6,7 +6,9 @@ namespace dealmpm
 {
   template <int dim>
   void
-  set_increment_weights(NodalFields<dim> &fields, const double stable_mass)
+  set_increment_weights(NodalFields<dim>          &fields,
+                        const double               stable_mass,
+                        const BackgroundGrid<dim> &grid)
   {
     if (fields.increment_weight.size() != fields.mass.size())
       fields.increment_weight.reinit(fields.mass);
@@ -16,6 +18,21 @@ namespace dealmpm
     for (unsigned int i = 0; i < n_owned; ++i)
       w[i] = std::min(1., mass[i] / stable_mass);
     fields.increment_weight.update_ghost_values();
+    // Light nodes have 0 < w < 1 (empty nodes, w = 0, are in no particle's
+    // stencil). Most steps of most scenes have none: then G2P is left
+    // without weights, and no cell is looked at.
+    const unsigned int n_local =
+      n_owned + fields.increment_weight.get_partitioner()->n_ghost_indices();
+    fields.light_cells.clear();
+    if (std::none_of(w, w + n_local, [](const double x) {
+          return x > 0 && x < 1;
+        }))
+      return;
+    fields.light_cells.assign(grid.cells.size(), 0);
+    for (unsigned int c = 0; c < grid.cells.size(); ++c)
+      for (unsigned int j = 0; j < grid.cells[c].n_nodes; ++j)
+        if (w[grid.cell_nodes[grid.cells[c].first_node + j]] < 1)
+          fields.light_cells[c] = 1;
   }
 
   template <int dim>
@@ -24,14 +41,15 @@ namespace dealmpm
                         const double                   dt,
                         const double                   mass_threshold,
                         const BoundaryConditions<dim> &boundary_conditions,
-                        const double                   stable_mass)
+                        const double                   stable_mass,
+                        const BackgroundGrid<dim>     &grid)
   {
     const unsigned int n_owned = fields.mass.locally_owned_size();
     const double      *mass    = fields.mass.begin();
     if (stable_mass > 0)
-      set_increment_weights(fields, stable_mass);
-    else if (fields.increment_weight.size() > 0)
-      fields.increment_weight = NodalVector(); // none stale in G2P
+      set_increment_weights(fields, stable_mass, grid);
+    else
+      fields.light_cells.clear(); // no stale weights in G2P
     for (unsigned int d = 0; d < dim; ++d)
       {
         const double *p  = fields.momentum[d].begin();
@@ -78,7 +96,9 @@ namespace dealmpm
   }
 
 #define DEALMPM_INSTANTIATE(dim)                                         \
-  template void set_increment_weights(NodalFields<dim> &, double);       \
+  template void set_increment_weights(NodalFields<dim> &,                \
+                                      double,                            \
+                                      const BackgroundGrid<dim> &);      \
   template void velocity_from_momentum(NodalFields<dim> &,               \
                                        double,                           \
                                        const BoundaryConditions<dim> &); \
@@ -86,7 +106,8 @@ namespace dealmpm
                                       double,                            \
                                       double,                            \
                                       const BoundaryConditions<dim> &,   \
-                                      double);
+                                      double,                            \
+                                      const BackgroundGrid<dim> &);
   DEALMPM_INSTANTIATE(2)
   DEALMPM_INSTANTIATE(3)
 #undef DEALMPM_INSTANTIATE

@@ -260,8 +260,12 @@ namespace dealmpm
     grid_update(StepState<dim> &s, const std::string &timer_section)
     {
       TimerOutput::Scope t(s.timer, timer_section);
-      update_nodal_velocity(
-        s.fields, s.dt, s.mass_threshold, s.boundary_conditions, s.stable_mass);
+      update_nodal_velocity(s.fields,
+                            s.dt,
+                            s.mass_threshold,
+                            s.boundary_conditions,
+                            s.stable_mass,
+                            s.grid);
     }
 
     template <int dim>
@@ -332,13 +336,17 @@ namespace dealmpm
     }
 
     /** Run @p sweep(velocities) with the nodal velocities the particles
-     * read: the core fields, or each particle its body's (contact). */
-    template <int dim, typename Sweep>
+     * read: the core fields, or each particle its body's (contact); with
+     * @p light (USL) the core fields' light-node weights when this step has
+     * any (update_nodal_velocity()). */
+    template <bool light = false, int dim, typename Sweep>
     void
     with_nodal_velocity(StepState<dim> &s, const Sweep &sweep)
     {
       if (s.field_set.has_body_fields())
         sweep(BodyVelocities<dim>(s.field_set, s.particles.fields.body));
+      else if (light && !s.fields.light_cells.empty())
+        sweep(WithLightNodes<dim>{s.fields});
       else
         sweep(s.fields);
     }
@@ -348,7 +356,7 @@ namespace dealmpm
     g2p_and_stress_update(StepState<dim> &s, const std::string &timer_section)
     {
       TimerOutput::Scope t(s.timer, timer_section);
-      with_nodal_velocity(s, [&](const auto &velocities) {
+      with_nodal_velocity<true>(s, [&](const auto &velocities) {
         with_deformation_choices(
           s,
           [&](const auto  formulation,

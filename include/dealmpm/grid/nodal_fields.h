@@ -3,6 +3,7 @@
 #include <deal.II/lac/la_parallel_vector.h>
 
 #include <array>
+#include <vector>
 
 namespace dealmpm
 {
@@ -30,6 +31,10 @@ namespace dealmpm
      * velocity gradient uses, min(1, m / stable mass); see
      * update_nodal_velocity(). */
     NodalVector increment_weight;
+    /** Per grid cell (grid.cells' order), whether a node of it weighs less
+     * than 1, so that G2P looks only there; empty when no node is light
+     * (then G2P uses no weights). */
+    std::vector<unsigned char> light_cells;
 
     void
     reinit(
@@ -37,6 +42,7 @@ namespace dealmpm
     {
       mass.reinit(partitioner);
       increment_weight = NodalVector(); // sized again on first use
+      light_cells.clear();
       for (unsigned int d = 0; d < dim; ++d)
         {
           momentum[d].reinit(partitioner);

@@ -45,20 +45,26 @@ namespace dealmpm
   };
 
   /** The nodal velocity and increment arrays a G2P sweep reads: one set
-   * for every particle (single-velocity MPM). */
-  template <int dim>
+   * for every particle (single-velocity MPM). With @p light, also USL's
+   * light-node weights (update_nodal_velocity()), if the fields have any:
+   * a sweep compiled without them pays nothing for them. */
+  template <int dim, bool light = false>
   struct VelocityArrays
   {
-    const double *velocity[dim];
-    const double *increment[dim];
-    /** USL's increment weights (NodalFields::increment_weight), or
-     * nullptr. */
-    const double *weight = nullptr;
+    static constexpr bool may_be_light = light;
+    const double         *velocity[dim];
+    const double         *increment[dim];
+    /** NodalFields::increment_weight and light_cells, or nullptr. */
+    const double        *weight      = nullptr;
+    const unsigned char *light_cells = nullptr;
 
     explicit VelocityArrays(const NodalFields<dim> &fields)
     {
-      if (fields.increment_weight.size() == fields.mass.size())
-        weight = fields.increment_weight.begin();
+      if (light && !fields.light_cells.empty())
+        {
+          weight      = fields.increment_weight.begin();
+          light_cells = fields.light_cells.data();
+        }
       for (unsigned int d = 0; d < dim; ++d)
         {
           velocity[d]  = fields.velocity[d].begin();
@@ -74,13 +80,20 @@ namespace dealmpm
     }
   };
 
+  /** The core fields with USL's light-node weights (a sweep's Fields). */
+  template <int dim>
+  struct WithLightNodes
+  {
+    const NodalFields<dim> &fields;
+  };
+
   /** Each particle reads its own body's nodal velocity (contact: the
-   * field set's body fields). */
+   * field set's body fields), light-node weights included. */
   template <int dim>
   struct BodyVelocities
   {
-    std::vector<VelocityArrays<dim>> bodies;
-    unsigned int                     body; ///< the property's offset
+    std::vector<VelocityArrays<dim, true>> bodies;
+    unsigned int                           body; ///< the property's offset
 
     BodyVelocities(const NodalFieldSet<dim> &set, const unsigned int body)
       : body(body)
@@ -90,7 +103,7 @@ namespace dealmpm
     }
 
     template <typename Properties>
-    DEAL_II_ALWAYS_INLINE const VelocityArrays<dim>                             &
+    DEAL_II_ALWAYS_INLINE const VelocityArrays<dim, true>                             &
     of(const Properties &props) const
     {
       return bodies[static_cast<unsigned int>(props[body])];
@@ -106,6 +119,13 @@ namespace dealmpm
   }
 
   template <int dim>
+  VelocityArrays<dim, true>
+  velocity_arrays(const WithLightNodes<dim> &with)
+  {
+    return VelocityArrays<dim, true>(with.fields);
+  }
+
+  template <int dim>
   const BodyVelocities<dim> &
   velocity_arrays(const BodyVelocities<dim> &bodies)
   {
@@ -114,10 +134,11 @@ namespace dealmpm
 
   namespace g2p_sweep
   {
-    /** The sums over particle @p k's stencil that a sweep needs, from the
-     * nodal arrays @p from: v_grid = sum N v (if it moves the particle),
-     * dv = sum N dv and, with APIC (@p affine), B = sum N v (x) (x_i - x_p)
-     * (if it updates the velocity), L = sum v (x) grad N (if it deforms).
+    /** The sums over particle @p k's stencil (in @p cell) that a
+     * sweep needs, from the nodal arrays @p from: v_grid = sum N v (if it moves
+     * the particle), dv = sum N dv and, with APIC (@p affine), B = sum N v (x)
+     * (x_i - x_p) (if it updates the velocity), L = sum v (x) grad N (if it
+     * deforms).
      */
     template <bool motion,
               bool move,
@@ -128,6 +149,7 @@ namespace dealmpm
     gather(const BackgroundGrid<dim> &grid,
            const Stencil<dim>        &stencil,
            const std::size_t          k,
+           const GridCell<dim>       &cell,
            const Arrays              &from,
            const bool                 affine,
            Tensor<1, dim>            &v_grid,
@@ -167,18 +189,21 @@ namespace dealmpm
       // USL's light nodes (update_nodal_velocity()) lend L only the weight
       // w of their own increment and the particle's interpolated dv for the
       // rest: v_i - (1 - w) (dv_i - dv). A second pass over the stencil,
-      // which is in cache, so that no other sweep pays for it.
-      if (motion && deformation && from.weight)
-        for (unsigned int e = stencil.begin[k]; e < stencil.begin[k + 1]; ++e)
-          {
-            const unsigned int n     = stencil.node[e];
-            const double       light = 1. - from.weight[n];
-            if (light > 0)
-              for (unsigned int d = 0; d < dim; ++d)
-                for (unsigned int b = 0; b < dim; ++b)
-                  L[d][b] +=
-                    light * (dv[d] - increment[d][n]) * stencil.grad_N[e][b];
-          }
+      // which is in cache, in the cells that have such nodes only
+      // (@p cell is the particle's, in grid.cells), so that no other sweep
+      // and few particles pay for it.
+      if constexpr (motion && deformation && Arrays::may_be_light)
+        if (from.weight && from.light_cells[index_in_grid(grid, cell)])
+          for (unsigned int e = stencil.begin[k]; e < stencil.begin[k + 1]; ++e)
+            {
+              const unsigned int n     = stencil.node[e];
+              const double       light = 1. - from.weight[n];
+              if (light > 0)
+                for (unsigned int d = 0; d < dim; ++d)
+                  for (unsigned int b = 0; b < dim; ++b)
+                    L[d][b] +=
+                      light * (dv[d] - increment[d][n]) * stencil.grad_N[e][b];
+            }
     }
 
     /** The particle's new velocity: with APIC, v = sum N v and the
@@ -335,7 +360,7 @@ namespace dealmpm
           const Point<dim>        x_p   = p.get_location();
           const ArrayView<double> props = p.get_properties();
           g2p_sweep::gather<motion, move, deformation>(
-            grid, stencil, k, arrays.of(props), affine, v_grid, dv, L, B);
+            grid, stencil, k, c, arrays.of(props), affine, v_grid, dv, L, B);
           if (motion)
             g2p_sweep::update_velocity(
               props, f, v_grid, dv, B, flip_fraction, affine);
