@@ -68,12 +68,17 @@ namespace dealmpm
   void
   SceneReader::fail(const std::string &entry, const std::string &expected) const
   {
+    throw InputError(where(entry) + ": expected " + expected);
+  }
+
+  std::string
+  SceneReader::where(const std::string &entry) const
+  {
     const auto item = overridden.find(path_of(entry));
     if (item != overridden.end())
-      throw InputError("command line: -s '" + quote_value(item->second) +
-                       "': expected " + expected);
-    throw InputError(file + ": entry '" + path_of(entry) + "' = '" +
-                     quote_value(prm.get(entry)) + "': expected " + expected);
+      return "command line: -s '" + quote_value(item->second) + "'";
+    return file + ": entry '" + path_of(entry) + "' = '" +
+           quote_value(prm.get(entry)) + "'";
   }
 
   std::string

@@ -8,17 +8,42 @@
 #include <dealmpm/core/stop_signal.h>
 #include <dealmpm/diagnostics/run_guards.h>
 #include <dealmpm/grid/grid_update.h>
+#include <dealmpm/schemes/compatibility.h>
 #include <dealmpm/transfer/particle_to_grid.h>
 
 #include <chrono>
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 // The run loop of Simulation: outputs, checks between steps, progress and
 // the closing report. Construction and the step are in simulation.cc.
 namespace dealmpm
 {
+  namespace
+  {
+    /** (m |g| + F) h: the work of gravity and of the loads (F: their
+     * largest total magnitude so far) over one (smallest) cell, the energy
+     * guard's scale when a scene puts in less. */
+    template <int dim>
+    double
+    load_energy_floor(const Statistics                                &s,
+                      const std::vector<std::unique_ptr<Effect<dim>>> &effects,
+                      const BackgroundGrid<dim>                       &grid)
+    {
+      double h     = std::numeric_limits<double>::max();
+      double loads = 0;
+      for (const GridCell<dim> &c : grid.cells)
+        h = std::min(h, c.h);
+      for (const auto &effect : effects)
+        loads += effect->load_magnitude();
+      h     = Utilities::MPI::min(h, grid.comm);
+      loads = Utilities::MPI::sum(loads, grid.comm);
+      return (s.mass * uniform_acceleration(effects).norm() + loads) * h;
+    }
+  } // namespace
+
   template <int dim>
   void
   Simulation<dim>::guard_fixed_time_step(const double dt)
@@ -120,6 +145,7 @@ namespace dealmpm
       {
         now  = statistics();
         work = external_work();
+        loop.accuracy.raise_floor(load_energy_floor(now, effects, grid));
         loop.accuracy.observe(now, work);
         if (energy_check_due &&
             loop.accuracy.report().energy_drift > s.checks.energy_growth_limit)
@@ -133,6 +159,7 @@ namespace dealmpm
                                   effects,
                                   initial_velocity,
                                   loop.accuracy.report().energy_drift,
+                                  loop.accuracy.energy_scale(),
                                   s.checks.energy_growth_limit,
                                   step_and_time(loop.step, loop.time),
                                   comm),
@@ -195,7 +222,7 @@ namespace dealmpm
         // p / m on the nodes, as every later one does, instead of zeros.
         if (s.output.write_grid)
           map_particles_for_grid_output();
-        loop.accuracy.start(initial);
+        loop.accuracy.start(initial, load_energy_floor(initial, effects, grid));
         write_output(0., initial, 0., progress);
         loop.next_output = s.output.interval;
       }

@@ -3,13 +3,15 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <sstream>
 
 namespace dealmpm
 {
   void
-  AccuracyMonitor::start(const Statistics &s)
+  AccuracyMonitor::start(const Statistics &s, const double floor)
   {
     initial             = s;
+    energy_floor        = floor;
     max_energy_supplied = 0;
     max_kinetic_energy  = 0;
     current             = AccuracyReport();
@@ -31,9 +33,9 @@ namespace dealmpm
                std::abs(external_work) + std::max(0.,
                                                   initial.gravitational_energy -
                                                     s.gravitational_energy));
-    max_kinetic_energy = std::max(max_kinetic_energy, s.kinetic_energy);
-    const double energy_in =
-      initial.kinetic_energy + initial.strain_energy + max_energy_supplied;
+    max_kinetic_energy     = std::max(max_kinetic_energy, s.kinetic_energy);
+    const double energy_in = std::max(energy_put_in(), energy_floor);
+    current.of_floor       = energy_put_in() < energy_floor;
     current.energy_drift =
       energy_in > 0 ?
         (s.total_energy() - external_work - initial.total_energy()) /
@@ -61,16 +63,36 @@ namespace dealmpm
     current.error_max = s.error_max;
   }
 
+  double
+  AccuracyMonitor::energy_put_in() const
+  {
+    return initial.kinetic_energy + initial.strain_energy + max_energy_supplied;
+  }
+
+  std::string
+  AccuracyMonitor::energy_scale() const
+  {
+    if (!current.of_floor)
+      return "the energy put in";
+    std::ostringstream s;
+    s << std::setprecision(3) << "(m |g| + F) h = " << energy_floor
+      << " J, the work of gravity and the loads over one cell (larger than "
+         "the energy put in, "
+      << energy_put_in() << " J)";
+    return s.str();
+  }
+
   std::ostream &
   operator<<(std::ostream &out, const AccuracyReport &r)
   {
     const auto flags     = out.flags();
     const auto precision = out.precision();
     out << std::setprecision(3) << "accuracy: energy drift "
-        << 100 * r.energy_drift << " % of the energy put in, momentum drift "
-        << 100 * r.momentum_drift << " %, mass loss " << 100 * r.mass_loss
-        << " %, smallest J " << r.min_J << ", largest particle CFL "
-        << r.max_cfl;
+        << 100 * r.energy_drift << " % of "
+        << (r.of_floor ? "(m |g| + F) h" : "the energy put in")
+        << ", momentum drift " << 100 * r.momentum_drift << " %, mass loss "
+        << 100 * r.mass_loss << " %, smallest J " << r.min_J
+        << ", largest particle CFL " << r.max_cfl;
     if (r.has_error)
       out << ", displacement error L2 " << r.error_L2 << " max " << r.error_max;
     out.flags(flags);

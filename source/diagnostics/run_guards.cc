@@ -57,6 +57,7 @@ namespace dealmpm
     const std::vector<std::unique_ptr<Effect<dim>>>   &effects,
     const std::vector<Tensor<1, dim>>                 &initial_velocity,
     const double                                       drift,
+    const std::string                                 &scale,
     const double                                       limit,
     const std::string                                 &when,
     const MPI_Comm                                     comm)
@@ -69,8 +70,8 @@ namespace dealmpm
              << format_point(local.location) << " (+" << local.gain << " J)";
     std::ostringstream message;
     message << std::setprecision(3) << when << ": the total energy grew by "
-            << 100 * drift
-            << " % of the energy put in (limit 'Checks/Energy growth limit' "
+            << 100 * drift << " % of " << scale
+            << " (limit 'Checks/Energy growth limit' "
                "= "
             << 100 * limit << " %); the particle whose energy grew most: "
             << first_message(local.gain == largest ? particle.str() : "", comm)
@@ -92,6 +93,7 @@ namespace dealmpm
        const std::vector<std::unique_ptr<Effect<dim>>> &,           \
        const std::vector<Tensor<1, dim>> &,                         \
        const double,                                                \
+       const std::string &,                                         \
        const double,                                                \
        const std::string &,                                         \
        const MPI_Comm);

@@ -88,7 +88,13 @@ namespace dealmpm
                          coefficients.at(node.id));
         if (change.norm_square() == 0.)
           continue;
-        this->work += 0.5 * m * ((v + change).norm_square() - v.norm_square());
+        // The impulse's work on the velocity it leaves (as a rigid body's):
+        // none on a node it holds at rest. The kinetic energy it takes
+        // off, 1/2 m (|v + change|^2 - |v|^2), is larger by 1/2 m
+        // |change|^2, and at rest that is the velocity the other forces
+        // gave the node within the step and friction took back: counted
+        // as work, it grew every step of a block that never moved.
+        this->work += m * (change * (v + change));
         for (unsigned int d = 0; d < dim; ++d)
           {
             fields.velocity[d].local_element(i) += change[d];

@@ -1,10 +1,15 @@
 #include <deal.II/base/mpi.h>
 
+#include <dealmpm/base/errors.h>
+#include <dealmpm/base/run_messages.h>
 #include <dealmpm/effects/expressions.h>
 #include <dealmpm/effects/traction.h>
 #include <dealmpm/particles/surface_area.h>
 #include <dealmpm/transfer/stencil_order.h>
 
+#include <algorithm>
+#include <cmath>
+#include <iostream>
 #include <map>
 
 namespace dealmpm
@@ -50,7 +55,9 @@ namespace dealmpm
   {
     if (settings.bodies.empty())
       return {};
-    return {{"surface_area", dim}, {"surface_offset", dim}};
+    return {{"surface_area", dim},
+            {"surface_size", 1},
+            {"surface_offset", dim}};
   }
 
   template <int dim>
@@ -85,14 +92,73 @@ namespace dealmpm
   }
 
   template <int dim>
+  Tensor<1, dim>
+  Traction<dim>::loaded_face_normal(const ParticleSet<dim> &particles) const
+  {
+    if (settings.all_faces || settings.face_normal.norm() > 0.)
+      return settings.face_normal;
+    const CoreFields &f = particles.fields;
+    // The selection's faces by direction, and the surface particles it
+    // leaves out.
+    std::array<double, 2 * dim + 1> areas{};
+    for (const GridCell<dim> &c : grid->cells)
+      for (const auto &p : particles.handler.particles_in_cell(c.cell))
+        {
+          const auto         props = p.get_properties();
+          const unsigned int body  = static_cast<unsigned int>(props[f.body]);
+          if (settings.bodies.count(body) == 0)
+            continue;
+          const SurfaceFaces<dim> faces =
+            surface_faces(c,
+                          p.get_reference_location(),
+                          (*bodies)[body].particles_per_direction,
+                          *(*bodies)[body].shape,
+                          props[f.initial_volume],
+                          Tensor<1, dim>());
+          if (selection.value(p.get_location()) == 0.)
+            areas[2 * dim] += faces.size;
+          else
+            for (unsigned int k = 0; k < 2 * dim; ++k)
+              areas[k] += faces.by_direction[k];
+        }
+    Utilities::MPI::sum(ArrayView<const double>(areas.data(), areas.size()),
+                        grid->comm,
+                        ArrayView<double>(areas.data(), areas.size()));
+    std::string  facing;
+    unsigned int n_directions = 0;
+    for (unsigned int k = 0; k < 2 * dim; ++k)
+      if (areas[k] > 0.)
+        {
+          facing += std::string(n_directions++ > 0 ? ", " : "") +
+                    (k % 2 == 0 ? "-" : "+") + "xyz"[k / 2] + " (" +
+                    short_number(areas[k]) + ")";
+        }
+    if (n_directions == 0)
+      throw InputError(settings.face_normal_entry +
+                       ": the 'Surface selection' holds no surface "
+                       "particle of the loaded bodies");
+    if (n_directions > 1 && areas[2 * dim] > 0.)
+      throw InputError(
+        settings.face_normal_entry +
+        ": expected the outward normal of the loaded face, e.g. '0, 1' "
+        "for a top face, or 'all': the selected surface particles have "
+        "faces facing " +
+        facing + ", and a corner particle's side faces would be loaded too");
+    return Tensor<1, dim>();
+  }
+
+  template <int dim>
   void
   Traction<dim>::initialize_particles(ParticleSet<dim> &particles) const
   {
     if (settings.bodies.empty())
       return;
-    const CoreFields  &f      = particles.fields;
-    const unsigned int area   = particles.layout.offset("surface_area");
-    const unsigned int offset = particles.layout.offset("surface_offset");
+    const Tensor<1, dim> normal = loaded_face_normal(particles);
+    const CoreFields    &f      = particles.fields;
+    const unsigned int   area   = particles.layout.offset("surface_area");
+    const unsigned int   size   = particles.layout.offset("surface_size");
+    const unsigned int   offset = particles.layout.offset("surface_offset");
+    std::array<double, dim + 1> loaded{}; // area vector, area
     for (const GridCell<dim> &c : grid->cells)
       for (auto &p : particles.handler.particles_in_cell(c.cell))
         {
@@ -105,23 +171,39 @@ namespace dealmpm
                                   p.get_reference_location(),
                                   (*bodies)[body].particles_per_direction,
                                   *(*bodies)[body].shape,
-                                  props[f.initial_volume]);
+                                  props[f.initial_volume],
+                                  normal);
           write_vector<dim>(&props[area], faces.area);
+          props[size] = faces.size;
           write_vector<dim>(&props[offset], faces.offset);
+          for (unsigned int d = 0; d < dim; ++d)
+            loaded[d] += faces.area[d];
+          loaded[dim] += faces.size;
         }
+    Utilities::MPI::sum(ArrayView<const double>(loaded.data(), loaded.size()),
+                        grid->comm,
+                        ArrayView<double>(loaded.data(), loaded.size()));
+    if (Utilities::MPI::this_mpi_process(grid->comm) == 0)
+      {
+        std::cout << "dealmpm: traction loads surface faces of area "
+                  << short_number(loaded[dim]) << ", outward area vector (";
+        for (unsigned int d = 0; d < dim; ++d)
+          std::cout << (d > 0 ? ", " : "") << short_number(loaded[d]);
+        std::cout << ")" << std::endl;
+      }
   }
 
   template <int dim>
   Tensor<1, dim>
   Traction<dim>::load(const Point<dim>     &x,
                       const double          factor,
-                      const double          area,
+                      const double          size,
                       const Tensor<1, dim> &a) const
   {
     Tensor<1, dim> t;
     for (unsigned int d = 0; d < dim; ++d)
       t[d] = traction.value(x, d);
-    return factor * (area * t - pressure.value(x) * a);
+    return factor * (size * t - pressure.value(x) * a);
   }
 
   template <int dim>
@@ -152,6 +234,7 @@ namespace dealmpm
       {
         const CoreFields  &cf   = state.particles.fields;
         const unsigned int area = state.particles.layout.offset("surface_area");
+        const unsigned int size = state.particles.layout.offset("surface_size");
         const unsigned int offset =
           state.particles.layout.offset("surface_offset");
         double *target[dim];
@@ -161,10 +244,11 @@ namespace dealmpm
           state.grid,
           state.particles.handler,
           [&](const std::size_t k, const auto &p, const GridCell<dim> &) {
-            const auto           props = p.get_properties();
-            const Tensor<1, dim> A0    = read_vector<dim>(&props[area]);
-            if (A0.norm_square() == 0.)
+            const auto   props = p.get_properties();
+            const double s0    = props[size];
+            if (s0 == 0.)
               return;
+            const Tensor<1, dim> A0 = read_vector<dim>(&props[area]);
             const Tensor<2, dim> F =
               read_tensor<dim>(&props[cf.deformation_gradient]);
             const Tensor<1, dim> a = settings.follower ? cofactor(F) * A0 : A0;
@@ -174,7 +258,7 @@ namespace dealmpm
             const Tensor<1, dim> delta =
               state.stencil.reference ? offset0 : F * offset0;
             const Tensor<1, dim> f =
-              load(p.get_location() + delta, factor, A0.norm(), a);
+              load(p.get_location() + delta, factor, s0, a);
             // N_i(x_p + delta) to first order: the loads' first moment,
             // sum_i x_i (x) f_i, is then the faces' own, and a uniform
             // pressure gives a mean stress of exactly -p.
@@ -194,12 +278,21 @@ namespace dealmpm
         nodal_load[d].compress(VectorOperation::add);
         fields.force[d].add(1., nodal_load[d]);
       }
+    double total = 0;
+    for (unsigned int i = 0; i < nodal_load[0].locally_owned_size(); ++i)
+      {
+        double f2 = 0;
+        for (unsigned int d = 0; d < dim; ++d)
+          f2 += std::pow(nodal_load[d].local_element(i), 2);
+        total += std::sqrt(f2);
+      }
+    largest_load = std::max(largest_load, total);
   }
 
   template <int dim>
   void
-  Traction<dim>::after_grid_update(const EffectContext<dim> &state,
-                                   NodalFields<dim>         &fields)
+  Traction<dim>::count_work(const EffectContext<dim> &state,
+                            const NodalFields<dim>   &fields)
   {
     const unsigned int n = fields.mass.locally_owned_size();
     for (unsigned int i = 0; i < n; ++i)
@@ -235,6 +328,21 @@ namespace dealmpm
                         "expression of the initial position (x, y, z) "
                         "that is nonzero where the load acts, e.g. "
                         "'y > 0.99' for a top face.");
+      prm.declare_entry("Face normal",
+                        "",
+                        Patterns::Anything(),
+                        "Which surface faces of the selected particles "
+                        "carry the load. The outward normal of the "
+                        "loaded face, e.g. '1, 0' for a bar's end at the "
+                        "largest x: only the faces facing it, each by "
+                        "its projection on it (a flat face of any "
+                        "orientation gets its own area). 'all': every "
+                        "surface face of the selected particles (for a "
+                        "curved part of a surface). Empty: all of them "
+                        "when the selection holds the whole surface of "
+                        "its bodies or its faces all face one way; "
+                        "otherwise the run stops and asks (a corner "
+                        "particle's side faces would be loaded too).");
       prm.declare_entry("Boundary ids",
                         "",
                         Patterns::List(Patterns::Integer(0)),
@@ -279,7 +387,18 @@ namespace dealmpm
         reader.fail("Bodies",
                     "at least one body or one of 'Boundary ids' to "
                     "load");
-      settings.selection = reader.get("Surface selection");
+      settings.selection         = reader.get("Surface selection");
+      settings.face_normal_entry = reader.where("Face normal");
+      const std::string normal   = reader.get("Face normal");
+      settings.all_faces         = normal == "all";
+      if (!normal.empty() && !settings.all_faces)
+        {
+          settings.face_normal = reader.get_vector<dim>("Face normal");
+          if (settings.face_normal.norm() == 0.)
+            reader.fail("Face normal",
+                        "a nonzero vector, 'all' or nothing (see the "
+                        "entry's documentation)");
+        }
       settings.traction =
         Utilities::split_string_list(reader.get("Traction"), ';');
       settings.pressure = reader.get("Pressure");
@@ -298,8 +417,8 @@ namespace dealmpm
       "surface loads, a traction and a pressure (expressions of x and t "
       "times a load curve), on the surface particles of bodies and on "
       "free grid boundaries (section Traction: Bodies, Surface "
-      "selection, Boundary ids, Traction, Pressure, Follower pressure, "
-      "Load curve).",
+      "selection, Face normal, Boundary ids, Traction, Pressure, "
+      "Follower pressure, Load curve).",
       declare_traction_parameters<dim>,
       read_traction<dim>);
   }

@@ -276,6 +276,9 @@ namespace dealmpm
       for_each_effect(s, [&](Effect<dim> &effect) {
         effect.after_grid_update(context, s.fields);
       });
+      for_each_effect(s, [&](Effect<dim> &effect) {
+        effect.count_work(context, s.fields);
+      });
     }
 
     template <int dim>

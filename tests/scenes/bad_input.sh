@@ -156,6 +156,14 @@ expect 2 "Traction/Traction.*expected 2 expressions separated by ';'" \
   "$scene" "${s[@]}" "${t[@]}" -s "Traction/Bodies=1" -s "Traction/Traction=0; 0; 1"
 expect 2 "Traction/Load curve.*expected a table 'time: factor" \
   "$scene" "${s[@]}" "${t[@]}" -s "Traction/Bodies=1" -s "Traction/Load curve=0: 0, 0: 1"
+expect 2 "Traction/Face normal.*expected the outward normal of the loaded face.*faces facing -x \(.*\), \+x .*\+y" \
+  "$scene" "${s[@]}" "${t[@]}" -s "Traction/Bodies=1" -s "Traction/Surface selection=y > -0.3"
+expect 2 "Traction/Face normal.*expected a nonzero vector, 'all' or nothing" \
+  "$scene" "${s[@]}" "${t[@]}" -s "Traction/Bodies=1" -s "Traction/Face normal=0, 0"
+expect 2 "Traction/Face normal.*expected" \
+  "$scene" "${s[@]}" "${t[@]}" -s "Traction/Bodies=1" -s "Traction/Face normal=0, 0, 1"
+expect 2 "Traction/Face normal.*the 'Surface selection' holds no surface particle" \
+  "$scene" "${s[@]}" "${t[@]}" -s "Traction/Bodies=1" -s "Traction/Surface selection=x > 100"
 r=(-s "Effects=rigid body")
 expect 2 "Rigid body/Upper corner.*expected a point above 'Lower corner'" "$scene" "${s[@]}" "${r[@]}"
 expect 2 "Rigid body/Normal.*expected a direction that is not zero" \

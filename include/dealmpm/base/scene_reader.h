@@ -84,6 +84,12 @@ namespace dealmpm
     [[noreturn]] void
     fail(const std::string &entry, const std::string &expected) const;
 
+    /** Where this entry was given, as fail() names it: "file: entry
+     * 'Section/entry' = 'value'" or "command line: -s '...'" (for an
+     * error found after the scene is read). */
+    std::string
+    where(const std::string &entry) const;
+
     const std::string &
     file_name() const
     {

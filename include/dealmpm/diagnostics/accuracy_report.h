@@ -2,7 +2,9 @@
 
 #include <dealmpm/diagnostics/statistics.h>
 
+#include <algorithm>
 #include <ostream>
+#include <string>
 
 namespace dealmpm
 {
@@ -30,9 +32,12 @@ namespace dealmpm
     double mass_loss      = 0;
     double min_J          = 1;
     double max_cfl        = 0;
-    bool   has_error      = false;
-    double error_L2       = 0;
-    double error_max      = 0;
+    /** The drift is a fraction of the floor (m |g| + F) h, not of the energy
+     * put in (AccuracyMonitor::energy_scale). */
+    bool   of_floor  = false;
+    bool   has_error = false;
+    double error_L2  = 0;
+    double error_max = 0;
 
     template <class Archive>
     void
@@ -40,15 +45,31 @@ namespace dealmpm
     {
       archive &energy_drift &momentum_drift &mass_loss &min_J &max_cfl;
       archive &has_error &error_L2                            &error_max;
+      archive                                                 &of_floor;
     }
   };
 
   class AccuracyMonitor
   {
   public:
-    /** Start from the initial state. */
+    /** Start from the initial state. @p energy_floor: the smallest scale
+     * the energy drift is measured against (see energy_scale()). */
     void
-    start(const Statistics &initial);
+    start(const Statistics &initial, const double energy_floor = 0);
+
+    /** Raise the floor to @p energy_floor if that is larger (loads that
+     * grow). */
+    void
+    raise_floor(const double floor)
+    {
+      energy_floor = std::max(energy_floor, floor);
+    }
+
+    /** What the energy drift is a fraction of: "the energy put in", or,
+     * when that is smaller than the floor (a body that settles at rest
+     * under gravity puts in next to nothing), the floor with both values. */
+    std::string
+    energy_scale() const;
 
     /** After every step: the step's smallest J and largest particle CFL
      * number (global values). */
@@ -71,13 +92,19 @@ namespace dealmpm
     serialize(Archive &archive, const unsigned int /*version*/)
     {
       archive &initial &max_energy_supplied &max_kinetic_energy &current;
+      archive                                                   &energy_floor;
     }
 
   private:
     Statistics     initial;
     double         max_energy_supplied = 0; ///< |W_ext| + potential released
     double         max_kinetic_energy  = 0;
+    double         energy_floor        = 0;
     AccuracyReport current;
+
+    /** The energy put in: E_0 (kinetic and strain) + max_energy_supplied. */
+    double
+    energy_put_in() const;
   };
 
   /** The report as a few lines for the end of a run. */

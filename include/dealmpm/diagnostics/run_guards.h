@@ -47,6 +47,7 @@ namespace dealmpm
     const std::vector<std::unique_ptr<Effect<dim>>>   &effects,
     const std::vector<Tensor<1, dim>>                 &initial_velocity,
     const double                                       drift,
+    const std::string                                 &scale,
     const double                                       limit,
     const std::string                                 &when,
     const MPI_Comm                                     comm);

@@ -171,6 +171,16 @@ namespace dealmpm
                       NodalFields<dim> & /*fields*/)
     {}
 
+    /** After every effect's after_grid_update, when v* is final (walls,
+     * friction, contact and rigid bodies have acted): count the work of
+     * the effect's forces over the step, f . (v + v*) / 2 dt with v = p /
+     * m, which vanishes at a node that stays at rest however the step
+     * got there. */
+    virtual void
+    count_work(const EffectContext<dim> & /*state*/,
+               const NodalFields<dim> & /*fields*/)
+    {}
+
     /** After USF's and MUSL's re-map made the nodal velocity v = p / m
      * (with its boundary conditions) that the stress update reads: act on
      * it (contact). */
@@ -189,6 +199,16 @@ namespace dealmpm
      * for forces without a potential (the energy balance counts it). */
     virtual double
     work_done() const
+    {
+      return 0;
+    }
+
+    /** The largest total magnitude of the effect's loads, sum |f_i| over
+     * its nodes, in any step so far (this rank's share): times the cell
+     * size, a scale of the energy the loads can put in that does not
+     * vanish when a loaded body rests (the energy guard's floor). */
+    virtual double
+    load_magnitude() const
     {
       return 0;
     }

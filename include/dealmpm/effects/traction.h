@@ -18,10 +18,13 @@ namespace dealmpm
    * a pressure p (pushing along the inward normal), expressions of the
    * current position and time, times a load curve. They act
    *
-   * - on the surface particles of listed bodies: each particle's outward
-   *   area vector A0 (particles/surface_area.h, found once at the start,
-   *   stored as the particle field "surface_area") carries the force
-   *   f_p = factor (|A0| t - p a), a = A0 (dead load) or, for a follower
+   * - on the surface particles of listed bodies: the faces of a selected
+   *   particle that the load takes (particles/surface_area.h: those facing
+   *   the given face normal, or those on the side the selection covers),
+   *   found once at the start, with their area s0 (particle field
+   *   "surface_size") and outward area vector A0 ("surface_area"), carry
+   *   the force f_p = factor (s0 t - p a), a = A0 (dead load) or, for a
+   *   follower
    *   pressure, the deformed area J F^-T A0 (Nanson), acting at the
    *   faces' centre x_p + F d0 (d0 stored as "surface_offset"): spread to
    *   the nodes with N_i(x_p) + grad N_i(x_p) . F d0, so that the loads'
@@ -30,8 +33,10 @@ namespace dealmpm
    * - on the nodes of free grid boundaries: f_i = factor (|A_i| t - p A_i)
    *   with A_i the node's area vector, where material touches the node.
    *
-   * The loads' work, f . (v + v*) / 2 summed over the nodes, counts in the
-   * energy balance (column traction_work).
+   * The loads' work, f . (v + v*) / 2 dt summed over the nodes with the
+   * step's final v* (after walls, friction and rigid bodies), counts in
+   * the energy balance (column traction_work): a constant load on a body
+   * held at rest does none.
    */
   template <int dim>
   class Traction : public EffectWithWork<dim>
@@ -43,9 +48,15 @@ namespace dealmpm
       std::string                  selection = "1";
       std::set<types::boundary_id> boundary_ids;
       std::vector<std::string>     traction; ///< dim expressions
-      std::string                  pressure = "0";
-      bool                         follower = false;
-      LoadCurve                    curve;
+      /** Zero: every face if all_faces, else inferred (see
+       * loaded_face_normal). */
+      Tensor<1, dim> face_normal;
+      bool           all_faces = false;
+      /** The entry as the scene gave it, for a later error. */
+      std::string face_normal_entry;
+      std::string pressure = "0";
+      bool        follower = false;
+      LoadCurve   curve;
     };
 
     /** Parses the expressions; the reader fails on a bad one. */
@@ -61,7 +72,8 @@ namespace dealmpm
     void
     grid_changed(const BackgroundGrid<dim> &grid) override;
 
-    /** Each listed body's surface particles get their area vectors. */
+    /** Each listed body's surface particles get their loaded faces; rank 0
+     * says how much area is loaded, and facing where. */
     void
     initialize_particles(ParticleSet<dim> &particles) const override;
 
@@ -70,15 +82,28 @@ namespace dealmpm
                      NodalFields<dim>         &fields) override;
 
     void
-    after_grid_update(const EffectContext<dim> &state,
-                      NodalFields<dim>         &fields) override;
+    count_work(const EffectContext<dim> &state,
+               const NodalFields<dim>   &fields) override;
+
+    double
+    load_magnitude() const override
+    {
+      return largest_load;
+    }
 
   private:
-    /** factor (|A| t(x) - p(x) a), at the expressions' time. */
+    /** The face normal the loads take (zero: every surface face of the
+     * selection): the one given; else none when the selection holds every
+     * surface particle of its bodies (a closed surface) or its faces all
+     * face one way; else an InputError naming the directions they face. */
+    Tensor<1, dim>
+    loaded_face_normal(const ParticleSet<dim> &particles) const;
+
+    /** factor (s t(x) - p(x) a), at the expressions' time. */
     Tensor<1, dim>
     load(const Point<dim>     &x,
          const double          factor,
-         const double          area,
+         const double          size,
          const Tensor<1, dim> &a) const;
 
     Settings                       settings;
@@ -89,6 +114,7 @@ namespace dealmpm
     const BackgroundGrid<dim>     *grid   = nullptr;
     std::vector<BoundaryNode<dim>> nodes;
     std::array<NodalVector, dim>   nodal_load;
+    double                         largest_load = 0;
   };
 
   /** Register "traction" in the effect table: its parameters (section
