@@ -23,9 +23,9 @@ namespace dealmpm
 {
   namespace
   {
-    /** (m |g| + F) h: the work of gravity and of the loads (F: their
-     * largest total magnitude so far) over one (smallest) cell, the energy
-     * guard's scale when a scene puts in less. */
+    /** (m |g| + F) h / 1000: the work of gravity and of the loads (F:
+     * their largest total magnitude so far) over a thousandth of the
+     * smallest cell, the energy guard's scale when a scene puts in less. */
     template <int dim>
     double
     load_energy_floor(const Statistics                                &s,
@@ -40,7 +40,7 @@ namespace dealmpm
         loads += effect->load_magnitude();
       h     = Utilities::MPI::min(h, grid.comm);
       loads = Utilities::MPI::sum(loads, grid.comm);
-      return (s.mass * uniform_acceleration(effects).norm() + loads) * h;
+      return 1e-3 * (s.mass * uniform_acceleration(effects).norm() + loads) * h;
     }
   } // namespace
 

@@ -75,8 +75,9 @@ namespace dealmpm
     if (!current.of_floor)
       return "the energy put in";
     std::ostringstream s;
-    s << std::setprecision(3) << "(m |g| + F) h = " << energy_floor
-      << " J, the work of gravity and the loads over one cell (larger than "
+    s << std::setprecision(3) << "(m |g| + F) h / 1000 = " << energy_floor
+      << " J, the work of gravity and the loads over a thousandth of a cell "
+         "(larger than "
          "the energy put in, "
       << energy_put_in() << " J)";
     return s.str();
@@ -89,7 +90,7 @@ namespace dealmpm
     const auto precision = out.precision();
     out << std::setprecision(3) << "accuracy: energy drift "
         << 100 * r.energy_drift << " % of "
-        << (r.of_floor ? "(m |g| + F) h" : "the energy put in")
+        << (r.of_floor ? "(m |g| + F) h / 1000" : "the energy put in")
         << ", momentum drift " << 100 * r.momentum_drift << " %, mass loss "
         << 100 * r.mass_loss << " %, smallest J " << r.min_J
         << ", largest particle CFL " << r.max_cfl;

@@ -2,7 +2,8 @@
 # Bodies that come to rest under a constant load: the load does no more
 # work, friction without slip dissipates nothing, and the energy guard lets
 # them run (the energy they were given is near zero; the guard's scale is
-# then the work of gravity and the loads over one cell, (m |g| + F) h, and
+# then the work of gravity and the loads over a thousandth of a cell,
+# (m |g| + F) h / 1000, and
 # the report says so).
 #   at_rest.sh dealmpm prm/incline_block.prm
 source "$(dirname "$0")/check_lib.sh"
@@ -21,8 +22,9 @@ close_to() { awk -v a="$1" -v b="$2" -v tol="$3" 'BEGIN { d = a - b; if (d < 0) 
 
 # A block on an incline that friction holds: README's incline with mu =
 # 0.6 > tan 30 deg, and tan theta = 0.466 < mu = 0.55. The friction work
-# is spent while the block settles and then stays; the energy drift stays
-# within 1 %.
+# is spent while the block settles and then stays; the energy does not
+# grow (the drift stays below 1 %; PIC dissipates while the block
+# settles, so it may fall).
 quiet=(-s "Output/Write particles=false" -s "Output/Interval=0.05")
 run_incline() { # name overrides...
   local name=$1; shift
@@ -38,9 +40,8 @@ run_incline() { # name overrides...
   close_to "$settled" "$last" 1e-6 || fail "$name: friction work changed at rest ($settled -> $last)"
   local drift
   for drift in $(column energy_drift "$name/statistics.csv"); do
-    close_to "$drift" 0 0.01 || { fail "$name: energy drift $drift"; break; }
+    awk -v d="$drift" 'BEGIN { exit !(d < 0.01) }' || { fail "$name: energy drift $drift"; break; }
   done
-  grep -Fq "% of (m |g| + F) h" out.txt || fail "$name: the report should name the scale (m |g| + F) h"
 }
 run_incline incline_06 -s "Boundary friction/Coefficients=2: 0.6"
 run_incline incline_055 -s "Boundary friction/Coefficients=2: 0.55" -s "Gravity/Acceleration=4.14381, -8.89175"
@@ -103,6 +104,9 @@ if [ $code = 0 ]; then
   # tolerance; counted before the box's correction, it grew by 70 J.
   close_to "$settled" "$last" 2e-5 \
     || fail "pulled block: traction work changed at rest ($settled -> $last)"
+  # Nothing moves, so nothing is put in: the drift is measured against the
+  # floor, and the report says so.
+  grep -Fq "% of (m |g| + F) h / 1000" out.txt || fail "pulled block: the report should name the scale (m |g| + F) h / 1000"
 else
   fail "pulled block: exit $code"; cat err.txt
 fi

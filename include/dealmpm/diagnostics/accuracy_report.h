@@ -15,8 +15,12 @@ namespace dealmpm
    *   gravity's potential), W_ext the work of effects without a potential
    *   (manufactured body forces), E_in the energy the scene was given: the
    *   kinetic and strain energy at the start plus the largest |W_ext| +
-   *   (potential energy released) seen. Damping and walls that do work show
-   *   up here too. Measured against what went in, not against the largest
+   *   (potential energy released) seen, or, if larger, the floor (m |g| +
+   *   F) h / 1000, the work of gravity and the loads (F their largest total
+   *   magnitude) over a thousandth of the smallest cell: a body that
+   *   settles at rest puts in next to nothing, and round-off against
+   *   nothing is no growth. Damping and walls that do work show up here
+   *   too. Measured against what went in, not against the largest
    *   energy seen, so energy a scheme creates cannot hide itself;
    * - momentum drift: |P - P_0| / sqrt(2 M max kinetic energy seen): zero
    *   only without external forces and walls (the colliding disks);
@@ -32,8 +36,8 @@ namespace dealmpm
     double mass_loss      = 0;
     double min_J          = 1;
     double max_cfl        = 0;
-    /** The drift is a fraction of the floor (m |g| + F) h, not of the energy
-     * put in (AccuracyMonitor::energy_scale). */
+    /** The drift is a fraction of the floor (m |g| + F) h / 1000, not of the
+     * energy put in (AccuracyMonitor::energy_scale). */
     bool   of_floor  = false;
     bool   has_error = false;
     double error_L2  = 0;
