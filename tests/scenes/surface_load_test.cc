@@ -16,6 +16,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <sstream>
 
 #include "test_scene.h"
@@ -60,7 +61,7 @@ namespace
    * by a pressure ramped over 0.1 s, damped. */
   template <int dim>
   std::string
-  pressed_block(const std::string &face_normal)
+  pressed_block(const std::string &face_normal, const unsigned int cells = 32)
   {
     const char         up = dim == 2 ? 'y' : 'z';
     std::ostringstream s;
@@ -74,7 +75,8 @@ namespace
       << "subsection MPM\n set Velocity update = PIC\nend\n"
       << "subsection Grid\n set Upper corner = "
       << (dim == 2 ? "0.4, 0.4" : "0.4, 0.4, 0.4") << "\n"
-      << " set Cells = " << (dim == 2 ? "32, 32" : "32, 32, 32") << "\n"
+      << " set Cells = " << cells << ", " << cells
+      << (dim == 3 ? ", " + std::to_string(cells) : "") << "\n"
       << " set Boundary conditions = " << (dim == 2 ? "2" : "4")
       << ": slip\nend\n"
       << "subsection Material 1\n set Density = 1000\n"
@@ -249,4 +251,20 @@ TEST(SurfaceLoad, BlockPressedOnItsTopHasNoSideStress)
   EXPECT_NEAR(s[0][0], 0, 0.005 * load);
   EXPECT_NEAR(s[1][1], -load / (1 + 0.3 * 1.3 * load / 1e6), 1e-3 * load);
   EXPECT_NEAR(s[0][1], 0, 0.005 * load);
+}
+
+// The same in 3D on 16 cells per side (0.025; z > 0.19 holds the top layer
+// of particles): sigma_xx = sigma_yy = 0, and sigma_zz = -p over the
+// block's widening in two directions, (1 + nu p / E)^2 = 1.006.
+TEST(SurfaceLoad, BlockPressedOnItsTopHasNoSideStress3D)
+{
+  auto block = test::make_simulation<3>(pressed_block<3>("0, 0, 1", 16));
+  test::run_to(*block, 0.4);
+  const SymmetricTensor<2, 3> s = mean_stress(*block);
+  std::cout << "surface load: 3D block pressed on its top, mean stress "
+            << s[0][0] / load << ", " << s[1][1] / load << ", "
+            << s[2][2] / load << " of p" << std::endl;
+  EXPECT_NEAR(s[0][0], 0, 0.005 * load);
+  EXPECT_NEAR(s[1][1], 0, 0.005 * load);
+  EXPECT_NEAR(s[2][2], -load / std::pow(1 + 0.3 * load / 1e6, 2), 2e-3 * load);
 }
