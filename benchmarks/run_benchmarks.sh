@@ -4,8 +4,12 @@
 # particle-steps per second per core (best of 3 runs: the machine is shared
 # and noisy), and memory per particle as the growth of peak resident memory
 # between sizes divided by the growth in particles.
-# Then the same per shape function, relative to linear.
-#   benchmarks/run_benchmarks.sh [path/to/dealmpm] [sizes|kernels|all]
+# Then the same per shape function, relative to linear; then the column
+# flowing: lifted off the floor (no wall holds it) in a grid three times
+# as tall and given 250 m/s upwards, about twice its wave speed, so that
+# a particle changes cell every third step, against the same column at
+# rest in the same grid (the particles' sort is what differs).
+#   benchmarks/run_benchmarks.sh [path/to/dealmpm] [sizes|kernels|flowing|all]
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 dealmpm=${1:-$here/../build/dealmpm}
@@ -42,7 +46,7 @@ run() { # dim cells
   echo "| ${dim}D | $cells | $particles | $rate | $mb | $marginal |"
   previous_particles=$particles previous_mb=$mb
 }
-if [ "$part" != kernels ]; then
+if [ "$part" = all ] || [ "$part" = sizes ]; then
 echo "| dim | cells | particles | M particle-steps/s/core | peak MB | bytes/particle (marginal) |"
 echo "|---|---|---|---|---|---|"
 previous_particles=""
@@ -51,7 +55,7 @@ previous_particles=""
 for cells in "8, 8, 36" "16, 16, 72" "24, 24, 108"; do run 3 "$cells"; done
 fi
 
-if [ "$part" != sizes ]; then
+if [ "$part" = all ] || [ "$part" = kernels ]; then
   echo
   echo "| shape function | 2D, 262144 particles | / linear | 3D, 131072 particles | / linear |"
   echo "|---|---|---|---|---|"
@@ -61,4 +65,23 @@ if [ "$part" != sizes ]; then
     [ "$kernel" = linear ] && { linear2=$r2 linear3=$r3; }
     echo "| $kernel | $r2 | $(awk "BEGIN {printf \"%.2f\", $linear2 / $r2}") | $r3 | $(awk "BEGIN {printf \"%.2f\", $linear3 / $r3}") |"
   done
+fi
+
+if [ "$part" = all ] || [ "$part" = flowing ]; then
+  echo
+  echo "| dim | cells | at rest, M p-steps/s | flowing | flowing / at rest |"
+  echo "|---|---|---|---|---|"
+  flow() { # dim cells upper lower upper_body walls velocity
+    local dim=$1 cells=$2 common rest moving
+    common=(-s "Grid/Upper corner=$3" -s "Body 1/Lower corner=$4"
+      -s "Body 1/Upper corner=$5" -s "Grid/Boundary conditions=$6")
+    rest=$(best_rate "$dim" "$cells" "${common[@]}")
+    moving=$(best_rate "$dim" "$cells" "${common[@]}" -s "Body 1/Velocity=$7")
+    echo "| ${dim}D | $cells | $rest | $moving | $(awk "BEGIN {printf \"%.2f\", $moving / $rest}") |"
+  }
+  for cells in "64, 768" "128, 1536"; do
+    flow 2 "$cells" "1, 12" "0, 0.5" "1, 4.5" "0: slip, 1: slip" "0, 250"
+  done
+  flow 3 "16, 16, 192" "1, 1, 12" "0, 0, 0.5" "1, 1, 4.5" \
+    "0: slip, 1: slip, 2: slip, 3: slip" "0, 0, 250"
 fi
