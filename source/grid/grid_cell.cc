@@ -56,10 +56,8 @@ namespace dealmpm
 
   template <int dim>
   Point<dim>
-  GridCell<dim>::reference_point(const Point<dim> &x) const
+  GridCell<dim>::reference_point_by_newton(const Point<dim> &x) const
   {
-    if (affine)
-      return Point<dim>(inverse_jacobian * (x - vertices[0]));
     Point<dim> xi;
     for (unsigned int d = 0; d < dim; ++d)
       xi[d] = 0.5;

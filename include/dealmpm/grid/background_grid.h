@@ -51,9 +51,19 @@ namespace dealmpm
     real_point(const Point<dim> &xi) const;
 
     /** Unit-cell coordinates of x: exact for affine cells, Newton's method
-     * on the Q1 map otherwise. May lie outside [0,1]^dim. */
+     * on the Q1 map otherwise. May lie outside [0,1]^dim. Inline for
+     * affine cells: G2P calls it once per particle and step. */
     Point<dim>
-    reference_point(const Point<dim> &x) const;
+    reference_point(const Point<dim> &x) const
+    {
+      if (affine)
+        return Point<dim>(inverse_jacobian * (x - vertices[0]));
+      return reference_point_by_newton(x);
+    }
+
+    /** reference_point() of a cell that is not affine. */
+    Point<dim>
+    reference_point_by_newton(const Point<dim> &x) const;
 
     /** d(xi)/dx at xi (the inverse Jacobian of the Q1 map). */
     Tensor<2, dim>

@@ -36,7 +36,7 @@ namespace dealmpm
     /** Fold one particle into the check; false when its state is
      * unusable. */
     template <typename Accessor>
-    bool
+    DEAL_II_ALWAYS_INLINE inline bool
     inspect(const Accessor                &p,
             const Tensor<1, dim>          &v,
             const Tensor<2, dim>          &F,
