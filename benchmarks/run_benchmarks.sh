@@ -9,7 +9,10 @@
 # as tall and given 250 m/s upwards, about twice its wave speed, so that
 # a particle changes cell every third step, against the same column at
 # rest in the same grid (the particles' sort is what differs).
-#   benchmarks/run_benchmarks.sh [path/to/dealmpm] [sizes|kernels|flowing|all]
+# Then the particles' own memory: the growth of peak memory on a fixed grid
+# when the particles per cell rise (2 to 4 per direction in 2D, 2 to 3 in
+# 3D), per particle added.
+#   benchmarks/run_benchmarks.sh [path/to/dealmpm] [sizes|kernels|flowing|memory|all]
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 dealmpm=${1:-$here/../build/dealmpm}
@@ -84,4 +87,26 @@ if [ "$part" = all ] || [ "$part" = flowing ]; then
   done
   flow 3 "16, 16, 192" "1, 1, 12" "0, 0, 0.5" "1, 1, 4.5" \
     "0: slip, 1: slip, 2: slip, 3: slip" "0, 0, 250"
+fi
+
+if [ "$part" = all ] || [ "$part" = memory ]; then
+  echo
+  echo "| dim | cells | particles per cell | particles | peak MB | own bytes/particle |"
+  echo "|---|---|---|---|---|---|"
+  own() { # dim cells ppc_low ppc_high
+    local dim=$1 cells=$2 n mb n0="" mb0=""
+    for ppc in "$3" "$4"; do
+      "$dealmpm" "$here/elastic_column_${dim}d.prm" -s "Grid/Cells=$cells" \
+        -s "Body 1/Particles per cell=$ppc" -s "Time/Maximum number of steps=20" \
+        -s "Output/Directory=$work/out" > "$work/log" 2>&1
+      n=$(grep -o '[0-9]* particles,' "$work/log" | grep -o '[0-9]*')
+      mb=$(grep -o 'peak memory [0-9]* MB' "$work/log" | grep -o '[0-9]*')
+      local per="-"
+      [ -n "$n0" ] && per=$(( (mb - mb0) * 1048576 / (n - n0) ))
+      echo "| ${dim}D | $cells | $ppc | $n | $mb | $per |"
+      n0=$n mb0=$mb
+    done
+  }
+  own 2 "128, 576" 2 4
+  own 3 "16, 16, 72" 2 3
 fi
