@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # A punch of finite elements pushed into a Drucker-Prager block (issue 32,
 # point 5: pile_in_sand looks as if it left a particle-free slot under its
-# tip). Drawn as points, the sand under a pushed tip shows a slot about a
-# cell wide: the flow around the tip stretches the particle lattice
+# tip). Drawn as points, the scene's sand under the tip shows a slot about
+# a cell wide: the flow around the tip stretches the particle lattice
 # sideways (centres up to a cell apart across, half a spacing down) while
 # each particle's volume J V0 grows with it. The material is there: the
 # particles' volumes fill the box under the tip, and the sand touches the
