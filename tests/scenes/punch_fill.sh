@@ -51,9 +51,12 @@ x0, x1, y0, y1 = 0.25 + h / 2, 0.35 - h / 2, tip - 3 * h, tip - h / 2
 filled = sum(J * V0 for x, y, J in sand
              if x0 <= x < x1 and y0 <= y < y1) / ((x1 - x0) * (y1 - y0))
 # The highest particle centre under the tip's middle: half a particle
-# spacing below the tip when they touch; contact across a gap kept the
-# bodies about 0.6 of a cell apart (centres 0.8 of a cell below); a
-# contact that let the sand into the punch would put centres above it.
+# spacing below the tip when they touch (compressed, less); a contact
+# that let the sand into the punch would put centres above it (a gap
+# check half a cell late gives -0.25 to -0.34), one that kept the sand
+# off would leave them more than half a cell below. (Contact across the
+# gap, before issue 32, does not show here: a pushed punch keeps closing
+# on the sand.)
 under = [y for x, y, J in sand if x0 <= x < x1 and y < tip + h]
 gap = (tip - max(under)) / h
 print(f"{name}: the box under the tip filled to {filled:.3f} by J V0; "
