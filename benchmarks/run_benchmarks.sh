@@ -20,6 +20,10 @@ part=${2:-all}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
+# The particles and peak MB a run printed in $work/log.
+log_particles() { grep -o '[0-9]* particles,' "$work/log" | grep -o '[0-9]*'; }
+log_mb() { grep -o 'peak memory [0-9]* MB' "$work/log" | grep -o '[0-9]*'; }
+
 best_rate() { # dim cells overrides... -> best of 3 M particle-steps/s
   local dim=$1 cells=$2 rate="" r; shift 2
   for repeat in 1 2 3; do
@@ -40,8 +44,8 @@ run() { # dim cells
     r=$(grep -o '([0-9.e+-]* M per core)' "$work/log" | grep -o '[0-9.e+-]*' | head -1)
     rate=$(printf '%s\n%s\n' "$rate" "$r" | sort -g | tail -1)
   done
-  particles=$(grep -o '[0-9]* particles,' "$work/log" | grep -o '[0-9]*')
-  mb=$(grep -o 'peak memory [0-9]* MB' "$work/log" | grep -o '[0-9]*')
+  particles=$(log_particles)
+  mb=$(log_mb)
   local marginal="-"
   if [ -n "${previous_particles:-}" ]; then
     marginal=$(( (mb - previous_mb) * 1048576 / (particles - previous_particles) ))
@@ -99,8 +103,8 @@ if [ "$part" = all ] || [ "$part" = memory ]; then
       "$dealmpm" "$here/elastic_column_${dim}d.prm" -s "Grid/Cells=$cells" \
         -s "Body 1/Particles per cell=$ppc" -s "Time/Maximum number of steps=20" \
         -s "Output/Directory=$work/out" > "$work/log" 2>&1
-      n=$(grep -o '[0-9]* particles,' "$work/log" | grep -o '[0-9]*')
-      mb=$(grep -o 'peak memory [0-9]* MB' "$work/log" | grep -o '[0-9]*')
+      n=$(log_particles)
+      mb=$(log_mb)
       local per="-"
       [ -n "$n0" ] && per=$(( (mb - mb0) * 1048576 / (n - n0) ))
       echo "| ${dim}D | $cells | $ppc | $n | $mb | $per |"
