@@ -98,18 +98,50 @@ namespace dealmpm
         if (!mixed_cells->needed())
           mixed_cells.reset();
       }
-    stages         = stages_of<dim>(run_settings.method.scheme,
+    stencil.where_used = weights_where_used();
+    stages             = stages_of<dim>(run_settings.method.scheme,
                             mixed_cells != nullptr,
                             run_settings.method.formulation,
                             run_settings.method.particle_update.newmark,
                             !regions.empty());
-    particle_check = check_particles(grid,
+    particle_check     = check_particles(grid,
                                      materials,
                                      *particles,
                                      run_settings.method.total_lagrangian());
     max_signal_rate =
       std::max(Utilities::MPI::max(particle_check.max_signal_rate, comm),
                regions.signal_rate());
+  }
+
+  template <int dim>
+  std::vector<Point<dim>>
+  Simulation<dim>::particle_locations() const
+  {
+    std::vector<Point<dim>> locations;
+    locations.reserve(particles->handler.n_locally_owned_particles());
+    for (const auto &p : particles->handler)
+      locations.push_back(p.get_location());
+    return locations;
+  }
+
+  template <int dim>
+  bool
+  Simulation<dim>::weights_where_used() const
+  {
+    // The sweeps compute a particle's weights from its reference location
+    // in its listed cell, which G2P's move changes after the sweeps of the
+    // step that read them (MUSL's G2P leaves it to the stress update). The
+    // other readers read stored weights: APIC's positions, Newmark's
+    // predictor, the mixed-cell split, FEM regions' contact, total
+    // Lagrangian's reference stencil, most effects.
+    const MethodSettings &method = run_settings.method;
+    if (kernel.name() != "linear" || method.apic ||
+        method.particle_update.newmark || method.total_lagrangian() ||
+        mixed_cells || !regions.empty())
+      return false;
+    return std::none_of(effects.begin(), effects.end(), [](const auto &effect) {
+      return effect->reads_stencil();
+    });
   }
 
   template <int dim>
@@ -246,11 +278,15 @@ namespace dealmpm
     fill_bodies(reader, bodies, densities, initial, grid, *particles);
     if (!effects.empty())
       {
+        const std::vector<Point<dim>> before = particle_locations();
         for (const auto &effect : effects)
           effect->initialize_particles(*particles);
         // Total Lagrangian keeps each particle in the cell of its reference
         // position, where an effect's initial state may have moved it.
-        if (!run_settings.method.total_lagrangian())
+        // Sort only if an effect moved a particle: a sort copies the whole
+        // particle pool, which was the set-up's peak memory.
+        if (!run_settings.method.total_lagrangian() &&
+            Utilities::MPI::logical_or(particle_locations() != before, comm))
           particles->handler.sort_particles_into_subdomains_and_cells();
       }
     start_geostatic_bodies(reader,
@@ -310,6 +346,9 @@ namespace dealmpm
                                                     const SceneShape &);     \
   template void Simulation<dim>::start_load_balance(const CheckpointInfo *); \
   template void Simulation<dim>::choose_stages();                            \
+  template bool Simulation<dim>::weights_where_used() const;                 \
+  template std::vector<Point<dim>> Simulation<dim>::particle_locations()     \
+    const;                                                                   \
   template void Simulation<dim>::read_scene(SceneReader &,                   \
                                             const SceneShape &);             \
   template void Simulation<dim>::build_grid(SceneReader &,                   \

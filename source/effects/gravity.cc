@@ -19,6 +19,12 @@ namespace dealmpm
     class Gravity : public Effect<dim>
     {
     public:
+      bool
+      reads_stencil() const override
+      {
+        return false;
+      }
+
       Gravity(const Tensor<1, dim> &g, const double ramp_time)
         : g(g)
         , ramp_time(ramp_time)

@@ -15,6 +15,12 @@ namespace dealmpm
     class LocalDamping : public Effect<dim>
     {
     public:
+      bool
+      reads_stencil() const override
+      {
+        return false;
+      }
+
       explicit LocalDamping(const double alpha)
         : alpha(alpha)
       {}

@@ -81,9 +81,15 @@ namespace dealmpm
                 result.overlapped_body == numbers::invalid_unsigned_int)
               result.overlapped_body =
                 first_body_containing(x, 0, body_index, false);
-            insert(c, k, xi, x);
+            if (counting)
+              ++result.n_created;
+            else
+              insert(c, k, xi, x);
           }
       }
+
+      /** fill() only counts the particles it would make. */
+      bool counting = false;
 
       GeneratedParticles result;
 
@@ -194,6 +200,16 @@ namespace dealmpm
                            initial_internal_variables,
                            id_stride);
     check_id_range(grid, body_index, id_stride);
+    // Count first and reserve, so that the particle pool grows once: grown
+    // by doubling while filling, it held up to twice the pool at the last
+    // growth (the old copy and the new).
+    filler.counting = true;
+    for (const GridCell<dim> &c : grid.cells)
+      filler.fill(c);
+    particles.handler.reserve(particles.handler.n_locally_owned_particles() +
+                              filler.result.n_created);
+    filler.counting = false;
+    filler.result   = GeneratedParticles();
     for (const GridCell<dim> &c : grid.cells)
       filler.fill(c);
     return filler.result;

@@ -147,6 +147,9 @@ namespace dealmpm
     void
     stencil(StepState<dim> &s, const std::string &timer_section)
     {
+      // P2G and G2P compute the weights (LinearWeights): no timer row.
+      if (s.stencil.where_used)
+        return;
       {
         TimerOutput::Scope t(s.timer, timer_section);
         s.kernel.compute_stencil(s.grid, s.particles, s.stencil);
@@ -380,26 +383,40 @@ namespace dealmpm
       });
     }
 
+    /** MUSL's re-map and stress update compute their weights where they
+     * use them from the reference location at the step's start: its G2P
+     * leaves it, the stress update sets it. */
+    template <int dim>
+    bool
+    defers_reference_location(const StepState<dim> &s)
+    {
+      return s.stencil.where_used && s.method.scheme == UpdateScheme::MUSL;
+    }
+
     template <int dim>
     void
     g2p(StepState<dim> &s, const std::string &timer_section)
     {
       TimerOutput::Scope t(s.timer, timer_section);
       with_nodal_velocity(s, [&](const auto &velocities) {
-        const auto motion = [&](const auto formulation) {
-          s.left_cell =
-            grid_to_particle<G2P::motion, decltype(formulation)::value>(
-              s.grid,
-              s.stencil,
-              velocities,
-              s.dt,
-              s.method.flip_fraction,
-              s.particles);
+        const auto motion = [&](const auto formulation, const auto what) {
+          s.left_cell = grid_to_particle<decltype(what)::value,
+                                         decltype(formulation)::value>(
+            s.grid,
+            s.stencil,
+            velocities,
+            s.dt,
+            s.method.flip_fraction,
+            s.particles);
         };
+        using Motion = std::integral_constant<G2P, G2P::motion>;
         if (s.method.formulation == Formulation::total_lagrangian)
-          motion(TotalLagrangian());
+          motion(TotalLagrangian(), Motion());
+        else if (defers_reference_location(s))
+          motion(UpdatedLagrangian(),
+                 std::integral_constant<G2P, G2P::motion_keeping_reference>());
         else
-          motion(UpdatedLagrangian());
+          motion(UpdatedLagrangian(), Motion());
       });
     }
 
@@ -414,16 +431,26 @@ namespace dealmpm
           [&](const auto  formulation,
               const auto &adjust,
               const auto &increment) {
-            grid_to_particle<G2P::deformation, decltype(formulation)::value>(
-              s.grid,
-              s.stencil,
-              velocities,
-              s.dt,
-              s.method.flip_fraction,
-              s.particles,
-              s.stress_update,
-              adjust,
-              increment);
+            const auto deformation = [&](const auto what) {
+              grid_to_particle<decltype(what)::value,
+                               decltype(formulation)::value>(
+                s.grid,
+                s.stencil,
+                velocities,
+                s.dt,
+                s.method.flip_fraction,
+                s.particles,
+                s.stress_update,
+                adjust,
+                increment);
+            };
+            if constexpr (decltype(formulation)::value ==
+                          Formulation::updated_lagrangian)
+              if (defers_reference_location(s))
+                return deformation(
+                  std::integral_constant<G2P,
+                                         G2P::deformation_then_reference>());
+            deformation(std::integral_constant<G2P, G2P::deformation>());
           });
       });
     }

@@ -28,45 +28,26 @@ namespace dealmpm
     };
     ensure(n_local * n_vertices);
 
-    std::size_t       e = 0;
-    double            N[n_vertices];
-    Tensor<1, dim>    grad_xi[n_vertices];
-    const std::size_t n_visited = for_each_particle_in_stencil_order(
+    std::size_t              e = 0;
+    const LinearWeights<dim> weights{grid};
+    const std::size_t        n_visited = for_each_particle_in_stencil_order(
       grid,
       particles.handler,
       [&](const std::size_t k, const auto &p, const GridCell<dim> &c)
         DEAL_II_ALWAYS_INLINE {
-          const unsigned int *nodes = &grid.cell_nodes[c.first_node];
-          const Point<dim>    xi    = p.get_reference_location();
-          q1_values<dim>(xi, N, grad_xi);
-          const Tensor<2, dim> K =
-            c.affine ? c.inverse_jacobian : c.inverse_jacobian_at(xi);
           stencil.begin[k] = e;
           ensure(e + c.n_nodes);
-          if (c.first_weight == numbers::invalid_unsigned_int)
-            for (unsigned int v = 0; v < n_vertices; ++v, ++e)
-              {
-                stencil.node[e]   = nodes[v];
-                stencil.N[e]      = N[v];
-                stencil.grad_N[e] = grad_xi[v] * K; // K^T grad_xi
-              }
-          else
-            {
-              const double *W = &grid.cell_node_weights[c.first_weight];
-              for (unsigned int n = 0; n < c.n_nodes; ++n, ++e)
-                {
-                  double         value = 0;
-                  Tensor<1, dim> grad;
-                  for (unsigned int v = 0; v < n_vertices; ++v)
-                    {
-                      value += W[n * n_vertices + v] * N[v];
-                      grad += W[n * n_vertices + v] * grad_xi[v];
-                    }
-                  stencil.node[e]   = nodes[n];
-                  stencil.N[e]      = value;
-                  stencil.grad_N[e] = grad * K;
-                }
-            }
+          weights(k,
+                  p,
+                  c,
+                  [&](const unsigned int    node,
+                      const double          N,
+                      const Tensor<1, dim> &grad_N) DEAL_II_ALWAYS_INLINE {
+                    stencil.node[e]   = node;
+                    stencil.N[e]      = N;
+                    stencil.grad_N[e] = grad_N;
+                    ++e;
+                  });
         });
     stencil.begin[n_visited] = e;
     AssertThrow(n_visited == n_local, ExcInternalError());

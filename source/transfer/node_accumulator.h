@@ -1,5 +1,6 @@
 #pragma once
 
+#include <dealmpm/transfer/particle_weights.h>
 #include <dealmpm/transfer/stencil.h>
 
 #include <algorithm>
@@ -105,29 +106,4 @@ namespace dealmpm
         }
     }
   };
-
-  /** Q1 values and reference-coordinate gradients at unit-cell point xi. */
-  template <int dim>
-  inline void
-  q1_values(const Point<dim> &xi, double *N, Tensor<1, dim> *grad_xi)
-  {
-    for (unsigned int v = 0; v < GridCell<dim>::n_vertices; ++v)
-      {
-        double value = 1;
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            const bool upper = (v >> d) & 1u;
-            value *= upper ? xi[d] : 1. - xi[d];
-            if (grad_xi != nullptr)
-              {
-                double g = upper ? 1. : -1.;
-                for (unsigned int b = 0; b < dim; ++b)
-                  if (b != d)
-                    g *= ((v >> b) & 1u) ? xi[b] : 1. - xi[b];
-                grad_xi[v][d] = g;
-              }
-          }
-        N[v] = value;
-      }
-  }
 } // namespace dealmpm

@@ -1,4 +1,5 @@
 #include <dealmpm/transfer/particle_to_grid.h>
+#include <dealmpm/transfer/particle_weights.h>
 #include <dealmpm/transfer/stencil_order.h>
 
 #include <type_traits>
@@ -99,11 +100,13 @@ namespace dealmpm
               bool affine,
               bool total_lagrangian = false,
               bool predictor        = false,
-              typename Targets>
+              typename Targets,
+              typename Weights>
     void
     transfer(const BackgroundGrid<dim> &grid,
              const ParticleSet<dim>    &particles,
              const Stencil<dim>        &stencil,
+             const Weights             &weights,
              const Targets             &targets,
              const double               predictor_offset = 0)
     {
@@ -112,66 +115,71 @@ namespace dealmpm
       for_each_particle_in_stencil_order(
         grid,
         particles.handler,
-        [&](const std::size_t k,
-            const auto       &p,
-            const GridCell<dim> &) DEAL_II_ALWAYS_INLINE {
-          const ArrayView<const double> props = p.get_properties();
-          const double                  m     = props[f.mass];
-          const NodalPointers<dim>     &to    = targets.of(props);
-          Tensor<1, dim> v = read_vector<dim>(&props[f.velocity]);
-          // Newmark: the grid carries the predicted velocity.
-          if constexpr (predictor)
-            v -= predictor_offset * read_vector<dim>(&props[f.acceleration]);
-          // APIC: the particle carries the affine field v + C (x - x_p)
-          // with C = B D^-1, B stored by G2P and D = sum N (x_i - x_p) (x)
-          // (x_i - x_p), x_p the position of the stencil (MUSL re-maps
-          // after the particles moved): with this D the round trip
-          // conserves angular momentum exactly (Jiang et al. 2015).
-          Tensor<2, dim> C;
-          Point<dim>     x_p;
-          if (affine)
-            {
-              x_p = stencil.position[k];
-              Tensor<2, dim> D;
-              for (unsigned int e = stencil.begin[k]; e < stencil.begin[k + 1];
-                   ++e)
-                {
-                  const Tensor<1, dim> r =
-                    grid.node_positions[stencil.node[e]] - x_p;
-                  D += stencil.N[e] * outer_product(r, r);
-                }
-              // D is singular only for a particle on a node line.
-              if (std::abs(determinant(D)) >
-                  1e-12 * Utilities::fixed_power<dim>(trace(D)))
-                C = read_tensor<dim>(&props[f.affine_velocity]) * invert(D);
-            }
-          // Once per particle.
-          decltype(force_per_gradient<total_lagrangian, dim>(props, f)) Vsigma;
-          if (internal_force)
-            Vsigma = force_per_gradient<total_lagrangian, dim>(props, f);
-          for (unsigned int e = stencil.begin[k]; e < stencil.begin[k + 1]; ++e)
-            {
-              const unsigned int n = stencil.node[e];
-              if (mass_and_momentum)
-                {
-                  const double mN = m * stencil.N[e];
-                  to.mass[n] += mN;
-                  const Tensor<1, dim> v_n =
-                    affine ? v + C * (grid.node_positions[n] - x_p) : v;
-                  for (unsigned int d = 0; d < dim; ++d)
-                    to.momentum[d][n] += mN * v_n[d];
-                  if constexpr (Targets::per_body)
-                    for (unsigned int d = 0; d < dim; ++d)
-                      to.mass_gradient[d][n] += m * stencil.grad_N[e][d];
-                }
-              if (internal_force)
-                {
-                  const Tensor<1, dim> fi = Vsigma * stencil.grad_N[e];
-                  for (unsigned int d = 0; d < dim; ++d)
-                    to.force[d][n] += fi[d];
-                }
-            }
-        });
+        [&](const std::size_t k, const auto &p, const GridCell<dim> &c)
+          DEAL_II_ALWAYS_INLINE {
+            const ArrayView<const double> props = p.get_properties();
+            const double                  m     = props[f.mass];
+            const NodalPointers<dim>     &to    = targets.of(props);
+            Tensor<1, dim> v = read_vector<dim>(&props[f.velocity]);
+            // Newmark: the grid carries the predicted velocity.
+            if constexpr (predictor)
+              v -= predictor_offset * read_vector<dim>(&props[f.acceleration]);
+            // APIC: the particle carries the affine field v + C (x - x_p)
+            // with C = B D^-1, B stored by G2P and D = sum N (x_i - x_p) (x)
+            // (x_i - x_p), x_p the position of the stencil (MUSL re-maps
+            // after the particles moved): with this D the round trip
+            // conserves angular momentum exactly (Jiang et al. 2015).
+            Tensor<2, dim> C;
+            Point<dim>     x_p;
+            if (affine)
+              {
+                x_p = stencil.position[k];
+                Tensor<2, dim> D;
+                weights(k,
+                        p,
+                        c,
+                        [&](const unsigned int n,
+                            const double       N,
+                            const Tensor<1, dim> &) DEAL_II_ALWAYS_INLINE {
+                          const Tensor<1, dim> r = grid.node_positions[n] - x_p;
+                          D += N * outer_product(r, r);
+                        });
+                // D is singular only for a particle on a node line.
+                if (std::abs(determinant(D)) >
+                    1e-12 * Utilities::fixed_power<dim>(trace(D)))
+                  C = read_tensor<dim>(&props[f.affine_velocity]) * invert(D);
+              }
+            // Once per particle.
+            decltype(force_per_gradient<total_lagrangian, dim>(props,
+                                                               f)) Vsigma;
+            if (internal_force)
+              Vsigma = force_per_gradient<total_lagrangian, dim>(props, f);
+            weights(k,
+                    p,
+                    c,
+                    [&](const unsigned int    n,
+                        const double          N,
+                        const Tensor<1, dim> &grad_N) DEAL_II_ALWAYS_INLINE {
+                      if (mass_and_momentum)
+                        {
+                          const double mN = m * N;
+                          to.mass[n] += mN;
+                          const Tensor<1, dim> v_n =
+                            affine ? v + C * (grid.node_positions[n] - x_p) : v;
+                          for (unsigned int d = 0; d < dim; ++d)
+                            to.momentum[d][n] += mN * v_n[d];
+                          if constexpr (Targets::per_body)
+                            for (unsigned int d = 0; d < dim; ++d)
+                              to.mass_gradient[d][n] += m * grad_N[d];
+                        }
+                      if (internal_force)
+                        {
+                          const Tensor<1, dim> fi = Vsigma * grad_N;
+                          for (unsigned int d = 0; d < dim; ++d)
+                            to.force[d][n] += fi[d];
+                        }
+                    });
+          });
     }
   } // namespace
 
@@ -228,9 +236,13 @@ namespace dealmpm
       const bool affine =
         particles.fields.affine_velocity != numbers::invalid_unsigned_int;
       const bool reference = formulation == Formulation::total_lagrangian;
-      const auto run       = [&](auto... choices) {
-        transfer<dim, decltype(choices)::value...>(
-          grid, particles, stencil, targets, predictor_offset);
+      // APIC's x_p are the stored stencil's positions.
+      AssertThrow(!(affine && stencil.where_used), ExcInternalError());
+      const auto run = [&](auto... choices) {
+        with_weights(grid, stencil, [&](const auto &weights) {
+          transfer<dim, decltype(choices)::value...>(
+            grid, particles, stencil, weights, targets, predictor_offset);
+        });
       };
       using Yes = std::true_type;
       using No  = std::false_type;

@@ -240,6 +240,13 @@ namespace dealmpm
      * step. */
     void
     choose_stages();
+    /** Whether linear weights may be computed where P2G and G2P use them
+     * instead of stored (Stencil::where_used): nothing else reads them. */
+    bool
+    weights_where_used() const;
+    /** This rank's particles' locations, in the handler's order. */
+    std::vector<Point<dim>>
+    particle_locations() const;
     void
     relocate_particles();
     /** After the cells changed (refinement or repartition): rebuild every

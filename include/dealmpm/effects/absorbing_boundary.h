@@ -26,6 +26,12 @@ namespace dealmpm
   class AbsorbingBoundary : public EffectWithWork<dim>
   {
   public:
+    bool
+    reads_stencil() const override
+    {
+      return false;
+    }
+
     AbsorbingBoundary(const std::set<types::boundary_id> &ids,
                       const double                        density,
                       const double                        p_wave_speed,

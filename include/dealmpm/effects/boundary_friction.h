@@ -37,6 +37,12 @@ namespace dealmpm
   class BoundaryFriction : public EffectWithWork<dim>
   {
   public:
+    bool
+    reads_stencil() const override
+    {
+      return false;
+    }
+
     explicit BoundaryFriction(
       const std::map<types::boundary_id, double> &coefficients)
       : EffectWithWork<dim>("boundary_friction_work")

@@ -22,6 +22,12 @@ namespace dealmpm
   class Damage : public Effect<dim>
   {
   public:
+    bool
+    reads_stencil() const override
+    {
+      return false;
+    }
+
     struct Settings
     {
       std::set<unsigned int> materials; ///< 0-based; empty: all

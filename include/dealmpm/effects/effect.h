@@ -156,6 +156,16 @@ namespace dealmpm
       return false;
     }
 
+    /** Whether the effect reads the stored particle-node weights
+     * (EffectContext::stencil). An effect that does not says so: then a
+     * scene with linear shape functions computes the weights where P2G
+     * and G2P use them and stores none (Stencil::where_used). */
+    virtual bool
+    reads_stencil() const
+    {
+      return true;
+    }
+
     /** Whether the effect is reliable only when the particles take the
      * grid's velocity (PIC): the run warns under FLIP. */
     virtual bool

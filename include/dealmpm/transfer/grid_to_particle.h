@@ -7,6 +7,7 @@
 #include <dealmpm/particles/particle_set.h>
 #include <dealmpm/transfer/deformation_update.h>
 #include <dealmpm/transfer/formulation.h>
+#include <dealmpm/transfer/particle_weights.h>
 #include <dealmpm/transfer/stencil.h>
 #include <dealmpm/transfer/stencil_order.h>
 
@@ -23,7 +24,14 @@ namespace dealmpm
     /** position, displacement, reference location, L, F and the callback,
      * all from one nodal velocity; the particle velocity is the callback's
      * (Newmark) */
-    position_and_deformation
+    position_and_deformation,
+    /** motion that leaves the reference location at the step's start, for
+     * the sweeps after it that compute their weights from it (MUSL with
+     * Stencil::where_used) */
+    motion_keeping_reference,
+    /** deformation, then the reference location of the particle's
+     * position (MUSL's stress update after motion_keeping_reference) */
+    deformation_then_reference
   };
 
   /** A callback for sweeps without deformation. */
@@ -144,11 +152,15 @@ namespace dealmpm
               bool move,
               bool deformation,
               int  dim,
+              typename Weights,
+              typename Particle,
               typename Arrays>
     DEAL_II_ALWAYS_INLINE inline void
     gather(const BackgroundGrid<dim> &grid,
            const Stencil<dim>        &stencil,
+           const Weights             &weights,
            const std::size_t          k,
+           const Particle            &p,
            const GridCell<dim>       &cell,
            const Arrays              &from,
            const bool                 affine,
@@ -164,28 +176,30 @@ namespace dealmpm
       // moved it yet; its reference one in total Lagrangian).
       const Point<dim> x_affine =
         motion && affine ? stencil.position[k] : Point<dim>();
-      for (unsigned int e = stencil.begin[k]; e < stencil.begin[k + 1]; ++e)
-        {
-          const unsigned int n = stencil.node[e];
-          const double       N = stencil.N[e];
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              if (move)
-                v_grid[d] += N * velocity[d][n];
-              if (motion)
-                dv[d] += N * increment[d][n];
-              if (deformation)
-                for (unsigned int b = 0; b < dim; ++b)
-                  L[d][b] += velocity[d][n] * stencil.grad_N[e][b];
-            }
-          if (motion && affine)
-            {
-              const Tensor<1, dim> r = grid.node_positions[n] - x_affine;
-              for (unsigned int a = 0; a < dim; ++a)
-                for (unsigned int b = 0; b < dim; ++b)
-                  B[a][b] += N * velocity[a][n] * r[b];
-            }
-        }
+      weights(k,
+              p,
+              cell,
+              [&](const unsigned int    n,
+                  const double          N,
+                  const Tensor<1, dim> &grad_N) DEAL_II_ALWAYS_INLINE {
+                for (unsigned int d = 0; d < dim; ++d)
+                  {
+                    if (move)
+                      v_grid[d] += N * velocity[d][n];
+                    if (motion)
+                      dv[d] += N * increment[d][n];
+                    if (deformation)
+                      for (unsigned int b = 0; b < dim; ++b)
+                        L[d][b] += velocity[d][n] * grad_N[b];
+                  }
+                if (motion && affine)
+                  {
+                    const Tensor<1, dim> r = grid.node_positions[n] - x_affine;
+                    for (unsigned int a = 0; a < dim; ++a)
+                      for (unsigned int b = 0; b < dim; ++b)
+                        B[a][b] += N * velocity[a][n] * r[b];
+                  }
+              });
       // USL's light nodes (update_nodal_velocity()) lend L only the weight
       // w of their own increment and the particle's interpolated dv for the
       // rest: v_i - (1 - w) (dv_i - dv). A second pass over the stencil,
@@ -194,16 +208,19 @@ namespace dealmpm
       // and few particles pay for it.
       if constexpr (motion && deformation && Arrays::may_be_light)
         if (from.weight && from.light_cells[index_in_grid(grid, cell)])
-          for (unsigned int e = stencil.begin[k]; e < stencil.begin[k + 1]; ++e)
-            {
-              const unsigned int n     = stencil.node[e];
-              const double       light = 1. - from.weight[n];
-              if (light > 0)
-                for (unsigned int d = 0; d < dim; ++d)
-                  for (unsigned int b = 0; b < dim; ++b)
-                    L[d][b] +=
-                      light * (dv[d] - increment[d][n]) * stencil.grad_N[e][b];
-            }
+          weights(k,
+                  p,
+                  cell,
+                  [&](const unsigned int n,
+                      const double,
+                      const Tensor<1, dim> &grad_N) DEAL_II_ALWAYS_INLINE {
+                    const double light = 1. - from.weight[n];
+                    if (light > 0)
+                      for (unsigned int d = 0; d < dim; ++d)
+                        for (unsigned int b = 0; b < dim; ++b)
+                          L[d][b] +=
+                            light * (dv[d] - increment[d][n]) * grad_N[b];
+                  });
     }
 
     /** The particle's new velocity: with APIC, v = sum N v and the
@@ -253,7 +270,7 @@ namespace dealmpm
     /** Moves the particle from @p x_p by @p dx: displacement, position and
      * reference location in its old cell @p c; sets @p left_cell if that
      * location is outside the cell. */
-    template <int dim, typename Particle>
+    template <bool set_reference = true, int dim, typename Particle>
     DEAL_II_ALWAYS_INLINE inline void
     move(Particle                &p,
          const ArrayView<double> &props,
@@ -264,7 +281,8 @@ namespace dealmpm
          bool                    &left_cell)
     {
       const Point<dim> xi = c.reference_point(displace(p, props, f, x_p, dx));
-      p.set_reference_location(xi);
+      if (set_reference)
+        p.set_reference_location(xi);
       // Slack so that a particle sitting on a face does not trigger a sort.
       const double tolerance = 1e-12;
       for (unsigned int d = 0; d < dim; ++d)
@@ -341,48 +359,68 @@ namespace dealmpm
                    const AdjustGradient      &adjust_gradient   = {},
                    const Increment           &f_increment       = {})
   {
-    constexpr bool motion =
-      what == G2P::motion || what == G2P::motion_and_deformation;
-    constexpr bool    move        = what != G2P::deformation;
-    constexpr bool    deformation = what != G2P::motion;
-    constexpr bool    reference = formulation == Formulation::total_lagrangian;
-    const auto       &arrays    = velocity_arrays(fields);
-    const CoreFields &f         = particles.fields;
+    constexpr bool motion = what == G2P::motion ||
+                            what == G2P::motion_and_deformation ||
+                            what == G2P::motion_keeping_reference;
+    constexpr bool move = motion || what == G2P::position_and_deformation;
+    constexpr bool deformation = !motion || what == G2P::motion_and_deformation;
+    constexpr bool keep_reference = what == G2P::motion_keeping_reference;
+    constexpr bool then_reference = what == G2P::deformation_then_reference;
+    constexpr bool reference = formulation == Formulation::total_lagrangian;
+    const auto    &arrays    = velocity_arrays(fields);
+    const CoreFields &f      = particles.fields;
     const bool affine    = f.affine_velocity != numbers::invalid_unsigned_int;
     bool       left_cell = false;
-    for_each_particle_in_stencil_order(
-      grid,
-      particles.handler,
-      [&](const std::size_t k, auto &p, const GridCell<dim> &c)
-        DEAL_II_ALWAYS_INLINE {
-          Tensor<1, dim>          v_grid, dv;
-          Tensor<2, dim>          L, B;
-          const Point<dim>        x_p   = p.get_location();
-          const ArrayView<double> props = p.get_properties();
-          g2p_sweep::gather<motion, move, deformation>(
-            grid, stencil, k, c, arrays.of(props), affine, v_grid, dv, L, B);
-          if (motion)
-            g2p_sweep::update_velocity(
-              props, f, v_grid, dv, B, flip_fraction, affine);
-          if (move)
-            {
-              if constexpr (reference)
-                g2p_sweep::displace(p, props, f, x_p, dt * v_grid);
-              else
-                g2p_sweep::move(p, props, f, c, x_p, dt * v_grid, left_cell);
-            }
-          if (deformation)
-            {
-              adjust_gradient(c, props, L);
-              if constexpr (reference)
-                L =
-                  L * invert(read_tensor<dim>(&props[f.deformation_gradient]));
-              const Tensor<2, dim> F =
-                g2p_sweep::deform(props, f, L, dt, f_increment);
-              after_deformation(
-                p, props, L, F, reference ? c.h * smallest_stretch(F) : c.h);
-            }
-        });
+    // APIC's x_p are the stored stencil's positions.
+    AssertThrow(!(affine && stencil.where_used), ExcInternalError());
+    with_weights(grid, stencil, [&](const auto &weights) {
+      for_each_particle_in_stencil_order(
+        grid,
+        particles.handler,
+        [&](const std::size_t k, auto &p, const GridCell<dim> &c)
+          DEAL_II_ALWAYS_INLINE {
+            Tensor<1, dim>          v_grid, dv;
+            Tensor<2, dim>          L, B;
+            const Point<dim>        x_p   = p.get_location();
+            const ArrayView<double> props = p.get_properties();
+            g2p_sweep::gather<motion, move, deformation>(grid,
+                                                         stencil,
+                                                         weights,
+                                                         k,
+                                                         p,
+                                                         c,
+                                                         arrays.of(props),
+                                                         affine,
+                                                         v_grid,
+                                                         dv,
+                                                         L,
+                                                         B);
+            if (motion)
+              g2p_sweep::update_velocity(
+                props, f, v_grid, dv, B, flip_fraction, affine);
+            if (move)
+              {
+                if constexpr (reference)
+                  g2p_sweep::displace(p, props, f, x_p, dt * v_grid);
+                else
+                  g2p_sweep::move<!keep_reference>(
+                    p, props, f, c, x_p, dt * v_grid, left_cell);
+              }
+            if (deformation)
+              {
+                adjust_gradient(c, props, L);
+                if constexpr (reference)
+                  L = L *
+                      invert(read_tensor<dim>(&props[f.deformation_gradient]));
+                const Tensor<2, dim> F =
+                  g2p_sweep::deform(props, f, L, dt, f_increment);
+                after_deformation(
+                  p, props, L, F, reference ? c.h * smallest_stretch(F) : c.h);
+              }
+            if (then_reference)
+              p.set_reference_location(c.reference_point(x_p));
+          });
+    });
     return left_cell;
   }
 } // namespace dealmpm

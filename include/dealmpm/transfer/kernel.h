@@ -105,6 +105,9 @@ namespace dealmpm
                     Stencil<dim>              &stencil) const
     {
       stencil.failed = false;
+      // The sweeps compute linear weights themselves (LinearWeights).
+      if (stencil.where_used)
+        return;
       shape_function->compute_stencil(grid, particles, stencil);
     }
 

@@ -31,6 +31,11 @@ namespace dealmpm
     /** Made once at the particles' reference positions and kept for the
      * run (total Lagrangian: compute_reference_stencil()). */
     bool reference = false;
+    /** The weights are linear ones computed where they are used
+     * (LinearWeights): begin, node, N and grad_N stay empty. Set when the
+     * step's P2G and G2P sweeps are the weights' only readers
+     * (Simulation::weights_where_used()). */
+    bool where_used = false;
 
     /** The first particle whose weights could not be computed (a CPDI
      * domain reaching past the cells next to its own); the run stops. */

@@ -1,0 +1,193 @@
+#pragma once
+
+#include <deal.II/base/config.h>
+
+#include <dealmpm/grid/background_grid.h>
+#include <dealmpm/transfer/stencil.h>
+
+#include <cstddef>
+
+namespace dealmpm
+{
+  /** Q1 values and reference-coordinate gradients at unit-cell point xi
+   * (@p grad_xi may be nullptr): N_v = prod_d f_d, with f_d = xi_d on the
+   * vertex's upper side of direction d and 1 - xi_d on its lower side, and
+   * d N_v / d xi_d = +-prod_(b != d) f_b, the products taken in increasing
+   * d. Written out per dimension: the loop over directions did not unroll,
+   * and G2P and P2G call this once per particle each. */
+  template <int dim>
+  DEAL_II_ALWAYS_INLINE inline void
+  q1_values(const Point<dim> &xi, double *N, Tensor<1, dim> *grad_xi)
+  {
+    static_assert(dim == 2 || dim == 3, "Q1 values in 2D and 3D");
+    double f[dim][2];
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        f[d][0] = 1. - xi[d];
+        f[d][1] = xi[d];
+      }
+    for (unsigned int v = 0; v < GridCell<dim>::n_vertices; ++v)
+      {
+        const unsigned int a = v & 1u, b = (v >> 1) & 1u;
+        if constexpr (dim == 2)
+          {
+            N[v] = f[0][a] * f[1][b];
+            if (grad_xi != nullptr)
+              {
+                grad_xi[v][0] = a ? f[1][b] : -f[1][b];
+                grad_xi[v][1] = b ? f[0][a] : -f[0][a];
+              }
+          }
+        else
+          {
+            const unsigned int c = (v >> 2) & 1u;
+            N[v]                 = f[0][a] * f[1][b] * f[2][c];
+            if (grad_xi != nullptr)
+              {
+                const double p12 = f[1][b] * f[2][c];
+                const double p02 = f[0][a] * f[2][c];
+                const double p01 = f[0][a] * f[1][b];
+                grad_xi[v][0]    = a ? p12 : -p12;
+                grad_xi[v][1]    = b ? p02 : -p02;
+                grad_xi[v][2]    = c ? p01 : -p01;
+              }
+          }
+      }
+  }
+
+  /** K^T g (g * K): a gradient in unit-cell coordinates @p g to real
+   * ones, K = d xi / d x; summed in deal.II's order for Tensor * Tensor. */
+  template <int dim>
+  DEAL_II_ALWAYS_INLINE inline Tensor<1, dim>
+  to_real_gradient(const Tensor<1, dim> &g, const Tensor<2, dim> &K)
+  {
+    Tensor<1, dim> r;
+    for (unsigned int j = 0; j < dim; ++j)
+      {
+        double sum = g[0] * K[0][j];
+        for (unsigned int i = 1; i < dim; ++i)
+          sum += g[i] * K[i][j];
+        r[j] = sum;
+      }
+    return r;
+  }
+
+  /**
+   * Where a P2G or G2P sweep finds a particle's weights: @p weights(k, p,
+   * cell, f) calls f(node, N, grad N) for each node of particle k (its
+   * place in the stencil order, for_each_particle_in_stencil_order()).
+   * This one reads them from the stored stencil.
+   */
+  template <int dim>
+  struct StoredWeights
+  {
+    const Stencil<dim> &stencil;
+
+    template <typename Particle, typename Function>
+    DEAL_II_ALWAYS_INLINE void
+    operator()(const std::size_t k,
+               const Particle &,
+               const GridCell<dim> &,
+               Function &&f) const
+    {
+      for (unsigned int e = stencil.begin[k]; e < stencil.begin[k + 1]; ++e)
+        f(stencil.node[e], stencil.N[e], stencil.grad_N[e]);
+    }
+  };
+
+  /**
+   * Linear (Q1) weights computed where they are used, from the particle's
+   * reference location in its listed cell, with hanging nodes resolved
+   * into their masters. Computing them twice a step costs fewer
+   * instructions and far less memory traffic than storing them once and
+   * reading them back (Stencil::where_used); compute_linear_stencil()
+   * stores the same numbers, computed here.
+   */
+  template <int dim>
+  struct LinearWeights
+  {
+    const BackgroundGrid<dim> &grid;
+
+    /** f(node, N, grad N) at unit-cell point @p xi of cell @p c. */
+    template <typename Function>
+    DEAL_II_ALWAYS_INLINE void
+    at(const Point<dim> &xi, const GridCell<dim> &c, Function &&f) const
+    {
+      constexpr unsigned int n_vertices = GridCell<dim>::n_vertices;
+      double                 N[n_vertices];
+      Tensor<1, dim>         grad_xi[n_vertices];
+      q1_values<dim>(xi, N, grad_xi);
+      const unsigned int *nodes = &grid.cell_nodes[c.first_node];
+      if (c.first_weight == numbers::invalid_unsigned_int &&
+          is_box(c)) // most cells: d xi / d x is diagonal
+        for (unsigned int v = 0; v < n_vertices; ++v)
+          {
+            Tensor<1, dim> grad;
+            for (unsigned int d = 0; d < dim; ++d)
+              grad[d] = grad_xi[v][d] * c.inverse_jacobian[d][d];
+            f(nodes[v], N[v], grad);
+          }
+      else if (c.first_weight == numbers::invalid_unsigned_int)
+        {
+          const Tensor<2, dim> K =
+            c.affine ? c.inverse_jacobian : c.inverse_jacobian_at(xi);
+          for (unsigned int v = 0; v < n_vertices; ++v)
+            f(nodes[v], N[v], to_real_gradient(grad_xi[v], K));
+        }
+      else
+        {
+          const Tensor<2, dim> K =
+            c.affine ? c.inverse_jacobian : c.inverse_jacobian_at(xi);
+          const double *W = &grid.cell_node_weights[c.first_weight];
+          for (unsigned int n = 0; n < c.n_nodes; ++n)
+            {
+              double         value = 0;
+              Tensor<1, dim> grad;
+              for (unsigned int v = 0; v < n_vertices; ++v)
+                {
+                  value += W[n * n_vertices + v] * N[v];
+                  grad += W[n * n_vertices + v] * grad_xi[v];
+                }
+              f(nodes[n], value, to_real_gradient(grad, K));
+            }
+        }
+    }
+
+    /** Whether @p c is an axis-aligned box: then K^T g is g_d K_dd,
+     * the same numbers as to_real_gradient() but for the sign of a zero. */
+    static DEAL_II_ALWAYS_INLINE bool
+    is_box(const GridCell<dim> &c)
+    {
+      if (!c.affine)
+        return false;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          if (i != j && c.inverse_jacobian[i][j] != 0.)
+            return false;
+      return true;
+    }
+
+    template <typename Particle, typename Function>
+    DEAL_II_ALWAYS_INLINE void
+    operator()(const std::size_t,
+               const Particle      &p,
+               const GridCell<dim> &c,
+               Function           &&f) const
+    {
+      at(p.get_reference_location(), c, f);
+    }
+  };
+
+  /** Run @p sweep(weights) with the weights @p stencil stands for: stored,
+   * or linear ones computed where used. */
+  template <int dim, typename Sweep>
+  DEAL_II_ALWAYS_INLINE inline auto
+  with_weights(const BackgroundGrid<dim> &grid,
+               const Stencil<dim>        &stencil,
+               const Sweep               &sweep)
+  {
+    if (stencil.where_used)
+      return sweep(LinearWeights<dim>{grid});
+    return sweep(StoredWeights<dim>{stencil});
+  }
+} // namespace dealmpm
