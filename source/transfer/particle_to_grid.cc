@@ -92,6 +92,73 @@ namespace dealmpm
       }
     };
 
+    /** P2G with linear weights computed where used (updated Lagrangian,
+     * FLIP or PIC, one set of nodal fields) in a cell without hanging
+     * nodes: its particles add into its 2^dim nodes held in locals, added
+     * into the nodal vectors once. */
+    template <int  dim,
+              bool mass_and_momentum,
+              bool internal_force,
+              typename Particles>
+    DEAL_II_ALWAYS_INLINE inline void
+    transfer_in_box(const BackgroundGrid<dim> &grid,
+                    const CoreFields          &f,
+                    const LinearWeights<dim>  &weights,
+                    const GridCell<dim>       &c,
+                    const Particles           &particles_here,
+                    const NodalPointers<dim>  &to)
+    {
+      constexpr unsigned int n_vertices = GridCell<dim>::n_vertices;
+      if (particles_here.begin() == particles_here.end())
+        return;
+      double mass[n_vertices] = {}, momentum[n_vertices][dim] = {},
+             force[n_vertices][dim] = {};
+      for (const auto &p : particles_here)
+        {
+          const ArrayView<const double> props = p.get_properties();
+          const double                  m     = props[f.mass];
+          const Tensor<1, dim>    v = read_vector<dim>(&props[f.velocity]);
+          SymmetricTensor<2, dim> Vsigma;
+          if (internal_force)
+            Vsigma = force_per_gradient<false, dim>(props, f);
+          unsigned int vertex = 0;
+          weights.at(p.get_reference_location(),
+                     c,
+                     [&](const unsigned int,
+                         const double          N,
+                         const Tensor<1, dim> &grad_N) DEAL_II_ALWAYS_INLINE {
+                       if (mass_and_momentum)
+                         {
+                           const double mN = m * N;
+                           mass[vertex] += mN;
+                           for (unsigned int d = 0; d < dim; ++d)
+                             momentum[vertex][d] += mN * v[d];
+                         }
+                       if (internal_force)
+                         {
+                           const Tensor<1, dim> fi = Vsigma * grad_N;
+                           for (unsigned int d = 0; d < dim; ++d)
+                             force[vertex][d] += fi[d];
+                         }
+                       ++vertex;
+                     });
+        }
+      const unsigned int *nodes = &grid.cell_nodes[c.first_node];
+      for (unsigned int v = 0; v < n_vertices; ++v)
+        {
+          const unsigned int n = nodes[v];
+          if (mass_and_momentum)
+            to.mass[n] += mass[v];
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              if (mass_and_momentum)
+                to.momentum[d][n] += momentum[v][d];
+              if (internal_force)
+                to.force[d][n] += force[v][d];
+            }
+        }
+    }
+
     /** The kernel, compiled once per choice of quantities so that the usual
      * all-in-one P2G has no branch in its loop. */
     template <int  dim,
@@ -110,76 +177,97 @@ namespace dealmpm
              const Targets             &targets,
              const double               predictor_offset = 0)
     {
-      const CoreFields &f = particles.fields;
-
-      for_each_particle_in_stencil_order(
-        grid,
-        particles.handler,
-        [&](const std::size_t k, const auto &p, const GridCell<dim> &c)
-          DEAL_II_ALWAYS_INLINE {
-            const ArrayView<const double> props = p.get_properties();
-            const double                  m     = props[f.mass];
-            const NodalPointers<dim>     &to    = targets.of(props);
-            Tensor<1, dim> v = read_vector<dim>(&props[f.velocity]);
-            // Newmark: the grid carries the predicted velocity.
-            if constexpr (predictor)
-              v -= predictor_offset * read_vector<dim>(&props[f.acceleration]);
-            // APIC: the particle carries the affine field v + C (x - x_p)
-            // with C = B D^-1, B stored by G2P and D = sum N (x_i - x_p) (x)
-            // (x_i - x_p), x_p the position of the stencil (MUSL re-maps
-            // after the particles moved): with this D the round trip
-            // conserves angular momentum exactly (Jiang et al. 2015).
-            Tensor<2, dim> C;
-            Point<dim>     x_p;
-            if (affine)
-              {
-                x_p = stencil.position[k];
-                Tensor<2, dim> D;
-                weights(k,
-                        p,
-                        c,
-                        [&](const unsigned int n,
-                            const double       N,
-                            const Tensor<1, dim> &) DEAL_II_ALWAYS_INLINE {
-                          const Tensor<1, dim> r = grid.node_positions[n] - x_p;
-                          D += N * outer_product(r, r);
-                        });
-                // D is singular only for a particle on a node line.
-                if (std::abs(determinant(D)) >
-                    1e-12 * Utilities::fixed_power<dim>(trace(D)))
-                  C = read_tensor<dim>(&props[f.affine_velocity]) * invert(D);
-              }
-            // Once per particle.
-            decltype(force_per_gradient<total_lagrangian, dim>(props,
-                                                               f)) Vsigma;
-            if (internal_force)
-              Vsigma = force_per_gradient<total_lagrangian, dim>(props, f);
-            weights(k,
-                    p,
-                    c,
-                    [&](const unsigned int    n,
-                        const double          N,
-                        const Tensor<1, dim> &grad_N) DEAL_II_ALWAYS_INLINE {
-                      if (mass_and_momentum)
-                        {
-                          const double mN = m * N;
-                          to.mass[n] += mN;
-                          const Tensor<1, dim> v_n =
-                            affine ? v + C * (grid.node_positions[n] - x_p) : v;
+      const CoreFields &f       = particles.fields;
+      constexpr bool    by_cell = std::is_same_v<Weights, LinearWeights<dim>> &&
+                               !Targets::per_body && !affine &&
+                               !total_lagrangian && !predictor;
+      const auto per_particle =
+        [&](const std::size_t    k,
+            const auto          &p,
+            const GridCell<dim> &c) DEAL_II_ALWAYS_INLINE {
+          const ArrayView<const double> props = p.get_properties();
+          const double                  m     = props[f.mass];
+          const NodalPointers<dim>     &to    = targets.of(props);
+          Tensor<1, dim> v = read_vector<dim>(&props[f.velocity]);
+          // Newmark: the grid carries the predicted velocity.
+          if constexpr (predictor)
+            v -= predictor_offset * read_vector<dim>(&props[f.acceleration]);
+          // APIC: the particle carries the affine field v + C (x - x_p)
+          // with C = B D^-1, B stored by G2P and D = sum N (x_i - x_p) (x)
+          // (x_i - x_p), x_p the position of the stencil (MUSL re-maps
+          // after the particles moved): with this D the round trip
+          // conserves angular momentum exactly (Jiang et al. 2015).
+          Tensor<2, dim> C;
+          Point<dim>     x_p;
+          if (affine)
+            {
+              x_p = stencil.position[k];
+              Tensor<2, dim> D;
+              weights(k,
+                      p,
+                      c,
+                      [&](const unsigned int n,
+                          const double       N,
+                          const Tensor<1, dim> &) DEAL_II_ALWAYS_INLINE {
+                        const Tensor<1, dim> r = grid.node_positions[n] - x_p;
+                        D += N * outer_product(r, r);
+                      });
+              // D is singular only for a particle on a node line.
+              if (std::abs(determinant(D)) >
+                  1e-12 * Utilities::fixed_power<dim>(trace(D)))
+                C = read_tensor<dim>(&props[f.affine_velocity]) * invert(D);
+            }
+          // Once per particle.
+          decltype(force_per_gradient<total_lagrangian, dim>(props, f)) Vsigma;
+          if (internal_force)
+            Vsigma = force_per_gradient<total_lagrangian, dim>(props, f);
+          weights(k,
+                  p,
+                  c,
+                  [&](const unsigned int    n,
+                      const double          N,
+                      const Tensor<1, dim> &grad_N) DEAL_II_ALWAYS_INLINE {
+                    if (mass_and_momentum)
+                      {
+                        const double mN = m * N;
+                        to.mass[n] += mN;
+                        const Tensor<1, dim> v_n =
+                          affine ? v + C * (grid.node_positions[n] - x_p) : v;
+                        for (unsigned int d = 0; d < dim; ++d)
+                          to.momentum[d][n] += mN * v_n[d];
+                        if constexpr (Targets::per_body)
                           for (unsigned int d = 0; d < dim; ++d)
-                            to.momentum[d][n] += mN * v_n[d];
-                          if constexpr (Targets::per_body)
-                            for (unsigned int d = 0; d < dim; ++d)
-                              to.mass_gradient[d][n] += m * grad_N[d];
-                        }
-                      if (internal_force)
-                        {
-                          const Tensor<1, dim> fi = Vsigma * grad_N;
-                          for (unsigned int d = 0; d < dim; ++d)
-                            to.force[d][n] += fi[d];
-                        }
-                    });
-          });
+                            to.mass_gradient[d][n] += m * grad_N[d];
+                      }
+                    if (internal_force)
+                      {
+                        const Tensor<1, dim> fi = Vsigma * grad_N;
+                        for (unsigned int d = 0; d < dim; ++d)
+                          to.force[d][n] += fi[d];
+                      }
+                  });
+        };
+      // A cell at a time where the weights are linear ones computed here
+      // and the cell has no hanging node: its nodes' sums are kept in
+      // locals and added once (a value added straight into the nodal
+      // vectors cost 7 to 10 instructions).
+      if constexpr (by_cell)
+        for (const GridCell<dim> &c : grid.cells)
+          if (c.first_weight == numbers::invalid_unsigned_int)
+            transfer_in_box<dim, mass_and_momentum, internal_force>(
+              grid,
+              f,
+              weights,
+              c,
+              particles.handler.particles_in_cell(c.cell),
+              targets.fields);
+          else
+            for (const auto &p : particles.handler.particles_in_cell(c.cell))
+              per_particle(0, p, c); // LinearWeights needs no k
+      else
+        for_each_particle_in_stencil_order(grid,
+                                           particles.handler,
+                                           per_particle);
     }
   } // namespace
 
