@@ -159,6 +159,68 @@ namespace dealmpm
         }
     }
 
+    /** P2G a cell at a time, for linear weights computed here: a cell
+     * without hanging nodes keeps its nodes' sums in locals and adds them
+     * once (transfer_in_box(); a value added straight into the nodal
+     * vectors cost 7 to 10 instructions), the others add each particle's
+     * shares with @p per_particle(k, particle, cell). */
+    template <int  dim,
+              bool mass_and_momentum,
+              bool internal_force,
+              typename PerParticle>
+    void
+    transfer_by_cell(const BackgroundGrid<dim> &grid,
+                     const ParticleSet<dim>    &particles,
+                     const LinearWeights<dim>  &weights,
+                     const NodalPointers<dim>  &to,
+                     const PerParticle         &per_particle)
+    {
+      for (const GridCell<dim> &c : grid.cells)
+        if (c.first_weight == numbers::invalid_unsigned_int)
+          transfer_in_box<dim, mass_and_momentum, internal_force>(
+            grid,
+            particles.fields,
+            weights,
+            c,
+            particles.handler.particles_in_cell(c.cell),
+            to);
+        else
+          for (const auto &p : particles.handler.particles_in_cell(c.cell))
+            per_particle(0, p, c); // LinearWeights needs no k
+    }
+
+    /** APIC: the particle carries the affine field v + C (x - x_p) with
+     * C = B D^-1, B stored by G2P and D = sum N (x_i - x_p) (x) (x_i -
+     * x_p), x_p the position of the stencil (MUSL re-maps after the
+     * particles moved): with this D the round trip conserves angular
+     * momentum exactly (Jiang et al. 2015). Returns C (zero where D is
+     * singular: a particle on a node line). */
+    template <int dim, typename Weights, typename Particle>
+    DEAL_II_ALWAYS_INLINE inline Tensor<2, dim>
+    affine_velocity_gradient(const BackgroundGrid<dim> &grid,
+                             const Weights             &weights,
+                             const std::size_t          k,
+                             const Particle            &p,
+                             const GridCell<dim>       &c,
+                             const Point<dim>          &x_p,
+                             const CoreFields          &f)
+    {
+      Tensor<2, dim> D;
+      weights(k,
+              p,
+              c,
+              [&](const unsigned int n, const double N, const Tensor<1, dim> &)
+                DEAL_II_ALWAYS_INLINE {
+                  const Tensor<1, dim> r = grid.node_positions[n] - x_p;
+                  D += N * outer_product(r, r);
+                });
+      if (std::abs(determinant(D)) >
+          1e-12 * Utilities::fixed_power<dim>(trace(D)))
+        return read_tensor<dim>(&p.get_properties()[f.affine_velocity]) *
+               invert(D);
+      return Tensor<2, dim>();
+    }
+
     /** The kernel, compiled once per choice of quantities so that the usual
      * all-in-one P2G has no branch in its loop. */
     template <int  dim,
@@ -192,30 +254,12 @@ namespace dealmpm
           // Newmark: the grid carries the predicted velocity.
           if constexpr (predictor)
             v -= predictor_offset * read_vector<dim>(&props[f.acceleration]);
-          // APIC: the particle carries the affine field v + C (x - x_p)
-          // with C = B D^-1, B stored by G2P and D = sum N (x_i - x_p) (x)
-          // (x_i - x_p), x_p the position of the stencil (MUSL re-maps
-          // after the particles moved): with this D the round trip
-          // conserves angular momentum exactly (Jiang et al. 2015).
           Tensor<2, dim> C;
           Point<dim>     x_p;
           if (affine)
             {
               x_p = stencil.position[k];
-              Tensor<2, dim> D;
-              weights(k,
-                      p,
-                      c,
-                      [&](const unsigned int n,
-                          const double       N,
-                          const Tensor<1, dim> &) DEAL_II_ALWAYS_INLINE {
-                        const Tensor<1, dim> r = grid.node_positions[n] - x_p;
-                        D += N * outer_product(r, r);
-                      });
-              // D is singular only for a particle on a node line.
-              if (std::abs(determinant(D)) >
-                  1e-12 * Utilities::fixed_power<dim>(trace(D)))
-                C = read_tensor<dim>(&props[f.affine_velocity]) * invert(D);
+              C   = affine_velocity_gradient(grid, weights, k, p, c, x_p, f);
             }
           // Once per particle.
           decltype(force_per_gradient<total_lagrangian, dim>(props, f)) Vsigma;
@@ -247,23 +291,9 @@ namespace dealmpm
                       }
                   });
         };
-      // A cell at a time where the weights are linear ones computed here
-      // and the cell has no hanging node: its nodes' sums are kept in
-      // locals and added once (a value added straight into the nodal
-      // vectors cost 7 to 10 instructions).
       if constexpr (by_cell)
-        for (const GridCell<dim> &c : grid.cells)
-          if (c.first_weight == numbers::invalid_unsigned_int)
-            transfer_in_box<dim, mass_and_momentum, internal_force>(
-              grid,
-              f,
-              weights,
-              c,
-              particles.handler.particles_in_cell(c.cell),
-              targets.fields);
-          else
-            for (const auto &p : particles.handler.particles_in_cell(c.cell))
-              per_particle(0, p, c); // LinearWeights needs no k
+        transfer_by_cell<dim, mass_and_momentum, internal_force>(
+          grid, particles, weights, targets.fields, per_particle);
       else
         for_each_particle_in_stencil_order(grid,
                                            particles.handler,
