@@ -139,7 +139,7 @@ namespace dealmpm
                                         parts[i].cell,
                                         make_array_view(parts[i].properties));
     // The parts may lie in a neighbouring cell (or rank).
-    particles.handler.sort_particles_into_subdomains_and_cells();
+    particles.sort();
     return n_split;
   }
 
@@ -289,7 +289,7 @@ namespace dealmpm
       return 0;
     particles.handler.remove_particles(removed);
     // The merged particle may sit in a neighbouring cell (a concave cell).
-    particles.handler.sort_particles_into_subdomains_and_cells();
+    particles.sort();
     return n_removed;
   }
 

@@ -194,7 +194,7 @@ namespace dealmpm
                                                 *grid.mapping,
                                                 boundary_conditions.walls());
     lost_this_step.clear();
-    particles->handler.sort_particles_into_subdomains_and_cells();
+    particles->sort();
     const double local[2] = {held, double(lost_this_step.size())};
     double       counts[2];
     Utilities::MPI::sum(ArrayView<const double>(local, 2),

@@ -102,6 +102,7 @@ namespace dealmpm
     particles->handler.prepare_for_coarsening_and_refinement();
     grid.triangulation.execute_coarsening_and_refinement();
     particles->handler.unpack_after_coarsening_and_refinement();
+    particles->changed();
     rebuild_after_grid_change();
   }
 
@@ -121,6 +122,7 @@ namespace dealmpm
     particles->handler.prepare_for_coarsening_and_refinement();
     grid.triangulation.repartition();
     particles->handler.unpack_after_coarsening_and_refinement();
+    particles->changed();
     rebuild_after_grid_change();
     ++loop.repartitions;
   }

@@ -263,6 +263,7 @@ namespace dealmpm
             ": the particles' properties differ from this run's (the "
             "checkpoint was written by another version of dealmpm)");
         particles->handler.deserialize();
+        particles->changed();
         return;
       }
 
@@ -287,7 +288,7 @@ namespace dealmpm
         // particle pool, which was the set-up's peak memory.
         if (!run_settings.method.total_lagrangian() &&
             Utilities::MPI::logical_or(particle_locations() != before, comm))
-          particles->handler.sort_particles_into_subdomains_and_cells();
+          particles->sort();
       }
     start_geostatic_bodies(reader,
                            bodies,

@@ -92,6 +92,7 @@ namespace dealmpm
         failed.push_back(p);
       }
     particles.handler.remove_particles(failed);
+    particles.changed();
   }
 
   template <int dim>

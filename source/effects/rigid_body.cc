@@ -185,7 +185,7 @@ namespace dealmpm
     const CoreFields &f = state.particles.fields;
     for_each_particle_in_stencil_order(
       state.grid,
-      state.particles.handler,
+      state.particles,
       [&](const std::size_t k, const auto &p, const GridCell<dim> &) {
         const auto   props = p.get_properties();
         const double size =

@@ -242,7 +242,7 @@ namespace dealmpm
           target[d] = nodal_load[d].begin();
         for_each_particle_in_stencil_order(
           state.grid,
-          state.particles.handler,
+          state.particles,
           [&](const std::size_t k, const auto &p, const GridCell<dim> &) {
             const auto   props = p.get_properties();
             const double s0    = props[size];

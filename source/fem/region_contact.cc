@@ -224,7 +224,7 @@ namespace dealmpm
     const CoreFields &f = particles.fields;
     for_each_particle_in_stencil_order(
       grid,
-      particles.handler,
+      particles,
       [&](const std::size_t k, const auto &p, const GridCell<dim> &) {
         // Most particles reach no node of the region: leave them at once.
         bool near = false;

@@ -402,6 +402,7 @@ namespace dealmpm
   void
   BackgroundGrid<dim>::setup()
   {
+    ++generation;
     dof_handler.distribute_dofs(fe);
     const IndexSet owned = dof_handler.locally_owned_dofs();
     const IndexSet relevant =

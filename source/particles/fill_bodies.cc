@@ -66,6 +66,7 @@ namespace dealmpm
           }
       }
     particles.handler.update_cached_numbers();
+    particles.changed();
   }
 
 #define DEALMPM_INSTANTIATE(dim)                                      \

@@ -163,6 +163,7 @@ namespace dealmpm
           k;
         particles.handler.insert_particle(
           x, xi, id, c.cell, make_array_view(properties));
+        particles.changed();
         ++result.n_created;
       }
 

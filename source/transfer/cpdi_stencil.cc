@@ -195,7 +195,7 @@ namespace dealmpm
       CornerSums<dim>      sums;
       const std::size_t    n_visited = for_each_particle_in_stencil_order(
         grid,
-        particles.handler,
+        particles,
         [&](const std::size_t k, const auto &p, const GridCell<dim> &own)
           DEAL_II_ALWAYS_INLINE {
             const unsigned int   i = index_in_grid(grid, own);

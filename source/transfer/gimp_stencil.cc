@@ -91,7 +91,7 @@ namespace dealmpm
     Tensor<1, dim>       G[n_vertices];
     const std::size_t    n_visited = for_each_particle_in_stencil_order(
       grid,
-      particles.handler,
+      particles,
       [&](const std::size_t k, const auto &p, const GridCell<dim> &own)
         DEAL_II_ALWAYS_INLINE {
           const auto       props = p.get_properties();

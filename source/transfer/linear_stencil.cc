@@ -32,7 +32,7 @@ namespace dealmpm
     const LinearWeights<dim> weights{grid};
     const std::size_t        n_visited = for_each_particle_in_stencil_order(
       grid,
-      particles.handler,
+      particles,
       [&](const std::size_t k, const auto &p, const GridCell<dim> &c)
         DEAL_II_ALWAYS_INLINE {
           stencil.begin[k] = e;
@@ -63,7 +63,7 @@ namespace dealmpm
     const auto record =
       [&](const std::size_t k, const auto &p, const GridCell<dim> &)
         DEAL_II_ALWAYS_INLINE { stencil.position[k] = p.get_location(); };
-    for_each_particle_in_stencil_order(grid, particles.handler, record);
+    for_each_particle_in_stencil_order(grid, particles, record);
   }
 
 #define DEALMPM_INSTANTIATE(dim)                                    \

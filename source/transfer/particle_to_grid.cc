@@ -96,25 +96,23 @@ namespace dealmpm
      * FLIP or PIC, one set of nodal fields) in a cell without hanging
      * nodes: its particles add into its 2^dim nodes held in locals, added
      * into the nodal vectors once. */
-    template <int  dim,
-              bool mass_and_momentum,
-              bool internal_force,
-              typename Particles>
+    template <int dim, bool mass_and_momentum, bool internal_force>
     DEAL_II_ALWAYS_INLINE inline void
     transfer_in_box(const BackgroundGrid<dim> &grid,
-                    const CoreFields          &f,
+                    const ParticleSet<dim>    &particles,
                     const LinearWeights<dim>  &weights,
-                    const GridCell<dim>       &c,
-                    const Particles           &particles_here,
+                    const std::size_t          cell_index,
                     const NodalPointers<dim>  &to)
     {
       constexpr unsigned int n_vertices = GridCell<dim>::n_vertices;
-      if (particles_here.begin() == particles_here.end())
-        return;
+      const GridCell<dim>   &c          = grid.cells[cell_index];
+      const CoreFields      &f          = particles.fields;
       double mass[n_vertices] = {}, momentum[n_vertices][dim] = {},
              force[n_vertices][dim] = {};
-      for (const auto &p : particles_here)
-        {
+      bool empty                    = true;
+      for_each_particle_in_cell(
+        grid, particles, cell_index, [&](const auto &p) DEAL_II_ALWAYS_INLINE {
+          empty                               = false;
           const ArrayView<const double> props = p.get_properties();
           const double                  m     = props[f.mass];
           const Tensor<1, dim>    v = read_vector<dim>(&props[f.velocity]);
@@ -142,7 +140,9 @@ namespace dealmpm
                          }
                        ++vertex;
                      });
-        }
+        });
+      if (empty)
+        return;
       const unsigned int *nodes = &grid.cell_nodes[c.first_node];
       for (unsigned int v = 0; v < n_vertices; ++v)
         {
@@ -175,18 +175,18 @@ namespace dealmpm
                      const NodalPointers<dim>  &to,
                      const PerParticle         &per_particle)
     {
-      for (const GridCell<dim> &c : grid.cells)
-        if (c.first_weight == numbers::invalid_unsigned_int)
-          transfer_in_box<dim, mass_and_momentum, internal_force>(
-            grid,
-            particles.fields,
-            weights,
-            c,
-            particles.handler.particles_in_cell(c.cell),
-            to);
-        else
-          for (const auto &p : particles.handler.particles_in_cell(c.cell))
-            per_particle(0, p, c); // LinearWeights needs no k
+      for (std::size_t i = 0; i < grid.cells.size(); ++i)
+        {
+          const GridCell<dim> &c = grid.cells[i];
+          if (c.first_weight == numbers::invalid_unsigned_int)
+            transfer_in_box<dim, mass_and_momentum, internal_force>(
+              grid, particles, weights, i, to);
+          else
+            for_each_particle_in_cell(
+              grid, particles, i, [&](const auto &p) DEAL_II_ALWAYS_INLINE {
+                per_particle(0, p, c); // LinearWeights needs no k
+              });
+        }
     }
 
     /** APIC: the particle carries the affine field v + C (x - x_p) with
@@ -295,9 +295,7 @@ namespace dealmpm
         transfer_by_cell<dim, mass_and_momentum, internal_force>(
           grid, particles, weights, targets.fields, per_particle);
       else
-        for_each_particle_in_stencil_order(grid,
-                                           particles.handler,
-                                           per_particle);
+        for_each_particle_in_stencil_order(grid, particles, per_particle);
     }
   } // namespace
 

@@ -162,7 +162,7 @@ namespace dealmpm
     double            value[dim][3], derivative[dim][3];
     const std::size_t n_visited = for_each_particle_in_stencil_order(
       grid,
-      particles.handler,
+      particles,
       [&](const std::size_t k, const auto &p, const GridCell<dim> &c)
         DEAL_II_ALWAYS_INLINE {
           const unsigned int  i = index_in_grid(grid, c);

@@ -26,7 +26,7 @@ namespace dealmpm
       identity[d][d] = 1.;
     for_each_particle_in_stencil_order(
       grid,
-      particles.handler,
+      particles,
       [&](const std::size_t k, auto &p, const GridCell<dim> &c) {
         const auto props    = p.get_properties();
         current_position[k] = p.get_location();
@@ -45,7 +45,7 @@ namespace dealmpm
     // another place.
     for_each_particle_in_stencil_order(
       grid,
-      particles.handler,
+      particles,
       [&](const std::size_t, const auto &p, const GridCell<dim> &) {
         const Point<dim> xi = p.get_reference_location();
         for (unsigned int d = 0; d < dim; ++d)
@@ -61,7 +61,7 @@ namespace dealmpm
       });
     for_each_particle_in_stencil_order(
       grid,
-      particles.handler,
+      particles,
       [&](const std::size_t k, auto &p, const GridCell<dim> &) {
         p.set_location(current_position[k]);
         write_tensor<dim>(&p.get_properties()[f.deformation_gradient],
@@ -85,7 +85,7 @@ namespace dealmpm
     const auto for_each_entry = [&](const auto &visit) {
       for_each_particle_in_stencil_order(
         grid,
-        particles.handler,
+        particles,
         [&](const std::size_t k, const auto &p, const GridCell<dim> &) {
           const double body = p.get_properties()[f.body];
           for (unsigned int e = stencil.begin[k]; e < stencil.begin[k + 1]; ++e)

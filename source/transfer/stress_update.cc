@@ -14,7 +14,7 @@ namespace dealmpm
     const CoreFields  &f = particles.fields;
     for_each_particle_in_stencil_order(
       grid,
-      particles.handler,
+      particles,
       [&](std::size_t,
           const auto          &p,
           const GridCell<dim> &c) DEAL_II_ALWAYS_INLINE {

@@ -350,7 +350,7 @@ namespace dealmpm
     double power = 0;
     for_each_particle_in_stencil_order(
       state.grid,
-      state.particles.handler,
+      state.particles,
       [&](const std::size_t k, const auto &p, const GridCell<dim> &)
         DEAL_II_ALWAYS_INLINE {
           const auto           props = p.get_properties();

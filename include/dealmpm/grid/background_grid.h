@@ -156,6 +156,10 @@ namespace dealmpm
      * rank), which a checkpoint records. */
     std::string coarse_checksum;
 
+    /** How many times setup() ran: data kept per cell elsewhere (the
+     * particles' order) records it and is rebuilt when it changed. */
+    unsigned int generation = 0;
+
     /** Locally owned active cells, in the order every kernel visits them. */
     std::vector<GridCell<dim>> cells;
     /** The ghost layer's cells (same data), for kernels that reach into

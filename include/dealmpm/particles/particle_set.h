@@ -5,6 +5,7 @@
 #include <deal.II/particles/particle_handler.h>
 
 #include <dealmpm/base/property_layout.h>
+#include <dealmpm/particles/particle_order.h>
 
 #include <memory>
 #include <vector>
@@ -67,6 +68,38 @@ namespace dealmpm
     std::vector<unsigned int>       internal_offset;
     std::vector<unsigned int>       n_internal;
     Particles::ParticleHandler<dim> handler;
+
+    /** Sort the particles into their ranks and cells (deal.II's sort);
+     * the step's order is rebuilt on its next use. */
+    void
+    sort()
+    {
+      handler.sort_particles_into_subdomains_and_cells();
+      changed();
+    }
+
+    /** Say that the handler's particles or their cells changed other than
+     * through sort(): an insertion or removal, a grid change, a restore.
+     * Every such change must say so, or the step would visit handles that
+     * are no longer these particles'. */
+    void
+    changed()
+    {
+      order.invalidate();
+    }
+
+    /** The step's order of this rank's particles over @p grid's cells,
+     * rebuilt here when the particles or the grid changed. */
+    const ParticleOrder<dim> &
+    order_over(const BackgroundGrid<dim> &grid) const
+    {
+      if (!order.is_valid_for(grid))
+        order.rebuild(grid, handler);
+      return order;
+    }
+
+  private:
+    mutable ParticleOrder<dim> order;
   };
 
   /** Read and write small tensors from a particle's property array. */

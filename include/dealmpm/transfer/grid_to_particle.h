@@ -11,6 +11,7 @@
 #include <dealmpm/transfer/stencil.h>
 #include <dealmpm/transfer/stencil_order.h>
 
+#include <type_traits>
 #include <vector>
 
 namespace dealmpm
@@ -304,6 +305,122 @@ namespace dealmpm
       write_tensor<dim>(&props[f.deformation_gradient], F);
       return F;
     }
+
+    /** One box cell's nodal velocities and increments (and USL's
+     * light-node weights) copied into locals, indexed by the cell's vertex:
+     * what its particles read through BoxWeights. The nodal arrays are read
+     * once a cell instead of once a particle, through no node index. */
+    template <int dim, bool light>
+    struct CellArrays
+    {
+      static constexpr bool         may_be_light = light;
+      static constexpr unsigned int n_vertices   = GridCell<dim>::n_vertices;
+      double                        velocity[dim][n_vertices];
+      double                        increment[dim][n_vertices];
+      double                        light_weight[n_vertices];
+      /** light_weight and the grid's light_cells, or nullptr when there
+       * are no light nodes (as VelocityArrays' weight and light_cells). Not
+       * copyable: weight points into this object. */
+      const double        *weight      = nullptr;
+      const unsigned char *light_cells = nullptr;
+
+      CellArrays(const CellArrays &) = delete;
+
+      DEAL_II_ALWAYS_INLINE
+      CellArrays(const VelocityArrays<dim, light> &from,
+                 const unsigned int               *nodes)
+      {
+        for (unsigned int v = 0; v < n_vertices; ++v)
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              velocity[d][v]  = from.velocity[d][nodes[v]];
+              increment[d][v] = from.increment[d][nodes[v]];
+            }
+        if (light && from.weight)
+          {
+            weight      = light_weight;
+            light_cells = from.light_cells;
+            for (unsigned int v = 0; v < n_vertices; ++v)
+              light_weight[v] = from.weight[nodes[v]];
+          }
+      }
+    };
+
+    /** LinearWeights in an axis-aligned box cell without hanging nodes
+     * (the same numbers), handing out the vertex instead of the node: the
+     * index into CellArrays. */
+    template <int dim>
+    struct BoxWeights
+    {
+      template <typename Particle, typename Function>
+      DEAL_II_ALWAYS_INLINE void
+      operator()(const std::size_t,
+                 const Particle      &p,
+                 const GridCell<dim> &c,
+                 Function           &&f) const
+      {
+        constexpr unsigned int n_vertices = GridCell<dim>::n_vertices;
+        double                 N[n_vertices];
+        Tensor<1, dim>         grad_xi[n_vertices];
+        q1_values<dim>(p.get_reference_location(), N, grad_xi);
+        for (unsigned int v = 0; v < n_vertices; ++v)
+          {
+            Tensor<1, dim> grad;
+            for (unsigned int d = 0; d < dim; ++d)
+              grad[d] = grad_xi[v][d] * c.inverse_jacobian[d][d];
+            f(v, N[v], grad);
+          }
+      }
+    };
+
+    /** Visit the particles with @p per_particle(k, particle, cell,
+     * weights, arrays): a cell at a time with CellArrays and BoxWeights
+     * where the weights are linear ones computed here (LinearWeights), the
+     * particles read one set of nodal arrays (VelocityArrays, not one per
+     * body) and the cell is a box without hanging nodes; else each
+     * particle with @p weights and @p arrays. Both give the same numbers
+     * in the same order. */
+    template <int dim, typename Weights, typename Arrays, typename PerParticle>
+    DEAL_II_ALWAYS_INLINE inline void
+    visit(const BackgroundGrid<dim> &grid,
+          ParticleSet<dim>          &particles,
+          const Weights             &weights,
+          const Arrays              &arrays,
+          const PerParticle         &per_particle)
+    {
+      constexpr bool by_cell =
+        std::is_same_v<Weights, LinearWeights<dim>> &&
+        (std::is_same_v<Arrays, VelocityArrays<dim, false>> ||
+         std::is_same_v<Arrays, VelocityArrays<dim, true>>);
+      if constexpr (by_cell)
+        for (std::size_t i = 0; i < grid.cells.size(); ++i)
+          {
+            const GridCell<dim> &c = grid.cells[i];
+            if (c.first_weight == numbers::invalid_unsigned_int &&
+                LinearWeights<dim>::is_box(c))
+              {
+                const CellArrays<dim, Arrays::may_be_light> local(
+                  arrays, &grid.cell_nodes[c.first_node]);
+                for_each_particle_in_cell(
+                  grid, particles, i, [&](auto &p) DEAL_II_ALWAYS_INLINE {
+                    per_particle(0, p, c, BoxWeights<dim>(), local);
+                  });
+              }
+            else
+              for_each_particle_in_cell(
+                grid, particles, i, [&](auto &p) DEAL_II_ALWAYS_INLINE {
+                  per_particle(0, p, c, weights, arrays);
+                });
+          }
+      else
+        for_each_particle_in_stencil_order(
+          grid,
+          particles,
+          [&](const std::size_t k, auto &p, const GridCell<dim> &c)
+            DEAL_II_ALWAYS_INLINE {
+              per_particle(k, p, c, weights, arrays.of(p.get_properties()));
+            });
+    }
   } // namespace g2p_sweep
 
   /**
@@ -374,52 +491,57 @@ namespace dealmpm
     // APIC's x_p are the stored stencil's positions.
     AssertThrow(!(affine && stencil.where_used), ExcInternalError());
     with_weights(grid, stencil, [&](const auto &weights) {
-      for_each_particle_in_stencil_order(
+      g2p_sweep::visit(
         grid,
-        particles.handler,
-        [&](const std::size_t k, auto &p, const GridCell<dim> &c)
-          DEAL_II_ALWAYS_INLINE {
-            Tensor<1, dim>          v_grid, dv;
-            Tensor<2, dim>          L, B;
-            const Point<dim>        x_p   = p.get_location();
-            const ArrayView<double> props = p.get_properties();
-            g2p_sweep::gather<motion, move, deformation>(grid,
-                                                         stencil,
-                                                         weights,
-                                                         k,
-                                                         p,
-                                                         c,
-                                                         arrays.of(props),
-                                                         affine,
-                                                         v_grid,
-                                                         dv,
-                                                         L,
-                                                         B);
-            if (motion)
-              g2p_sweep::update_velocity(
-                props, f, v_grid, dv, B, flip_fraction, affine);
-            if (move)
-              {
-                if constexpr (reference)
-                  g2p_sweep::displace(p, props, f, x_p, dt * v_grid);
-                else
-                  g2p_sweep::move<!keep_reference>(
-                    p, props, f, c, x_p, dt * v_grid, left_cell);
-              }
-            if (deformation)
-              {
-                adjust_gradient(c, props, L);
-                if constexpr (reference)
-                  L = L *
-                      invert(read_tensor<dim>(&props[f.deformation_gradient]));
-                const Tensor<2, dim> F =
-                  g2p_sweep::deform(props, f, L, dt, f_increment);
-                after_deformation(
-                  p, props, L, F, reference ? c.h * smallest_stretch(F) : c.h);
-              }
-            if (then_reference)
-              p.set_reference_location(c.reference_point(x_p));
-          });
+        particles,
+        weights,
+        arrays,
+        [&](const std::size_t    k,
+            auto                &p,
+            const GridCell<dim> &c,
+            const auto          &weights_here,
+            const auto          &from) DEAL_II_ALWAYS_INLINE {
+          Tensor<1, dim>          v_grid, dv;
+          Tensor<2, dim>          L, B;
+          const Point<dim>        x_p   = p.get_location();
+          const ArrayView<double> props = p.get_properties();
+          g2p_sweep::gather<motion, move, deformation>(grid,
+                                                       stencil,
+                                                       weights_here,
+                                                       k,
+                                                       p,
+                                                       c,
+                                                       from,
+                                                       affine,
+                                                       v_grid,
+                                                       dv,
+                                                       L,
+                                                       B);
+          if (motion)
+            g2p_sweep::update_velocity(
+              props, f, v_grid, dv, B, flip_fraction, affine);
+          if (move)
+            {
+              if constexpr (reference)
+                g2p_sweep::displace(p, props, f, x_p, dt * v_grid);
+              else
+                g2p_sweep::move<!keep_reference>(
+                  p, props, f, c, x_p, dt * v_grid, left_cell);
+            }
+          if (deformation)
+            {
+              adjust_gradient(c, props, L);
+              if constexpr (reference)
+                L =
+                  L * invert(read_tensor<dim>(&props[f.deformation_gradient]));
+              const Tensor<2, dim> F =
+                g2p_sweep::deform(props, f, L, dt, f_increment);
+              after_deformation(
+                p, props, L, F, reference ? c.h * smallest_stretch(F) : c.h);
+            }
+          if (then_reference)
+            p.set_reference_location(c.reference_point(x_p));
+        });
     });
     return left_cell;
   }

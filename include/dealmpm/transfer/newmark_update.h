@@ -32,7 +32,7 @@ namespace dealmpm
     const CoreFields &f = particles.fields;
     for_each_particle_in_stencil_order(
       grid,
-      particles.handler,
+      particles,
       [&](const std::size_t k, auto &p, const GridCell<dim> &)
         DEAL_II_ALWAYS_INLINE {
           Tensor<1, dim> dv;

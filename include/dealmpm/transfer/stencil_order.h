@@ -3,8 +3,10 @@
 #include <deal.II/base/config.h>
 
 #include <dealmpm/grid/background_grid.h>
+#include <dealmpm/particles/particle_set.h>
 
 #include <cstddef>
+#include <type_traits>
 
 namespace dealmpm
 {
@@ -14,8 +16,13 @@ namespace dealmpm
    * particle's place in that order, so that its stencil entries are
    * stencil.begin[k] to stencil.begin[k + 1]. Every sweep that builds or
    * reads a stencil visits through here, so that they cannot disagree on
-   * the order. @p handler is the particle set's handler, const for sweeps
-   * that only read the particles. Returns the number of particles visited.
+   * the order. @p particles is the particle set, const for sweeps that only
+   * read the particles (then @p f gets read-only views). Returns the number
+   * of particles visited.
+   *
+   * The particle is a PooledParticle (the particle set's order of handles
+   * into deal.II's property pool), not deal.II's accessor: the handler is
+   * not asked for each cell's particles in each sweep.
    *
    * The step's hot loops go through here. Mark @p f DEAL_II_ALWAYS_INLINE
    * (after its parameter list), as this function is, and so the helpers it
@@ -25,20 +32,47 @@ namespace dealmpm
    * linear stencil 25 % more instructions (callgrind): the nodal pointers
    * were reloaded from the stack in the innermost loop.
    */
-  template <int dim, typename ParticleHandlerType, typename Function>
+  template <int dim, typename ParticleSetType, typename Function>
   DEAL_II_ALWAYS_INLINE inline std::size_t
   for_each_particle_in_stencil_order(const BackgroundGrid<dim> &grid,
-                                     ParticleHandlerType       &handler,
+                                     ParticleSetType           &particles,
                                      Function                 &&f)
   {
-    std::size_t k = 0;
-    for (const GridCell<dim> &c : grid.cells)
-      for (auto &p : handler.particles_in_cell(c.cell))
-        {
-          f(k, p, c);
-          ++k;
-        }
+    constexpr bool            read_only = std::is_const_v<ParticleSetType>;
+    const ParticleOrder<dim> &order     = particles.order_over(grid);
+    auto                     &pool      = particles.handler.get_property_pool();
+    std::size_t               k         = 0;
+    const std::size_t         n_cells   = grid.cells.size();
+    for (std::size_t i = 0; i < n_cells; ++i)
+      {
+        const GridCell<dim> &c   = grid.cells[i];
+        const std::size_t    end = order.cell_begin[i + 1];
+        for (; k < end; ++k)
+          {
+            const PooledParticle<dim, read_only> p(pool, order.handles[k]);
+            f(k, p, c);
+          }
+      }
     return k;
+  }
+
+  /** Visit the particles of grid.cells[@p i] with @p f(particle), in the
+   * stencil's order (the sweeps that work a cell at a time). */
+  template <int dim, typename ParticleSetType, typename Function>
+  DEAL_II_ALWAYS_INLINE inline void
+  for_each_particle_in_cell(const BackgroundGrid<dim> &grid,
+                            ParticleSetType           &particles,
+                            const std::size_t          i,
+                            Function                 &&f)
+  {
+    constexpr bool            read_only = std::is_const_v<ParticleSetType>;
+    const ParticleOrder<dim> &order     = particles.order_over(grid);
+    auto                     &pool      = particles.handler.get_property_pool();
+    for (std::size_t k = order.cell_begin[i]; k < order.cell_begin[i + 1]; ++k)
+      {
+        const PooledParticle<dim, read_only> p(pool, order.handles[k]);
+        f(p);
+      }
   }
 
   /** The index of @p cell in grid.cells, for the per-cell data kept beside
