@@ -379,7 +379,9 @@ namespace dealmpm
      * particles read one set of nodal arrays (VelocityArrays, not one per
      * body) and the cell is a box without hanging nodes; else each
      * particle with @p weights and @p arrays. Both give the same numbers
-     * in the same order. */
+     * in the same order. The cell path passes k = 0 and vertex indices:
+     * fine for what reads weights computed here (not APIC, whose x_p and
+     * node positions need the stored stencil). */
     template <int dim, typename Weights, typename Arrays, typename PerParticle>
     DEAL_II_ALWAYS_INLINE inline void
     visit(const BackgroundGrid<dim> &grid,
