@@ -359,17 +359,7 @@ namespace dealmpm
                  const GridCell<dim> &c,
                  Function           &&f) const
       {
-        constexpr unsigned int n_vertices = GridCell<dim>::n_vertices;
-        double                 N[n_vertices];
-        Tensor<1, dim>         grad_xi[n_vertices];
-        q1_values<dim>(p.get_reference_location(), N, grad_xi);
-        for (unsigned int v = 0; v < n_vertices; ++v)
-          {
-            Tensor<1, dim> grad;
-            for (unsigned int d = 0; d < dim; ++d)
-              grad[d] = grad_xi[v][d] * c.inverse_jacobian[d][d];
-            f(v, N[v], grad);
-          }
+        LinearWeights<dim>::at_in_box(p.get_reference_location(), c, f);
       }
     };
 

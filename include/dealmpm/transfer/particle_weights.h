@@ -108,26 +108,48 @@ namespace dealmpm
   {
     const BackgroundGrid<dim> &grid;
 
+    /** f(vertex, N, grad N) at unit-cell point @p xi of @p c, an
+     * axis-aligned box without hanging nodes (is_box()): the gradient is
+     * the unit cell's scaled by the diagonal of d xi / d x. */
+    template <typename Function>
+    static DEAL_II_ALWAYS_INLINE void
+    at_in_box(const Point<dim> &xi, const GridCell<dim> &c, Function &&f)
+    {
+      constexpr unsigned int n_vertices = GridCell<dim>::n_vertices;
+      double                 N[n_vertices];
+      Tensor<1, dim>         grad_xi[n_vertices];
+      q1_values<dim>(xi, N, grad_xi);
+      for (unsigned int v = 0; v < n_vertices; ++v)
+        {
+          Tensor<1, dim> grad;
+          for (unsigned int d = 0; d < dim; ++d)
+            grad[d] = grad_xi[v][d] * c.inverse_jacobian[d][d];
+          f(v, N[v], grad);
+        }
+    }
+
     /** f(node, N, grad N) at unit-cell point @p xi of cell @p c. */
     template <typename Function>
     DEAL_II_ALWAYS_INLINE void
     at(const Point<dim> &xi, const GridCell<dim> &c, Function &&f) const
     {
       constexpr unsigned int n_vertices = GridCell<dim>::n_vertices;
-      double                 N[n_vertices];
-      Tensor<1, dim>         grad_xi[n_vertices];
-      q1_values<dim>(xi, N, grad_xi);
-      const unsigned int *nodes = &grid.cell_nodes[c.first_node];
+      const unsigned int    *nodes      = &grid.cell_nodes[c.first_node];
       if (c.first_weight == numbers::invalid_unsigned_int &&
           is_box(c)) // most cells: d xi / d x is diagonal
-        for (unsigned int v = 0; v < n_vertices; ++v)
-          {
-            Tensor<1, dim> grad;
-            for (unsigned int d = 0; d < dim; ++d)
-              grad[d] = grad_xi[v][d] * c.inverse_jacobian[d][d];
-            f(nodes[v], N[v], grad);
-          }
-      else if (c.first_weight == numbers::invalid_unsigned_int)
+        {
+          at_in_box(xi,
+                    c,
+                    [&](const unsigned int    v,
+                        const double          N,
+                        const Tensor<1, dim> &grad)
+                      DEAL_II_ALWAYS_INLINE { f(nodes[v], N, grad); });
+          return;
+        }
+      double         N[n_vertices];
+      Tensor<1, dim> grad_xi[n_vertices];
+      q1_values<dim>(xi, N, grad_xi);
+      if (c.first_weight == numbers::invalid_unsigned_int)
         {
           const Tensor<2, dim> K =
             c.affine ? c.inverse_jacobian : c.inverse_jacobian_at(xi);
