@@ -66,7 +66,6 @@ namespace dealmpm
           }
       }
     particles.handler.update_cached_numbers();
-    particles.changed();
   }
 
 #define DEALMPM_INSTANTIATE(dim)                                      \

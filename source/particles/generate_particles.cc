@@ -163,7 +163,6 @@ namespace dealmpm
           k;
         particles.handler.insert_particle(
           x, xi, id, c.cell, make_array_view(properties));
-        particles.changed();
         ++result.n_created;
       }
 
@@ -213,6 +212,7 @@ namespace dealmpm
     filler.result   = GeneratedParticles();
     for (const GridCell<dim> &c : grid.cells)
       filler.fill(c);
+    particles.changed();
     return filler.result;
   }
 

@@ -98,21 +98,22 @@ namespace dealmpm
      * into the nodal vectors once. */
     template <int dim, bool mass_and_momentum, bool internal_force>
     DEAL_II_ALWAYS_INLINE inline void
-    transfer_in_box(const BackgroundGrid<dim> &grid,
-                    const ParticleSet<dim>    &particles,
-                    const LinearWeights<dim>  &weights,
-                    const std::size_t          cell_index,
-                    const NodalPointers<dim>  &to)
+    transfer_one_cell(const BackgroundGrid<dim> &grid,
+                      const ParticleSet<dim>    &particles,
+                      const LinearWeights<dim>  &weights,
+                      const std::size_t          cell_index,
+                      const NodalPointers<dim>  &to)
     {
-      constexpr unsigned int n_vertices = GridCell<dim>::n_vertices;
-      const GridCell<dim>   &c          = grid.cells[cell_index];
-      const CoreFields      &f          = particles.fields;
+      constexpr unsigned int    n_vertices = GridCell<dim>::n_vertices;
+      const GridCell<dim>      &c          = grid.cells[cell_index];
+      const CoreFields         &f          = particles.fields;
+      const ParticleOrder<dim> &order      = particles.order_over(grid);
+      if (order.cell_begin[cell_index] == order.cell_begin[cell_index + 1])
+        return;
       double mass[n_vertices] = {}, momentum[n_vertices][dim] = {},
              force[n_vertices][dim] = {};
-      bool empty                    = true;
       for_each_particle_in_cell(
         grid, particles, cell_index, [&](const auto &p) DEAL_II_ALWAYS_INLINE {
-          empty                               = false;
           const ArrayView<const double> props = p.get_properties();
           const double                  m     = props[f.mass];
           const Tensor<1, dim>    v = read_vector<dim>(&props[f.velocity]);
@@ -141,8 +142,6 @@ namespace dealmpm
                        ++vertex;
                      });
         });
-      if (empty)
-        return;
       const unsigned int *nodes = &grid.cell_nodes[c.first_node];
       for (unsigned int v = 0; v < n_vertices; ++v)
         {
@@ -161,7 +160,7 @@ namespace dealmpm
 
     /** P2G a cell at a time, for linear weights computed here: a cell
      * without hanging nodes keeps its nodes' sums in locals and adds them
-     * once (transfer_in_box(); a value added straight into the nodal
+     * once (transfer_one_cell(); a value added straight into the nodal
      * vectors cost 7 to 10 instructions), the others add each particle's
      * shares with @p per_particle(k, particle, cell). */
     template <int  dim,
@@ -179,7 +178,7 @@ namespace dealmpm
         {
           const GridCell<dim> &c = grid.cells[i];
           if (c.first_weight == numbers::invalid_unsigned_int)
-            transfer_in_box<dim, mass_and_momentum, internal_force>(
+            transfer_one_cell<dim, mass_and_momentum, internal_force>(
               grid, particles, weights, i, to);
           else
             for_each_particle_in_cell(
