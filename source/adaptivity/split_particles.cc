@@ -108,6 +108,7 @@ namespace dealmpm
                   const unsigned int         particles_per_direction)
   {
     constexpr unsigned int n_parts = 1u << dim;
+    particles.update_handler(grid); // walked cell by cell below
 
     // The parents first: inserting would invalidate the iterators.
     std::vector<ParticleIterator<dim>> parents =
@@ -176,9 +177,9 @@ namespace dealmpm
           const unsigned int sub =
             sub_cell(c.reference_point(p->get_location()), n);
           const auto props = p->get_properties();
-          groups[{sub,
-                  static_cast<unsigned int>(props[f.body]),
-                  static_cast<unsigned int>(props[f.material])}]
+          groups[{{sub,
+                   static_cast<unsigned int>(props[f.body]),
+                   static_cast<unsigned int>(props[f.material])}}]
             .push_back(p);
         }
       return groups;
@@ -267,8 +268,9 @@ namespace dealmpm
   {
     // A sub-cell holding this many particles of one body and material
     // (the parts of one split particle) is crowded.
-    const unsigned int                 crowded      = 1u << dim;
-    const unsigned int                 n_properties = particles.layout.size();
+    const unsigned int crowded      = 1u << dim;
+    const unsigned int n_properties = particles.layout.size();
+    particles.update_handler(grid); // walked cell by cell below
     std::vector<ParticleIterator<dim>> removed;
     for (const GridCell<dim> &c : grid.cells)
       {

@@ -84,7 +84,7 @@ namespace dealmpm
   Simulation<dim>::statistics() const
   {
     Statistics s =
-      compute_statistics(*particles, materials, effects, loop.time, comm);
+      compute_statistics(grid, *particles, materials, effects, loop.time, comm);
     if (!regions.empty())
       add_region_totals(regions.totals(comm), s);
     return s;
@@ -190,11 +190,10 @@ namespace dealmpm
   void
   Simulation<dim>::relocate_particles()
   {
-    const double held = hold_particles_at_walls(*particles,
-                                                *grid.mapping,
-                                                boundary_conditions.walls());
+    const double held =
+      hold_particles_at_walls(grid, *particles, boundary_conditions.walls());
     lost_this_step.clear();
-    particles->sort();
+    particles->relocate(grid);
     const double local[2] = {held, double(lost_this_step.size())};
     double       counts[2];
     Utilities::MPI::sum(ArrayView<const double>(local, 2),

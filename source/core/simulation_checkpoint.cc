@@ -22,8 +22,9 @@ namespace dealmpm
     TimerOutput::Scope        t(*computing_timer, "checkpoint");
     const CheckpointSettings &s = run_settings.checkpoint;
     const std::string folder = start_checkpoint(s.directory, loop.step, comm);
-    // The particles travel with their cells (sorted into them after every
-    // step), all their properties included.
+    // The particles travel with their cells (deal.II's lists brought up
+    // to the step's order), all their properties included.
+    particles->update_handler(grid);
     particles->handler.prepare_for_serialization();
     grid.triangulation.save(folder + "/grid");
     save_fem_regions(regions, folder, comm);

@@ -57,6 +57,7 @@ namespace dealmpm
   Simulation<dim>::change_grid_to_criteria()
   {
     bool changed = false;
+    particles->update_handler(grid); // the criteria count each cell's particles
     {
       const auto t = timed(computing_timer.get(), "adaptivity: criteria");
       const std::vector<int> levels =
@@ -97,6 +98,9 @@ namespace dealmpm
       throw RunError(step_and_time(loop.step, loop.time) +
                      ": the grid cannot change under 'MPM/Formulation = total "
                      "Lagrangian': its stencil belongs to the reference grid");
+    // The flags may be set from the particles in each cell, and deal.II
+    // moves the particles with their cells.
+    particles->update_handler(grid);
     set_flags(grid.triangulation);
     grid.triangulation.prepare_coarsening_and_refinement();
     particles->handler.prepare_for_coarsening_and_refinement();
@@ -119,6 +123,7 @@ namespace dealmpm
                      ": the grid cannot be repartitioned under 'MPM/"
                      "Formulation = total Lagrangian' once its reference "
                      "stencil is made");
+    particles->update_handler(grid);
     particles->handler.prepare_for_coarsening_and_refinement();
     grid.triangulation.repartition();
     particles->handler.unpack_after_coarsening_and_refinement();

@@ -160,6 +160,7 @@ namespace dealmpm
   template <int dim>
   Statistics
   compute_statistics(
+    const BackgroundGrid<dim>                         &grid,
     const ParticleSet<dim>                            &particles,
     const std::vector<std::unique_ptr<Material<dim>>> &materials,
     const std::vector<std::unique_ptr<Effect<dim>>>   &effects,
@@ -169,10 +170,13 @@ namespace dealmpm
     const Effect<dim> *exact = exact_solution_effect(effects);
     Sums               sums{};
     add_removed(effects, sums);
-    const bool dissipates = some_material_dissipates(materials);
-    ErrorSums  error;
-    for (const auto &p : particles.handler)
+    const bool                dissipates = some_material_dissipates(materials);
+    ErrorSums                 error;
+    const ParticleOrder<dim> &order = particles.order_over(grid);
+    auto                     &pool  = particles.handler.get_property_pool();
+    for (const auto handle : order.handles)
       {
+        const PooledParticle<dim, true> p(pool, handle);
         add_particle(p, particles, materials, effects, dissipates, sums);
         if (exact != nullptr)
           error.add(p, particles.fields, *exact, time);
@@ -244,6 +248,7 @@ namespace dealmpm
     const std::vector<std::unique_ptr<Effect<dim>>> &,   \
     const std::vector<Tensor<1, dim>> &);                \
   template Statistics compute_statistics(                \
+    const BackgroundGrid<dim> &,                         \
     const ParticleSet<dim> &,                            \
     const std::vector<std::unique_ptr<Material<dim>>> &, \
     const std::vector<std::unique_ptr<Effect<dim>>> &,   \

@@ -1,6 +1,9 @@
 #include <deal.II/base/mpi.h>
 
 #include <dealmpm/effects/damage.h>
+#include <dealmpm/transfer/stencil_order.h>
+
+#include <algorithm>
 
 namespace dealmpm
 {
@@ -65,16 +68,18 @@ namespace dealmpm
     if (!Utilities::MPI::logical_or(newly_failed > 0, state.grid.comm))
       return;
     const CoreFields &f = particles.fields;
-    std::vector<typename Particles::ParticleHandler<dim>::particle_iterator>
-      failed;
-    for (auto p = particles.handler.begin(); p != particles.handler.end(); ++p)
-      {
-        const auto         props = p->get_properties();
+    // Summed in the step's order (not deal.II's lists'), removed by id.
+    std::vector<types::particle_index> failed_ids;
+    for_each_particle_in_stencil_order(
+      state.grid,
+      particles,
+      [&](const std::size_t, const auto &p, const GridCell<dim> &) {
+        const auto         props = p.get_properties();
         const unsigned int m     = static_cast<unsigned int>(props[f.material]);
         const DamagedMaterial<dim> *material = damaged[m];
         if (material == nullptr ||
             props[particles.internal_offset[m] + material->damage_index()] < 1.)
-          continue;
+          return;
         const double                  mass = props[f.mass];
         const Tensor<1, dim>          v = read_vector<dim>(&props[f.velocity]);
         const ArrayView<const double> internal(
@@ -84,13 +89,19 @@ namespace dealmpm
         // Its strain energy is (1 - D) = 0 times the model's.
         eroded[eroded_energy] +=
           0.5 * mass * v.norm_square() +
-          state.potential_energy(mass, p->get_location()) +
+          state.potential_energy(mass, p.get_location()) +
           props[f.initial_volume] *
             material->dissipated_energy_density(internal);
         for (unsigned int d = 0; d < dim; ++d)
           eroded[eroded_momentum + d] += mass * v[d];
+        failed_ids.push_back(p.get_id());
+      });
+    std::sort(failed_ids.begin(), failed_ids.end());
+    std::vector<typename Particles::ParticleHandler<dim>::particle_iterator>
+      failed;
+    for (auto p = particles.handler.begin(); p != particles.handler.end(); ++p)
+      if (std::binary_search(failed_ids.begin(), failed_ids.end(), p->get_id()))
         failed.push_back(p);
-      }
     particles.handler.remove_particles(failed);
     particles.changed();
   }

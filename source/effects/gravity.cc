@@ -1,4 +1,5 @@
 #include <dealmpm/effects/gravity.h>
+#include <dealmpm/transfer/stencil_order.h>
 
 #include <algorithm>
 
@@ -42,13 +43,15 @@ namespace dealmpm
             // sum_p m_p x_p at mid-step, x_p + dt / 2 v_p.
             const CoreFields &f = state.particles.fields;
             Tensor<1, dim>    moment;
-            for (const auto &p : state.particles.handler)
-              {
+            for_each_particle_in_stencil_order(
+              state.grid,
+              state.particles,
+              [&](const std::size_t, const auto &p, const GridCell<dim> &) {
                 const auto props = p.get_properties();
                 moment += props[f.mass] *
                           (Tensor<1, dim>(p.get_location()) +
                            0.5 * dt * read_vector<dim>(&props[f.velocity]));
-              }
+              });
             work -= (factor(t + dt) - factor(t)) * (g * moment);
           }
         factor_now = factor(t + dt);

@@ -42,43 +42,47 @@ namespace dealmpm
 
   template <int dim>
   unsigned int
-  hold_particles_at_walls(ParticleSet<dim>                   &particles,
-                          const Mapping<dim>                 &mapping,
+  hold_particles_at_walls(const BackgroundGrid<dim>          &grid,
+                          ParticleSet<dim>                   &particles,
                           const std::set<types::boundary_id> &walls)
   {
     if (walls.empty())
       return 0;
-    const CoreFields &f     = particles.fields;
-    unsigned int      moved = 0;
-    for (auto &p : particles.handler)
-      {
-        Point<dim> xi = p.get_reference_location();
-        if (GeometryInfo<dim>::is_inside_unit_cell(xi, beyond))
-          continue;
-        const auto cell    = p.get_surrounding_cell();
-        const auto normals = clamp_to_walls(xi, cell, walls);
-        if (normals.empty())
-          continue;
-        const Point<dim> x = mapping.transform_unit_to_real_cell(cell, xi);
-        const ArrayView<double> props = p.get_properties();
-        write_vector<dim>(&props[f.displacement],
-                          read_vector<dim>(&props[f.displacement]) +
-                            (x - p.get_location()));
-        Tensor<1, dim> v = read_vector<dim>(&props[f.velocity]);
-        for (const Tensor<1, dim> &n : normals)
-          v -= std::max(0., v * n) * n;
-        write_vector<dim>(&props[f.velocity], v);
-        p.set_location(x);
-        p.set_reference_location(xi);
-        ++moved;
-      }
+    const CoreFields         &f     = particles.fields;
+    const ParticleOrder<dim> &order = particles.order_over(grid);
+    auto                     &pool  = particles.handler.get_property_pool();
+    unsigned int              moved = 0;
+    for (std::size_t i = 0; i < grid.cells.size(); ++i)
+      for (unsigned int k = order.cell_begin[i]; k < order.cell_begin[i + 1];
+           ++k)
+        {
+          const PooledParticle<dim, false> p(pool, order.handles[k]);
+          Point<dim>                       xi = p.get_reference_location();
+          if (GeometryInfo<dim>::is_inside_unit_cell(xi, beyond))
+            continue;
+          const auto normals = clamp_to_walls(xi, grid.cells[i].cell, walls);
+          if (normals.empty())
+            continue;
+          const Point<dim>        x     = grid.cells[i].real_point(xi);
+          const ArrayView<double> props = p.get_properties();
+          write_vector<dim>(&props[f.displacement],
+                            read_vector<dim>(&props[f.displacement]) +
+                              (x - p.get_location()));
+          Tensor<1, dim> v = read_vector<dim>(&props[f.velocity]);
+          for (const Tensor<1, dim> &n : normals)
+            v -= std::max(0., v * n) * n;
+          write_vector<dim>(&props[f.velocity], v);
+          p.set_location(x);
+          p.set_reference_location(xi);
+          ++moved;
+        }
     return moved;
   }
 
 #define DEALMPM_INSTANTIATE(dim)                 \
   template unsigned int hold_particles_at_walls( \
+    const BackgroundGrid<dim> &,                 \
     ParticleSet<dim> &,                          \
-    const Mapping<dim> &,                        \
     const std::set<types::boundary_id> &);
   DEALMPM_INSTANTIATE(2)
   DEALMPM_INSTANTIATE(3)

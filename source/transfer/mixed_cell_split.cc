@@ -1,4 +1,5 @@
 #include <dealmpm/transfer/mixed_cell_split.h>
+#include <dealmpm/transfer/stencil_order.h>
 
 #include <algorithm>
 #include <cmath>
@@ -145,18 +146,16 @@ namespace dealmpm
       {
         members.clear();
         bool mixed = false;
-        for (const auto &p :
-             particles.handler.particles_in_cell(grid.cells[c].cell))
-          {
-            const ArrayView<const double> props = p.get_properties();
-            const unsigned int m = static_cast<unsigned int>(props[f.material]);
-            const double       volume =
-              props[f.initial_volume] *
-              determinant(read_tensor<dim>(&props[f.deformation_gradient]));
-            mixed = mixed || (!members.empty() &&
-                              modulus[m] != modulus[members.front().material]);
-            members.push_back({k++, m, volume, p.get_location(), props.data()});
-          }
+        for_each_particle_in_cell(grid, particles, c, [&](const auto &p) {
+          const ArrayView<const double> props = p.get_properties();
+          const unsigned int m = static_cast<unsigned int>(props[f.material]);
+          const double       volume =
+            props[f.initial_volume] *
+            determinant(read_tensor<dim>(&props[f.deformation_gradient]));
+          mixed = mixed || (!members.empty() &&
+                            modulus[m] != modulus[members.front().material]);
+          members.push_back({k++, m, volume, p.get_location(), props.data()});
+        });
         if (!mixed)
           continue;
         const unsigned int before = corrections.size();

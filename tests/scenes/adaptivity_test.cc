@@ -188,7 +188,9 @@ TEST(Adaptivity, ParticlesCriterionRefinesTheMaterialAndItsBufferOnly)
           EXPECT_LE(handler.n_particles_in_cell(c.cell), 4u) << x;
         }
       if (x[0] > 0.55 || x[1] > 0.55)
-        EXPECT_EQ(c.cell->level(), 0) << x;
+        {
+          EXPECT_EQ(c.cell->level(), 0) << x;
+        }
     }
   // The block is filled again on the adapted grid: the particles of the
   // uniform grid two levels finer, the same mass.

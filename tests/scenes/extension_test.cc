@@ -3,6 +3,8 @@
 // a boundary condition. A scene that does not name them pays nothing.
 #include <deal.II/base/mpi.h>
 
+#include <dealmpm/transfer/stencil_order.h>
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -37,23 +39,22 @@ namespace
       const unsigned int    n_bodies  = 2;
       for (unsigned int b = 0; b < n_bodies; ++b)
         state.field_set.per_body("body mass", b, 0) = 0;
-      std::size_t k = 0;
-      for (const GridCell<2> &c : state.grid.cells)
-        for (const auto &p : particles.handler.particles_in_cell(c.cell))
-          {
-            const auto   props = p.get_properties();
-            NodalVector &mass =
-              state.field_set.per_body("body mass",
-                                       static_cast<unsigned int>(
-                                         props[particles.fields.body]),
-                                       0);
-            for (unsigned int e = state.stencil.begin[k];
-                 e < state.stencil.begin[k + 1];
-                 ++e)
-              mass.local_element(state.stencil.node[e]) +=
-                state.stencil.N[e] * props[particles.fields.mass];
-            ++k;
-          }
+      for_each_particle_in_stencil_order(
+        state.grid,
+        particles,
+        [&](const std::size_t k, const auto &p, const GridCell<2> &) {
+          const auto   props = p.get_properties();
+          NodalVector &mass =
+            state.field_set.per_body("body mass",
+                                     static_cast<unsigned int>(
+                                       props[particles.fields.body]),
+                                     0);
+          for (unsigned int e = state.stencil.begin[k];
+               e < state.stencil.begin[k + 1];
+               ++e)
+            mass.local_element(state.stencil.node[e]) +=
+              state.stencil.N[e] * props[particles.fields.mass];
+        });
       for (unsigned int b = 0; b < n_bodies; ++b)
         state.field_set.per_body("body mass", b, 0)
           .compress(VectorOperation::add);

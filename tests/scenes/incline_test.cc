@@ -318,7 +318,9 @@ TEST(Incline, BlockSlidesOnAnFemBaseAtTheCoulombRate)
       if (mu > 0 && h == 0.025)
         coarse = error;
       else if (mu > 0)
-        EXPECT_LT(error, 0.7 * coarse);
+        {
+          EXPECT_LT(error, 0.7 * coarse);
+        }
     }
   const Slide held = slide(
     block_on_fem_base(

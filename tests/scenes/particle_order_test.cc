@@ -4,13 +4,20 @@
 // grid's cell order, with the handler's own data: after the set-up, after
 // particles moved cells and were sorted, after a grid change with
 // particle splitting, and along a run whose particles cross cells.
+// ParticleSet::relocate (the step's own move of particles into neighbour
+// cells) leaves every particle where deal.II's sort would put it.
 // Runs on 1 rank and, through ctest, on 2.
+#include <deal.II/base/geometry_info.h>
+
 #include <dealmpm/adaptivity/split_particles.h>
 #include <dealmpm/transfer/stencil_order.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <map>
+#include <tuple>
 #include <utility>
 
 #include "test_scene.h"
@@ -20,7 +27,9 @@ using namespace dealmpm;
 namespace
 {
   /** Visit the particles in the step's order and compare each with what
-   * the handler says of it: its cell, location and first property. */
+   * the handler says of it: its location and first property, and its cell
+   * unless the handler's lists lag behind the order (relocate() moved
+   * particles since deal.II last sorted them). */
   template <int dim>
   void
   expect_order_matches_handler(const BackgroundGrid<dim> &grid,
@@ -32,6 +41,7 @@ namespace
       Point<dim>  x;
       double      mass;
     };
+    const bool                            lags = particles.handler_lags_order();
     std::map<types::particle_index, Seen> handler_view;
     for (std::size_t i = 0; i < grid.cells.size(); ++i)
       for (const auto &p :
@@ -52,7 +62,8 @@ namespace
         const std::size_t cell = index_in_grid(grid, c);
         const auto        it   = handler_view.find(p.get_id());
         ++visits[p.get_id()];
-        wrong += it == handler_view.end() || it->second.cell != cell ||
+        wrong += it == handler_view.end() ||
+                 (!lags && it->second.cell != cell) ||
                  it->second.x != p.get_location() ||
                  it->second.mass != p.get_properties()[particles.fields.mass] ||
                  cell < previous_cell;
@@ -63,6 +74,27 @@ namespace
     EXPECT_EQ(wrong, 0u);
     for (const auto &[id, count] : visits)
       ASSERT_EQ(count, 1u) << "particle " << id;
+  }
+
+  /** Every particle lies in the cell the step's order has it in: its
+   * reference location is in the unit cell (up to the 1e-12 by which the
+   * step lets a particle overstep a face before it relocates) and maps to
+   * its location. */
+  template <int dim>
+  void
+  expect_particles_in_their_cells(const BackgroundGrid<dim> &grid,
+                                  const ParticleSet<dim>    &particles)
+  {
+    unsigned int wrong = 0;
+    for_each_particle_in_stencil_order(
+      grid,
+      particles,
+      [&](const std::size_t, const auto &p, const GridCell<dim> &c) {
+        const Point<dim> xi = p.get_reference_location();
+        wrong += !GeometryInfo<dim>::is_inside_unit_cell(xi, 1e-12) ||
+                 c.real_point(xi).distance(p.get_location()) > 1e-12 * c.h;
+      });
+    EXPECT_EQ(wrong, 0u);
   }
 
   template <int dim>
@@ -108,6 +140,7 @@ namespace
       {
         simulation->advance(simulation->time_step());
         expect_order_matches_handler(grid, particles);
+        expect_particles_in_their_cells(grid, particles);
       }
 
     // A grid change (every cell refined) and the particles split into
@@ -132,4 +165,145 @@ TEST(ParticleOrder, FollowsSortsRunsAndGridChanges2D)
 TEST(ParticleOrder, FollowsSortsRunsAndGridChanges3D)
 {
   order_follows_the_particles<3>();
+}
+
+namespace
+{
+  /** Where each particle is: its cell's index, its reference location,
+   * location and mass. */
+  template <int dim>
+  using Places =
+    std::map<types::particle_index,
+             std::tuple<unsigned int, Point<dim>, Point<dim>, double>>;
+
+  /** From the step's order, or (@p from_handler) from deal.II's lists. */
+  template <int dim>
+  Places<dim>
+  places(const BackgroundGrid<dim> &grid,
+         const ParticleSet<dim>    &particles,
+         const bool                 from_handler)
+  {
+    Places<dim> result;
+    const auto  add = [&](const auto &p, const unsigned int cell) {
+      result[p.get_id()] = {cell,
+                            p.get_reference_location(),
+                            p.get_location(),
+                            p.get_properties()[particles.fields.mass]};
+    };
+    if (from_handler)
+      for (const auto &p : particles.handler)
+        add(p, p.get_surrounding_cell()->active_cell_index());
+    else
+      for_each_particle_in_stencil_order(grid,
+                                         particles,
+                                         [&](const std::size_t,
+                                             const auto          &p,
+                                             const GridCell<dim> &c) {
+                                           add(p, c.cell->active_cell_index());
+                                         });
+    return result;
+  }
+
+  /** The same particles in the same cells at the same reference locations
+   * (1e-12 of the unit cell: both invert the same affine map, in
+   * different order). */
+  template <int dim>
+  void
+  expect_same_places(const Places<dim> &a, const Places<dim> &b)
+  {
+    ASSERT_EQ(a.size(), b.size());
+    unsigned int differ = 0;
+    for (const auto &[id, place] : a)
+      {
+        const auto &other = b.at(id);
+        differ += std::get<0>(place) != std::get<0>(other) ||
+                  std::get<1>(place).distance(std::get<1>(other)) > 1e-12 ||
+                  std::get<2>(place) != std::get<2>(other) ||
+                  std::get<3>(place) != std::get<3>(other);
+      }
+    EXPECT_EQ(differ, 0u);
+  }
+
+  /** Move every particle by up to @p reach cell widths along each axis, in
+   * a direction that depends on its id: most change cell, to every side
+   * and across corners. */
+  template <int dim>
+  void
+  scatter(ParticleSet<dim> &particles, const double h, const double reach)
+  {
+    for (auto &p : particles.handler)
+      {
+        Point<dim> x = p.get_location();
+        for (unsigned int d = 0; d < dim; ++d)
+          x[d] += reach * h * std::sin(1.7 * p.get_id() + 2.3 * d + 0.4);
+        p.set_location(x);
+      }
+  }
+
+  /** Two identical scenes, their particles moved alike; one relocated by
+   * ParticleSet::relocate, the other by deal.II's sort: each particle must
+   * end in the same cell at the same reference location, in the step's
+   * order and, once update_handler() brought them up, in deal.II's lists. */
+  template <int dim>
+  void
+  relocation_matches_sort(const bool   refine_half,
+                          const double reach,
+                          const bool   expect_own)
+  {
+    SCOPED_TRACE(std::to_string(dim) + "D, reach " + std::to_string(reach) +
+                 (refine_half ? ", hanging nodes" : ""));
+    auto own = moving_block<dim>(), sorted = moving_block<dim>();
+    for (auto *s : {own.get(), sorted.get()})
+      {
+        if (refine_half)
+          s->change_grid([&](Triangulation<dim> &) {
+            for (const GridCell<dim> &c : s->background_grid().cells)
+              if (c.cell->center()[0] < 0.45)
+                c.cell->set_refine_flag();
+          });
+        double h = 1;
+        for (const GridCell<dim> &c : s->background_grid().cells)
+          h = std::min(h, c.h);
+        scatter(s->particle_set(),
+                Utilities::MPI::min(h, MPI_COMM_WORLD),
+                reach);
+      }
+    // The step's grid, which relocate() may give its neighbour tables (the
+    // Simulation owns it as non-const).
+    auto &grid = const_cast<BackgroundGrid<dim> &>(own->background_grid());
+    EXPECT_EQ(own->particle_set().relocate(grid), expect_own);
+    sorted->particle_set().sort();
+
+    ParticleSet<dim> &particles = own->particle_set();
+    EXPECT_EQ(particles.handler_lags_order(), expect_own);
+    expect_order_matches_handler(grid, particles);
+    expect_particles_in_their_cells(grid, particles);
+    const Places<dim> truth =
+      places(sorted->background_grid(), sorted->particle_set(), true);
+    expect_same_places(places(grid, particles, false), truth);
+
+    particles.update_handler(grid);
+    EXPECT_FALSE(particles.handler_lags_order());
+    expect_same_places(places(grid, particles, true), truth);
+    expect_order_matches_handler(grid, particles);
+  }
+} // namespace
+
+// Up to 0.9 cell widths: every particle stays within its old cell's
+// neighbours, the step moves them itself (on 2 ranks those that cross into
+// the other rank's cells make every rank sort with deal.II).
+TEST(Relocation, MatchesDealiiSortIntoNeighbours)
+{
+  const bool one_rank = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1;
+  relocation_matches_sort<2>(false, 0.9, one_rank);
+  relocation_matches_sort<3>(false, 0.9, one_rank);
+  relocation_matches_sort<2>(true, 0.9, one_rank);
+  relocation_matches_sort<3>(true, 0.9, one_rank);
+}
+
+// Up to 2.5 cell widths: some go past the neighbours, and deal.II sorts.
+TEST(Relocation, LeavesFarMovesToDealiiSort)
+{
+  relocation_matches_sort<2>(false, 2.5, false);
+  relocation_matches_sort<3>(true, 2.5, false);
 }

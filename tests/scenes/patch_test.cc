@@ -22,6 +22,8 @@
 //   left and D from the one it entered, and with multilinear weights D
 //   vanishes at cell faces, so C jumps by the ratio of the two distances
 //   to the face as a particle crosses (every scheme; README "Limits").
+#include <dealmpm/transfer/stencil_order.h>
+
 #include <gtest/gtest.h>
 
 #include <sstream>
@@ -94,24 +96,23 @@ namespace
     simulation.get_kernel().compute_stencil(simulation.background_grid(),
                                             particles,
                                             stencil);
-    std::size_t k = 0;
-    for (const auto &c : simulation.background_grid().cells)
-      for (auto &p : particles.handler.particles_in_cell(c.cell))
-        {
-          Tensor<2, dim> D;
-          for (unsigned int e = stencil.begin[k]; e < stencil.begin[k + 1]; ++e)
-            {
-              const Tensor<1, dim> r =
-                simulation.background_grid().node_positions[stencil.node[e]] -
-                p.get_location();
-              D += stencil.N[e] * outer_product(r, r);
-            }
-          auto props = p.get_properties();
-          write_vector<dim>(&props[particles.fields.velocity],
-                            W * (p.get_location() - centre));
-          write_tensor<dim>(&props[particles.fields.affine_velocity], W * D);
-          ++k;
-        }
+    for_each_particle_in_stencil_order(
+      simulation.background_grid(),
+      particles,
+      [&](const std::size_t k, const auto &p, const GridCell<dim> &) {
+        Tensor<2, dim> D;
+        for (unsigned int e = stencil.begin[k]; e < stencil.begin[k + 1]; ++e)
+          {
+            const Tensor<1, dim> r =
+              simulation.background_grid().node_positions[stencil.node[e]] -
+              p.get_location();
+            D += stencil.N[e] * outer_product(r, r);
+          }
+        auto props = p.get_properties();
+        write_vector<dim>(&props[particles.fields.velocity],
+                          W * (p.get_location() - centre));
+        write_tensor<dim>(&props[particles.fields.affine_velocity], W * D);
+      });
   }
 
   /** The largest |F - I| (translation) or |F^T F - I| (rotation) of any

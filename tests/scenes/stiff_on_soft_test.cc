@@ -9,6 +9,8 @@
 // into the cells below the interface; 2 % of rho g H allows for the
 // stress's own change across a cell (rho g h = 5 %, between the
 // materials' centroids less than half of it).
+#include <dealmpm/transfer/stencil_order.h>
+
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -40,19 +42,19 @@ TEST(StiffOnSoft, SharedCellsCarryOneNormalStress)
   std::map<unsigned int, std::array<std::array<double, 2>, 2>> cells;
   unsigned int                                                 n_shared = 0;
   double                                                       worst    = 0;
-  for (const auto &c : simulation->background_grid().cells)
+  const BackgroundGrid<2> &grid = simulation->background_grid();
+  for (std::size_t i = 0; i < grid.cells.size(); ++i)
     {
       std::array<std::array<double, 2>, 2> sums{};
-      for (const auto &p : particles.handler.particles_in_cell(c.cell))
-        {
-          const auto   props = p.get_properties();
-          const auto   m     = static_cast<unsigned int>(props[f.material]);
-          const double volume =
-            props[f.initial_volume] *
-            determinant(read_tensor<2>(&props[f.deformation_gradient]));
-          sums[m][0] += volume;
-          sums[m][1] += volume * props[f.stress + 1];
-        }
+      for_each_particle_in_cell(grid, particles, i, [&](const auto &p) {
+        const auto   props = p.get_properties();
+        const auto   m     = static_cast<unsigned int>(props[f.material]);
+        const double volume =
+          props[f.initial_volume] *
+          determinant(read_tensor<2>(&props[f.deformation_gradient]));
+        sums[m][0] += volume;
+        sums[m][1] += volume * props[f.stress + 1];
+      });
       if (sums[0][0] > 0 && sums[1][0] > 0)
         {
           ++n_shared;

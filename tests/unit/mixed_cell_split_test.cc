@@ -154,8 +154,12 @@ TEST(MixedCellSplit, DividesTheNormalRateByStiffnessAndKeepsTheVolumeChange)
                 1e-9 * M[1] * std::abs(compression[1][1]));
   // The soft half takes nearly all of it: 2 L_yy over its half volume.
   for (unsigned int p = 0; p < r.L.size(); ++p)
-    if (r.material[p] == 0)
-      EXPECT_NEAR(r.L[p][1][1], 2 * compression[1][1], 1e-3);
+    {
+      if (r.material[p] == 0)
+        {
+          EXPECT_NEAR(r.L[p][1][1], 2 * compression[1][1], 1e-3);
+        }
+    }
 }
 
 TEST(MixedCellSplit, EqualisesTheStressesTheLayersBring)

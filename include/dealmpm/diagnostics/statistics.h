@@ -95,9 +95,13 @@ namespace dealmpm
     const std::vector<std::unique_ptr<Effect<dim>>>   &effects,
     const std::vector<Tensor<1, dim>>                 &initial_velocity);
 
+  /** The totals over this run's particles, summed in the step's order of
+   * each rank's particles over @p grid (so that they do not depend on how
+   * deal.II's lists hold them). */
   template <int dim>
   Statistics
   compute_statistics(
+    const BackgroundGrid<dim>                         &grid,
     const ParticleSet<dim>                            &particles,
     const std::vector<std::unique_ptr<Material<dim>>> &materials,
     const std::vector<std::unique_ptr<Effect<dim>>>   &effects,

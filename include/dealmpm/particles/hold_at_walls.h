@@ -1,7 +1,6 @@
 #pragma once
 
 #include <deal.II/base/types.h>
-#include <deal.II/fe/mapping.h>
 
 #include <dealmpm/particles/particle_set.h>
 
@@ -20,13 +19,14 @@ namespace dealmpm
    * velocity at the wall that is not the wall node's, so a particle next to
    * a wall can step through it and would leave the grid; linear shape
    * functions slow it to the wall's velocity on the way. Call before the
-   * particles are sorted into cells (the old cell is still theirs).
+   * particles are relocated into cells (the old cell of the step's order
+   * is still theirs).
    *
    * @return the number of particles put back on this rank.
    */
   template <int dim>
   unsigned int
-  hold_particles_at_walls(ParticleSet<dim>                   &particles,
-                          const Mapping<dim>                 &mapping,
+  hold_particles_at_walls(const BackgroundGrid<dim>          &grid,
+                          ParticleSet<dim>                   &particles,
                           const std::set<types::boundary_id> &walls);
 } // namespace dealmpm

@@ -7,8 +7,10 @@
 
 #include <dealmpm/grid/background_grid.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace dealmpm
@@ -83,8 +85,37 @@ namespace dealmpm
   };
 
   /**
+   * Put the handles of one cell's particles (@p first to @p last) in the
+   * order of the particles' ids. The order the step visits particles in
+   * decides the order of its sums, so it must not depend on how they got
+   * into their cells (deal.II's sort, a restore, ParticleSet::relocate()):
+   * a checkpoint, which sorts with deal.II, would otherwise change the
+   * last digits of the run it saves, and a resumed run would not repeat
+   * an uninterrupted one bit for bit.
+   */
+  template <int dim, typename Iterator>
+  void
+  order_by_id(const Particles::PropertyPool<dim> &pool,
+              const Iterator                      first,
+              const Iterator                      last)
+  {
+    const auto by_id = [&pool](const auto a, const auto b) {
+      return pool.get_id(a) < pool.get_id(b);
+    };
+    if (last - first > 32)
+      {
+        std::sort(first, last, by_id);
+        return;
+      }
+    // Insertion sort: a cell's few particles, mostly in order already.
+    for (Iterator i = first; i != last; ++i)
+      for (Iterator j = i; j != first && by_id(*j, *(j - 1)); --j)
+        std::iter_swap(j, j - 1);
+  }
+
+  /**
    * This rank's particles in the order the step visits them (grid.cells,
-   * then the particles of each cell), as handles into deal.II's property
+   * then the particles of each cell by id), as handles into deal.II's property
    * pool. Built once after the particles changed (a sort, an insertion or
    * removal, a grid change, a restore) instead of asking the handler for
    * each cell's particles in each sweep: particles_in_cell() costs about
@@ -110,6 +141,9 @@ namespace dealmpm
           cell_begin[i] = handles.size();
           for (const auto &p : handler.particles_in_cell(grid.cells[i].cell))
             handles.push_back(static_cast<Handle>(p.get_local_index()));
+          order_by_id(handler.get_property_pool(),
+                      handles.begin() + cell_begin[i],
+                      handles.end());
         }
       cell_begin.back() = handles.size();
       built_for         = &grid;
@@ -130,6 +164,18 @@ namespace dealmpm
     invalidate()
     {
       valid = false;
+    }
+
+    /** Take @p grouped_handles, grouped by cell as handles is, with
+     * @p grouped_begin as cell_begin, as the order over the same grid:
+     * after particles moved between its cells without deal.II's sort. */
+    void
+    adopt(std::vector<Handle>       &&grouped_handles,
+          std::vector<unsigned int> &&grouped_begin)
+    {
+      handles    = std::move(grouped_handles);
+      cell_begin = std::move(grouped_begin);
+      valid      = true;
     }
 
     /** The particles of grid.cells[i] are handles[cell_begin[i]] to

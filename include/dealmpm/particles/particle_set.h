@@ -65,26 +65,83 @@ namespace dealmpm
     PropertyLayout layout;
     CoreFields     fields;
     /** Offset of each material's internal variables (per material index). */
-    std::vector<unsigned int>       internal_offset;
-    std::vector<unsigned int>       n_internal;
+    std::vector<unsigned int> internal_offset;
+    std::vector<unsigned int> n_internal;
+    /**
+     * deal.II's particles: locations, ids and properties (always
+     * current), reference locations (in the cell of the step's order),
+     * ranks, and the lists of each cell's
+     * particles. Those lists may lag behind the step, which moves
+     * particles between this rank's cells in its own order (relocate());
+     * walk a cell's particles with for_each_particle_in_cell(), or call
+     * update_handler() before asking the handler for them.
+     */
     Particles::ParticleHandler<dim> handler;
 
     /** Sort the particles into their ranks and cells (deal.II's sort);
-     * the step's order is rebuilt on its next use. */
+     * the step's order is rebuilt on its next use, and with it each
+     * particle's reference location, by the same map the step uses (so
+     * that a sort for a checkpoint leaves no trace in the last digits).
+     * Collective. */
     void
     sort()
     {
       handler.sort_particles_into_subdomains_and_cells();
-      changed();
+      handler_lags        = false;
+      reference_from_sort = true;
+      order.invalidate();
+    }
+
+    /**
+     * Put every particle the step moved out of its cell into the cell that
+     * holds it now, after the step and before the next. When each such
+     * particle is in a locally owned cell sharing a vertex with its old
+     * one, only the step's order changes: a counting sort of handles by
+     * cell (4 B a particle), with the moved particles' reference locations
+     * set; their data stay where they are, and deal.II's per-cell lists
+     * lag until update_handler(). This replaces deal.II's sort, which
+     * locates every particle again, copies the whole property pool and
+     * cost more than a 2D step. When a particle on any rank went further
+     * (another rank's cells, out of the grid, past the neighbours), every
+     * rank sorts with deal.II instead, which also reports lost particles.
+     * Collective. Returns whether the particles were moved here (false:
+     * deal.II sorted them).
+     */
+    bool
+    relocate(BackgroundGrid<dim> &grid);
+
+    /** Bring deal.II's per-cell lists up to the step's order over
+     * @p grid (deal.II's sort, and the order rebuilt from it) if
+     * relocate() moved particles since the last sort: before a grid
+     * change, a repartition, a checkpoint, or code that asks the handler
+     * for a cell's particles. Collective. */
+    void
+    update_handler(const BackgroundGrid<dim> &grid)
+    {
+      if (!handler_lags)
+        return;
+      sort();
+      order_over(grid);
+    }
+
+    /** Whether deal.II's per-cell lists lag behind the step's order. */
+    bool
+    handler_lags_order() const
+    {
+      return handler_lags;
     }
 
     /** Say that the handler's particles or their cells changed other than
      * through sort(): an insertion or removal, a grid change, a restore.
      * Every such change must say so, or the step would visit handles that
-     * are no longer these particles'. */
+     * are no longer these particles'. Collective when the handler's lists
+     * lag (they are brought up to date first, as the order is rebuilt
+     * from them). */
     void
     changed()
     {
+      if (handler_lags)
+        sort();
       order.invalidate();
     }
 
@@ -94,12 +151,37 @@ namespace dealmpm
     order_over(const BackgroundGrid<dim> &grid) const
     {
       if (!order.is_valid_for(grid))
-        order.rebuild(grid, handler);
+        {
+          // Rebuilt from deal.II's lists, which must not lag: whoever
+          // changes the grid calls update_handler() first.
+          AssertThrow(!handler_lags, ExcInternalError());
+          order.rebuild(grid, handler);
+          if (reference_from_sort)
+            set_reference_locations(grid);
+        }
       return order;
     }
 
   private:
+    /** Each particle's reference location in its cell of the order, by
+     * GridCell::reference_point (deal.II's sort computes it by the
+     * mapping, which may differ in the last digit). */
+    void
+    set_reference_locations(const BackgroundGrid<dim> &grid) const
+    {
+      auto &pool = handler.get_property_pool();
+      for (std::size_t i = 0; i < grid.cells.size(); ++i)
+        for (unsigned int k = order.cell_begin[i]; k < order.cell_begin[i + 1];
+             ++k)
+          pool.set_reference_location(order.handles[k],
+                                      grid.cells[i].reference_point(
+                                        pool.get_location(order.handles[k])));
+      reference_from_sort = false;
+    }
+
     mutable ParticleOrder<dim> order;
+    bool                       handler_lags        = false;
+    mutable bool               reference_from_sort = false;
   };
 
   /** Read and write small tensors from a particle's property array. */

@@ -1,0 +1,159 @@
+// ParticleSet::relocate: the particles that left their cells during a step
+// are moved into their new cells in the step's order, instead of by
+// deal.II's sort of the whole pool (see doc/lean-step.md).
+#include <deal.II/base/geometry_info.h>
+#include <deal.II/base/mpi.h>
+
+#include <dealmpm/particles/particle_set.h>
+
+#include <functional>
+#include <numeric>
+
+namespace dealmpm
+{
+  namespace
+  {
+    constexpr unsigned int none = numbers::invalid_unsigned_int;
+
+    /** A particle that left its cell: its position in the step's order,
+     * the index in grid.cells of the cell that holds it now, and its
+     * unit-cell coordinates there. */
+    template <int dim>
+    struct Move
+    {
+      unsigned int position;
+      unsigned int to_cell;
+      Point<dim>   xi;
+    };
+
+    /** The index in grid.cells of a locally owned cell that shares a vertex
+     * with grid.cells[i] and holds @p x (its unit-cell coordinates go to
+     * @p xi), or none: then @p x lies in another rank's cell, beyond the
+     * neighbours or outside the grid. On grids of boxes the neighbour on
+     * the side the particle left by (@p xi_old) is tried first. */
+    template <int dim>
+    unsigned int
+    owned_neighbor_holding(const BackgroundGrid<dim> &grid,
+                           const unsigned int         i,
+                           const Point<dim>          &x,
+                           const Point<dim>          &xi_old,
+                           Point<dim>                &xi)
+    {
+      const std::less<const GridCell<dim> *> before;
+      const GridCell<dim> *const             begin = grid.cells.data();
+      const GridCell<dim> *const             end   = begin + grid.cells.size();
+      const auto holds = [&](const GridCell<dim> *c) {
+        if (c == nullptr || c == &grid.cells[i] || before(c, begin) ||
+            !before(c, end))
+          return false;
+        xi = c->reference_point(x);
+        return GeometryInfo<dim>::is_inside_unit_cell(xi);
+      };
+      if (!grid.neighbor_by_side.empty())
+        {
+          unsigned int side = 0;
+          for (unsigned int d = 0, stride = 1; d < dim; ++d, stride *= 3)
+            side += stride * (xi_old[d] < 0 ? 0 : (xi_old[d] > 1 ? 2 : 1));
+          const GridCell<dim> *guess = grid.neighbor_by_side[i][side];
+          if (holds(guess))
+            return guess - begin;
+        }
+      for (const GridCell<dim> *c : grid.neighbors[i])
+        if (holds(c))
+          return c - begin;
+      return none;
+    }
+
+    /** Check every particle against its cell: one still inside gets its
+     * unit-cell coordinates (as deal.II's sort sets them), one outside a
+     * Move and its new cell in @p cell_of. False when some particle needs
+     * deal.II's sort. */
+    template <int dim>
+    bool
+    find_moves(const BackgroundGrid<dim>    &grid,
+               const ParticleOrder<dim>     &order,
+               Particles::PropertyPool<dim> &pool,
+               std::vector<unsigned int>    &cell_of,
+               std::vector<Move<dim>>       &moves)
+    {
+      for (unsigned int i = 0; i < grid.cells.size(); ++i)
+        for (unsigned int k = order.cell_begin[i]; k < order.cell_begin[i + 1];
+             ++k)
+          {
+            const auto        handle = order.handles[k];
+            const Point<dim> &x      = pool.get_location(handle);
+            const Point<dim>  xi     = grid.cells[i].reference_point(x);
+            cell_of[k]               = i;
+            if (GeometryInfo<dim>::is_inside_unit_cell(xi))
+              {
+                pool.set_reference_location(handle, xi);
+                continue;
+              }
+            Move<dim> move{k, none, {}};
+            move.to_cell = owned_neighbor_holding(grid, i, x, xi, move.xi);
+            if (move.to_cell == none)
+              return false;
+            cell_of[k] = move.to_cell;
+            moves.push_back(move);
+          }
+      return true;
+    }
+
+    /** The step's order after the moves: @p handles regrouped by
+     * @p cell_of (a counting sort), each cell's by id. */
+    template <int dim>
+    void
+    regroup(ParticleOrder<dim>                 &order,
+            const Particles::PropertyPool<dim> &pool,
+            const std::vector<unsigned int>    &cell_of,
+            const std::vector<unsigned int>    &handles,
+            const std::size_t                   n_cells)
+    {
+      std::vector<unsigned int> begin(n_cells + 1, 0);
+      for (const unsigned int c : cell_of)
+        ++begin[c + 1];
+      std::partial_sum(begin.begin(), begin.end(), begin.begin());
+      std::vector<unsigned int> next(begin.begin(), begin.end() - 1);
+      std::vector<typename ParticleOrder<dim>::Handle> grouped(handles.size());
+      for (std::size_t k = 0; k < handles.size(); ++k)
+        grouped[next[cell_of[k]]++] = handles[k];
+      for (std::size_t i = 0; i < n_cells; ++i)
+        order_by_id(pool,
+                    grouped.begin() + begin[i],
+                    grouped.begin() + begin[i + 1]);
+      order.adopt(std::move(grouped), std::move(begin));
+    }
+  } // namespace
+
+  template <int dim>
+  bool
+  ParticleSet<dim>::relocate(BackgroundGrid<dim> &grid)
+  {
+    grid.find_neighbors();
+    const ParticleOrder<dim> &now = order_over(grid);
+    std::vector<unsigned int> cell_of(now.handles.size());
+    std::vector<Move<dim>>    moves;
+    auto                     &pool = handler.get_property_pool();
+    // 0: no particle moved, 1: moved here, 2: deal.II must sort.
+    const int here =
+      find_moves(grid, now, pool, cell_of, moves) ? (moves.empty() ? 0 : 1) : 2;
+    const int everywhere = Utilities::MPI::max(here, grid.comm);
+    if (everywhere == 2)
+      {
+        sort();
+        return false;
+      }
+    handler_lags = handler_lags || everywhere == 1;
+    if (here == 0)
+      return true;
+    for (const Move<dim> &move : moves)
+      pool.set_reference_location(now.handles[move.position], move.xi);
+    regroup(order, pool, cell_of, now.handles, grid.cells.size());
+    return true;
+  }
+
+  template bool
+  ParticleSet<2>::relocate(BackgroundGrid<2> &);
+  template bool
+  ParticleSet<3>::relocate(BackgroundGrid<3> &);
+} // namespace dealmpm
