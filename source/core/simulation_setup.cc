@@ -30,6 +30,24 @@
 // calls these, and the step, are in simulation.cc.
 namespace dealmpm
 {
+  namespace
+  {
+    /** Whether @p handler's particles are still at @p before (their
+     * locations in the handler's order), compared in place. */
+    template <int dim>
+    bool
+    at(const Particles::ParticleHandler<dim> &handler,
+       const std::vector<Point<dim>>         &before)
+    {
+      if (before.size() != handler.n_locally_owned_particles())
+        return false;
+      auto x = before.begin();
+      for (const auto &p : handler)
+        if (p.get_location() != *x++)
+          return false;
+      return true;
+    }
+  } // namespace
 
   template <int dim>
   void
@@ -285,9 +303,10 @@ namespace dealmpm
         // Total Lagrangian keeps each particle in the cell of its reference
         // position, where an effect's initial state may have moved it.
         // Sort only if an effect moved a particle: a sort copies the whole
-        // particle pool, which was the set-up's peak memory.
+        // particle pool, which was the set-up's peak memory (and so was a
+        // second copy of the locations to compare with).
         if (!run_settings.method.total_lagrangian() &&
-            Utilities::MPI::logical_or(particle_locations() != before, comm))
+            Utilities::MPI::logical_or(!at(particles->handler, before), comm))
           particles->sort();
       }
     start_geostatic_bodies(reader,
