@@ -160,16 +160,15 @@ namespace dealmpm
       return sub;
     }
 
-    /** The particles of cell @p c grouped by (sub-cell, body, material):
-     * the parts of one split particle share a group. */
+    /** The particles of cell @p c grouped by (sub-cell, body; a body has
+     * one material): the parts of one split particle share a group. */
     template <int dim>
-    std::map<std::array<unsigned int, 3>, std::vector<ParticleIterator<dim>>>
+    std::map<std::array<unsigned int, 2>, std::vector<ParticleIterator<dim>>>
     groups_in_cell(const GridCell<dim> &c,
                    ParticleSet<dim>    &particles,
                    const unsigned int   n)
     {
-      const CoreFields &f = particles.fields;
-      std::map<std::array<unsigned int, 3>, std::vector<ParticleIterator<dim>>>
+      std::map<std::array<unsigned int, 2>, std::vector<ParticleIterator<dim>>>
            groups;
       auto range = particles.handler.particles_in_cell(c.cell);
       for (auto p = range.begin(); p != range.end(); ++p)
@@ -177,10 +176,7 @@ namespace dealmpm
           const unsigned int sub =
             sub_cell(c.reference_point(p->get_location()), n);
           const auto props = p->get_properties();
-          groups[{{sub,
-                   static_cast<unsigned int>(props[f.body]),
-                   static_cast<unsigned int>(props[f.material])}}]
-            .push_back(p);
+          groups[{{sub, particles.body_of(props)}}].push_back(p);
         }
       return groups;
     }

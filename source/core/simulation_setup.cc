@@ -32,19 +32,21 @@ namespace dealmpm
 {
   namespace
   {
-    /** Whether @p handler's particles are still at @p before (their
-     * locations in the handler's order), compared in place. */
+    /** Whether every particle is still where it was made: at the point of
+     * its listed cell that its reference location maps to (the set-up
+     * makes each particle's location from its reference location by
+     * GridCell::real_point, so an untouched particle matches bit for bit).
+     * A false answer (a particle an effect moved, or one made otherwise)
+     * costs a sort. No copy of the locations is needed to compare. */
     template <int dim>
     bool
-    at(const Particles::ParticleHandler<dim> &handler,
-       const std::vector<Point<dim>>         &before)
+    where_made(const BackgroundGrid<dim>             &grid,
+               const Particles::ParticleHandler<dim> &handler)
     {
-      if (before.size() != handler.n_locally_owned_particles())
-        return false;
-      auto x = before.begin();
-      for (const auto &p : handler)
-        if (p.get_location() != *x++)
-          return false;
+      for (const GridCell<dim> &c : grid.cells)
+        for (const auto &p : handler.particles_in_cell(c.cell))
+          if (p.get_location() != c.real_point(p.get_reference_location()))
+            return false;
       return true;
     }
   } // namespace
@@ -129,17 +131,6 @@ namespace dealmpm
     max_signal_rate =
       std::max(Utilities::MPI::max(particle_check.max_signal_rate, comm),
                regions.signal_rate());
-  }
-
-  template <int dim>
-  std::vector<Point<dim>>
-  Simulation<dim>::particle_locations() const
-  {
-    std::vector<Point<dim>> locations;
-    locations.reserve(particles->handler.n_locally_owned_particles());
-    for (const auto &p : particles->handler)
-      locations.push_back(p.get_location());
-    return locations;
   }
 
   template <int dim>
@@ -261,8 +252,12 @@ namespace dealmpm
     for (const auto &effect : effects)
       for (const FieldDescription &f : effect->particle_fields())
         effect_fields.push_back(f);
+    std::vector<unsigned int> body_materials;
+    for (const Body<dim> &body : bodies)
+      body_materials.push_back(body.material);
     particles = std::make_unique<ParticleSet<dim>>(grid.triangulation,
                                                    *grid.mapping,
+                                                   body_materials,
                                                    material_models,
                                                    internal,
                                                    method_fields,
@@ -297,16 +292,16 @@ namespace dealmpm
     fill_bodies(reader, bodies, densities, initial, grid, *particles);
     if (!effects.empty())
       {
-        const std::vector<Point<dim>> before = particle_locations();
         for (const auto &effect : effects)
           effect->initialize_particles(*particles);
         // Total Lagrangian keeps each particle in the cell of its reference
         // position, where an effect's initial state may have moved it.
         // Sort only if an effect moved a particle: a sort copies the whole
         // particle pool, which was the set-up's peak memory (and so was a
-        // second copy of the locations to compare with).
+        // copy of the locations to compare with, which where_made avoids).
         if (!run_settings.method.total_lagrangian() &&
-            Utilities::MPI::logical_or(!at(particles->handler, before), comm))
+            Utilities::MPI::logical_or(!where_made(grid, particles->handler),
+                                       comm))
           particles->sort();
       }
     start_geostatic_bodies(reader,
@@ -367,8 +362,6 @@ namespace dealmpm
   template void Simulation<dim>::start_load_balance(const CheckpointInfo *); \
   template void Simulation<dim>::choose_stages();                            \
   template bool Simulation<dim>::weights_where_used() const;                 \
-  template std::vector<Point<dim>> Simulation<dim>::particle_locations()     \
-    const;                                                                   \
   template void Simulation<dim>::read_scene(SceneReader &,                   \
                                             const SceneShape &);             \
   template void Simulation<dim>::build_grid(SceneReader &,                   \

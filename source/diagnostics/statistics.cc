@@ -70,7 +70,7 @@ namespace dealmpm
       const auto           props = p.get_properties();
       const double         m     = props[f.mass];
       const Tensor<1, dim> v     = read_vector<dim>(&props[f.velocity]);
-      const unsigned int   mat   = static_cast<unsigned int>(props[f.material]);
+      const unsigned int   mat   = particles.material_of(props);
       sums[0] += 1;
       sums[1] += m;
       for (unsigned int d = 0; d < dim; ++d)
@@ -214,12 +214,11 @@ namespace dealmpm
       {
         const auto           props = p.get_properties();
         const double         m     = props[f.mass];
-        const unsigned int   mat = static_cast<unsigned int>(props[f.material]);
-        const Tensor<1, dim> v   = read_vector<dim>(&props[f.velocity]);
-        const Tensor<1, dim> v0 =
-          initial_velocity[static_cast<unsigned int>(props[f.body])];
-        const Point<dim> x = p.get_location();
-        const Point<dim> X = x - read_vector<dim>(&props[f.displacement]);
+        const unsigned int   mat   = particles.material_of(props);
+        const Tensor<1, dim> v     = read_vector<dim>(&props[f.velocity]);
+        const Tensor<1, dim> v0    = initial_velocity[particles.body_of(props)];
+        const Point<dim>     x     = p.get_location();
+        const Point<dim>     X = x - read_vector<dim>(&props[f.displacement]);
         const ArrayView<const double> internal(&props[0] +
                                                  particles.internal_offset[mat],
                                                particles.n_internal[mat]);

@@ -74,8 +74,8 @@ namespace dealmpm
       state.grid,
       particles,
       [&](const std::size_t, const auto &p, const GridCell<dim> &) {
-        const auto         props = p.get_properties();
-        const unsigned int m     = static_cast<unsigned int>(props[f.material]);
+        const auto                  props    = p.get_properties();
+        const unsigned int          m        = particles.material_of(props);
         const DamagedMaterial<dim> *material = damaged[m];
         if (material == nullptr ||
             props[particles.internal_offset[m] + material->damage_index()] < 1.)

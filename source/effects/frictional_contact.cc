@@ -69,10 +69,9 @@ namespace dealmpm
       state.grid,
       state.particles,
       [&](const std::size_t k, const auto &p, const GridCell<dim> &) {
-        const auto   props = p.get_properties();
-        const double V     = current_volume<dim>(&props[0], f);
-        NodalVector &volume =
-          *volumes[static_cast<unsigned int>(props[f.body])];
+        const auto   props  = p.get_properties();
+        const double V      = current_volume<dim>(&props[0], f);
+        NodalVector &volume = *volumes[state.particles.body_of(props)];
         for (unsigned int e = state.stencil.begin[k];
              e < state.stencil.begin[k + 1];
              ++e)

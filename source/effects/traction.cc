@@ -105,7 +105,7 @@ namespace dealmpm
       for (const auto &p : particles.handler.particles_in_cell(c.cell))
         {
           const auto         props = p.get_properties();
-          const unsigned int body  = static_cast<unsigned int>(props[f.body]);
+          const unsigned int body  = particles.body_of(props);
           if (settings.bodies.count(body) == 0)
             continue;
           const SurfaceFaces<dim> faces =
@@ -163,7 +163,7 @@ namespace dealmpm
       for (auto &p : particles.handler.particles_in_cell(c.cell))
         {
           const auto         props = p.get_properties();
-          const unsigned int body  = static_cast<unsigned int>(props[f.body]);
+          const unsigned int body  = particles.body_of(props);
           SurfaceFaces<dim>  faces;
           if (settings.bodies.count(body) > 0 &&
               selection.value(p.get_location()) != 0.)

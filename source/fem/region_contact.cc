@@ -233,8 +233,7 @@ namespace dealmpm
         if (!near)
           return;
         const auto   props = p.get_properties();
-        NodalVector &g =
-          gap[n_fields == 1 ? 0 : static_cast<unsigned int>(props[f.body])];
+        NodalVector &g     = gap[n_fields == 1 ? 0 : particles.body_of(props)];
         const double half_side =
           0.5 * std::pow(props[f.initial_volume], 1. / dim);
         const Tensor<2, dim> F =

@@ -30,7 +30,7 @@ namespace dealmpm
           line << ',' << props[f.displacement + d];
         line << ','
              << determinant(read_tensor<dim>(&props[f.deformation_gradient]))
-             << ',' << props[f.body];
+             << ',' << particles.body_of(props);
         rows.emplace_back(p.get_id(), line.str());
       }
     const auto gathered = Utilities::MPI::gather(comm, rows, 0);

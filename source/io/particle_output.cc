@@ -51,7 +51,7 @@ namespace dealmpm
     {
       std::vector<ExtraArray> extra;
       for (const auto &field : particles.layout.fields())
-        if (field.offset > particles.fields.material)
+        if (field.offset >= particles.fields.n_core)
           extra.push_back({field,
                            cloud.add_array(field.name,
                                            VtuType::Float32,
@@ -73,9 +73,9 @@ namespace dealmpm
     {
       const ArrayView<const double> props = p.get_properties();
       const CoreFields             &f     = particles.fields;
-      const unsigned int m = static_cast<unsigned int>(props[f.material]);
-      const auto         F = read_tensor<dim>(&props[f.deformation_gradient]);
-      const double       det_F = determinant(F);
+      const unsigned int            m     = particles.material_of(props);
+      const auto   F     = read_tensor<dim>(&props[f.deformation_gradient]);
+      const double det_F = determinant(F);
       const SymmetricTensor<2, 3> sigma =
         full_stress(*materials[m],
                     F,
@@ -98,9 +98,8 @@ namespace dealmpm
             cloud.arrays[a.deformation_gradient].reals[9 * i + 3 * r + c] =
               (r < dim && c < dim) ? F[r][c] : (r == c ? 1. : 0.);
           }
-      cloud.arrays[a.id].integers[i] = p.get_id();
-      cloud.arrays[a.body].integers[i] =
-        static_cast<std::int64_t>(props[f.body]);
+      cloud.arrays[a.id].integers[i]       = p.get_id();
+      cloud.arrays[a.body].integers[i]     = particles.body_of(props);
       cloud.arrays[a.material].integers[i] = m;
       cloud.arrays[a.J].reals[i]           = det_F;
       cloud.arrays[a.volume].reals[i]      = det_F * props[f.initial_volume];

@@ -77,7 +77,7 @@ namespace dealmpm
         for (auto &p : particles.handler)
           {
             const auto props = p.get_properties();
-            if (static_cast<unsigned int>(props[f.body]) != b)
+            if (particles.body_of(props) != b)
               continue;
             const double depth = top + n * p.get_location();
             if (!start_particle(material,

@@ -150,8 +150,8 @@ namespace dealmpm
               (c.vertices[GridCell<dim>::n_vertices - 1][d] -
                c.vertices[0][d]) /
               (2. * n);
-        properties[f.body]     = body_index;
-        properties[f.material] = body.material;
+        if (f.body != numbers::invalid_unsigned_int)
+          properties[f.body] = body_index;
         std::copy(initial_internal_variables.begin(),
                   initial_internal_variables.end(),
                   properties.begin() +

@@ -12,7 +12,7 @@ namespace dealmpm
   {
     template <int dim>
     PropertyLayout
-    core_layout(CoreFields &fields)
+    core_layout(CoreFields &fields, const std::size_t n_bodies)
     {
       PropertyLayout layout;
       fields.mass           = layout.add("mass", 1);
@@ -23,8 +23,10 @@ namespace dealmpm
         layout.add("deformation_gradient", dim * dim);
       fields.stress =
         layout.add("stress", SymmetricTensor<2, dim>::n_independent_components);
-      fields.body     = layout.add("body", 1);
-      fields.material = layout.add("material", 1);
+      // One body: every particle's would be 0, so none stores it.
+      fields.body =
+        n_bodies > 1 ? layout.add("body", 1) : numbers::invalid_unsigned_int;
+      fields.n_core = layout.size();
       return layout;
     }
   } // namespace
@@ -82,11 +84,13 @@ namespace dealmpm
   ParticleSet<dim>::ParticleSet(
     const Triangulation<dim>                         &tria,
     const Mapping<dim>                               &mapping,
+    const std::vector<unsigned int>                  &body_materials,
     const std::vector<std::string>                   &model_names,
     const std::vector<std::vector<FieldDescription>> &internal_variables,
     const std::vector<FieldDescription>              &method_fields,
     const std::vector<FieldDescription>              &effect_fields)
-    : layout(core_layout<dim>(fields))
+    : layout(core_layout<dim>(fields, body_materials.size()))
+    , material_of_body(body_materials)
   {
     for (const FieldDescription &f : method_fields)
       layout.add(f.name, f.n_components);

@@ -350,7 +350,7 @@ namespace dealmpm
     with_nodal_velocity(StepState<dim> &s, const Sweep &sweep)
     {
       if (s.field_set.has_body_fields())
-        sweep(BodyVelocities<dim>(s.field_set, s.particles.fields.body));
+        sweep(BodyVelocities<dim>(s.field_set, s.particles));
       else if (light && !s.fields.light_cells.empty())
         sweep(WithLightNodes<dim>{s.fields});
       else

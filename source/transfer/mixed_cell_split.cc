@@ -138,7 +138,7 @@ namespace dealmpm
   {
     const CoreFields &f = particles.fields;
     cells_begin         = grid.cells.data();
-    material_field      = f.material;
+    particle_set        = &particles;
     first_correction.assign(grid.cells.size(), -1);
     corrections.clear();
     unsigned int k = 0;
@@ -148,8 +148,8 @@ namespace dealmpm
         bool mixed = false;
         for_each_particle_in_cell(grid, particles, c, [&](const auto &p) {
           const ArrayView<const double> props = p.get_properties();
-          const unsigned int m = static_cast<unsigned int>(props[f.material]);
-          const double       volume =
+          const unsigned int            m     = particles.material_of(props);
+          const double                  volume =
             props[f.initial_volume] *
             determinant(read_tensor<dim>(&props[f.deformation_gradient]));
           mixed = mixed || (!members.empty() &&

@@ -72,10 +72,10 @@ namespace dealmpm
     {
       static constexpr bool           per_body = true;
       std::vector<NodalPointers<dim>> bodies;
-      unsigned int                    body; ///< the property's offset
+      const ParticleSet<dim>         &particles;
 
-      BodyTargets(NodalFieldSet<dim> &set, const unsigned int body)
-        : body(body)
+      BodyTargets(NodalFieldSet<dim> &set, const ParticleSet<dim> &particles)
+        : particles(particles)
       {
         for (unsigned int b = 0; b < set.body.size(); ++b)
           {
@@ -88,7 +88,7 @@ namespace dealmpm
       DEAL_II_ALWAYS_INLINE const NodalPointers<dim>                             &
       of(const ArrayView<const double> &props) const
       {
-        return bodies[static_cast<unsigned int>(props[body])];
+        return bodies[particles.body_of(props)];
       }
     };
 
@@ -439,7 +439,7 @@ namespace dealmpm
     dispatch(grid,
              particles,
              stencil,
-             BodyTargets<dim>(set, particles.fields.body),
+             BodyTargets<dim>(set, particles),
              mass_and_momentum,
              internal_force,
              formulation,

@@ -87,7 +87,7 @@ namespace dealmpm
         grid,
         particles,
         [&](const std::size_t k, const auto &p, const GridCell<dim> &) {
-          const double body = p.get_properties()[f.body];
+          const double body = particles.body_of(p.get_properties());
           for (unsigned int e = stencil.begin[k]; e < stencil.begin[k + 1]; ++e)
             if (stencil.N[e] > 0.)
               visit(body, stencil.node[e]);

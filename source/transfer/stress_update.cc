@@ -15,19 +15,18 @@ namespace dealmpm
     for_each_particle_in_stencil_order(
       grid,
       particles,
-      [&](std::size_t,
-          const auto          &p,
-          const GridCell<dim> &c) DEAL_II_ALWAYS_INLINE {
-        const auto           props = p.get_properties();
-        const Tensor<2, dim> F =
-          read_tensor<dim>(&props[f.deformation_gradient]);
-        check.inspect(p,
-                      read_vector<dim>(&props[f.velocity]),
-                      F,
-                      read_symmetric<dim>(&props[f.stress]),
-                      *materials[static_cast<unsigned int>(props[f.material])],
-                      reference_cells ? c.h * smallest_stretch(F) : c.h);
-      });
+      [&](std::size_t, const auto &p, const GridCell<dim> &c)
+        DEAL_II_ALWAYS_INLINE {
+          const auto           props = p.get_properties();
+          const Tensor<2, dim> F =
+            read_tensor<dim>(&props[f.deformation_gradient]);
+          check.inspect(p,
+                        read_vector<dim>(&props[f.velocity]),
+                        F,
+                        read_symmetric<dim>(&props[f.stress]),
+                        *materials[particles.material_of(props)],
+                        reference_cells ? c.h * smallest_stretch(F) : c.h);
+        });
     return check;
   }
 

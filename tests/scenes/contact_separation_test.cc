@@ -25,7 +25,7 @@ namespace
         const double P =
           p.get_properties()[f.mass] * p.get_properties()[f.velocity];
         sums[1] += P;
-        if (p.get_properties()[f.body] == 0)
+        if (simulation.particle_set().body_of(p.get_properties()) == 0)
           sums[0] += P;
       }
     Utilities::MPI::sum(ArrayView<const double>(sums, 2),
@@ -38,10 +38,9 @@ namespace
   double
   overlap(Simulation<2> &simulation)
   {
-    const CoreFields &f     = simulation.particle_set().fields;
-    double            right = -1e9, left = 1e9;
+    double right = -1e9, left = 1e9;
     for (const auto &p : simulation.particle_set().handler)
-      if (p.get_properties()[f.body] == 0)
+      if (simulation.particle_set().body_of(p.get_properties()) == 0)
         right = std::max(right, p.get_location()[0]);
       else
         left = std::min(left, p.get_location()[0]);

@@ -33,13 +33,12 @@ namespace
   std::pair<double, double>
   facing_extents(Simulation<2> &simulation)
   {
-    const CoreFields &f       = simulation.particle_set().fields;
-    double            front_1 = -std::numeric_limits<double>::max();
-    double            front_2 = std::numeric_limits<double>::max();
+    double front_1 = -std::numeric_limits<double>::max();
+    double front_2 = std::numeric_limits<double>::max();
     for (const auto &p : simulation.particle_set().handler)
       {
         const double s = (p.get_location()[0] + p.get_location()[1]) / M_SQRT2;
-        if (p.get_properties()[f.body] == 0)
+        if (simulation.particle_set().body_of(p.get_properties()) == 0)
           front_1 = std::max(front_1, s);
         else
           front_2 = std::min(front_2, s);

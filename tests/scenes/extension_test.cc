@@ -45,10 +45,7 @@ namespace
         [&](const std::size_t k, const auto &p, const GridCell<2> &) {
           const auto   props = p.get_properties();
           NodalVector &mass =
-            state.field_set.per_body("body mass",
-                                     static_cast<unsigned int>(
-                                       props[particles.fields.body]),
-                                     0);
+            state.field_set.per_body("body mass", particles.body_of(props), 0);
           for (unsigned int e = state.stencil.begin[k];
                e < state.stencil.begin[k + 1];
                ++e)
@@ -136,7 +133,7 @@ namespace
     const ParticleSet<2> &particles = simulation.particle_set();
     double                mass      = 0;
     for (const auto &p : particles.handler)
-      if (p.get_properties()[particles.fields.body] == b)
+      if (particles.body_of(p.get_properties()) == b)
         mass += p.get_properties()[particles.fields.mass];
     return Utilities::MPI::sum(mass, MPI_COMM_WORLD);
   }

@@ -141,7 +141,7 @@ namespace
     double            sums[dim + 1] = {};
     for (const auto &p : simulation.particle_set().handler)
       if (body == numbers::invalid_unsigned_int ||
-          p.get_properties()[f.body] == body)
+          simulation.particle_set().body_of(p.get_properties()) == body)
         {
           const double m = p.get_properties()[f.mass];
           sums[dim] += m;

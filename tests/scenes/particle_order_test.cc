@@ -5,9 +5,11 @@
 // particles moved cells and were sorted, after a grid change with
 // particle splitting, and along a run whose particles cross cells.
 // ParticleSet::relocate (the step's own move of particles into neighbour
-// cells) leaves every particle where deal.II's sort would put it.
+// cells) leaves every particle where deal.II's sort would put it, and the
+// neighbour tables it searches hold what deal.II's vertex-to-cell map does.
 // Runs on 1 rank and, through ctest, on 2.
 #include <deal.II/base/geometry_info.h>
+#include <deal.II/grid/grid_tools.h>
 
 #include <dealmpm/adaptivity/split_particles.h>
 #include <dealmpm/transfer/stencil_order.h>
@@ -16,7 +18,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <map>
+#include <sstream>
 #include <tuple>
 #include <utility>
 
@@ -289,6 +293,34 @@ namespace
   }
 } // namespace
 
+// An effect's initial state may move particles: the manufactured solution
+// starts deformed, by up to 0.7 of a cell here. The set-up notices without
+// a copy of the locations (each untouched particle is still where its
+// reference location puts it) and sorts: every particle starts inside the
+// cell the step lists it in, at its reference location.
+TEST(ParticleOrder, SetUpSortsWhatAnEffectMoved)
+{
+  std::ifstream file(DEALMPM_SOURCE_DIR "/prm/manufactured_solution_2d.prm");
+  std::stringstream text;
+  text << file.rdbuf() << "\nsubsection Grid\n set Cells = 16, 16\nend\n";
+  auto                     simulation = test::make_simulation<2>(text.str());
+  const BackgroundGrid<2> &grid       = simulation->background_grid();
+  const ParticleSet<2>    &particles  = simulation->particle_set();
+  unsigned int             crossed    = 0;
+  for_each_particle_in_stencil_order(
+    grid,
+    particles,
+    [&](const std::size_t, const auto &p, const GridCell<2> &c) {
+      const Point<2> X =
+        p.get_location() -
+        read_vector<2>(&p.get_properties()[particles.fields.displacement]);
+      crossed += !GeometryInfo<2>::is_inside_unit_cell(c.reference_point(X));
+    });
+  EXPECT_GT(Utilities::MPI::sum(crossed, MPI_COMM_WORLD), 0u);
+  expect_particles_in_their_cells(grid, particles);
+  expect_order_matches_handler(grid, particles);
+}
+
 // Up to 0.9 cell widths: every particle stays within its old cell's
 // neighbours, the step moves them itself (on 2 ranks those that cross into
 // the other rank's cells make every rank sort with deal.II).
@@ -306,4 +338,84 @@ TEST(Relocation, LeavesFarMovesToDealiiSort)
 {
   relocation_matches_sort<2>(false, 2.5, false);
   relocation_matches_sort<3>(true, 2.5, false);
+}
+
+namespace
+{
+  /** @p grid's neighbour tables against the cells that share a vertex
+   * with each owned cell as deal.II's GridTools::vertex_to_cell_map finds
+   * them (hanging vertices included), owned or ghost, in its order: the
+   * same pointers in the same order. */
+  template <int dim>
+  void
+  expect_neighbors_as_dealii(BackgroundGrid<dim> &grid)
+  {
+    grid.neighbors.clear();
+    grid.find_neighbors();
+    std::map<unsigned int, const GridCell<dim> *> local;
+    for (const auto *list : {&grid.cells, &grid.ghost_cells})
+      for (const GridCell<dim> &c : *list)
+        local[c.cell->active_cell_index()] = &c;
+    const auto at_vertex = GridTools::vertex_to_cell_map(grid.triangulation);
+    ASSERT_EQ(grid.neighbors.size(), grid.cells.size());
+    unsigned int differ = 0, hanging = 0;
+    for (unsigned int i = 0; i < grid.cells.size(); ++i)
+      {
+        std::vector<const GridCell<dim> *> expected;
+        for (const unsigned int v : grid.cells[i].cell->vertex_indices())
+          for (const auto &other :
+               at_vertex[grid.cells[i].cell->vertex_index(v)])
+            {
+              const auto it = local.find(other->active_cell_index());
+              if (it != local.end() &&
+                  std::find(expected.begin(), expected.end(), it->second) ==
+                    expected.end())
+                expected.push_back(it->second);
+            }
+        differ += expected != grid.neighbors[i];
+        for (const GridCell<dim> *n : expected)
+          hanging += n->cell->level() != grid.cells[i].cell->level();
+      }
+    EXPECT_EQ(differ, 0u);
+    if (grid.triangulation.n_levels() > 1)
+      EXPECT_GT(Utilities::MPI::sum(hanging, MPI_COMM_WORLD), 0u);
+  }
+
+  /** The moving block's grid, refined where @p refine says. */
+  template <int dim, typename Refine>
+  void
+  neighbors_as_dealii(const Refine &refine)
+  {
+    SCOPED_TRACE(std::to_string(dim) + "D");
+    auto  simulation = moving_block<dim>();
+    auto &grid =
+      const_cast<BackgroundGrid<dim> &>(simulation->background_grid());
+    simulation->change_grid([&](Triangulation<dim> &) {
+      for (const GridCell<dim> &c : grid.cells)
+        if (refine(c.cell->center()))
+          c.cell->set_refine_flag();
+    });
+    expect_neighbors_as_dealii(grid);
+  }
+} // namespace
+
+// The flat neighbour tables find what deal.II's vertex-to-cell map finds:
+// on a uniform grid, next to a refined slab (hanging vertices on faces) and
+// around a refined corner block (in 3D also on edges alone).
+TEST(Relocation, NeighbourTablesMatchDealiiVertexToCellMap)
+{
+  const auto none  = [](const auto &) { return false; };
+  const auto slab  = [](const auto &x) { return x[0] < 0.45; };
+  const auto block = [](const auto &x) {
+    bool inside = true;
+    for (unsigned int d = 0; d < x.dimension; ++d)
+      inside = inside && x[d] < 0.45;
+    return inside;
+  };
+  neighbors_as_dealii<2>(none);
+  neighbors_as_dealii<3>(none);
+  neighbors_as_dealii<2>(slab);
+  neighbors_as_dealii<3>(slab);
+  neighbors_as_dealii<2>(block);
+  neighbors_as_dealii<3>(block);
 }

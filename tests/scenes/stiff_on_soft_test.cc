@@ -48,7 +48,7 @@ TEST(StiffOnSoft, SharedCellsCarryOneNormalStress)
       std::array<std::array<double, 2>, 2> sums{};
       for_each_particle_in_cell(grid, particles, i, [&](const auto &p) {
         const auto   props = p.get_properties();
-        const auto   m     = static_cast<unsigned int>(props[f.material]);
+        const auto   m     = particles.material_of(props);
         const double volume =
           props[f.initial_volume] *
           determinant(read_tensor<2>(&props[f.deformation_gradient]));

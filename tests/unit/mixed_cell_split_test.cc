@@ -88,11 +88,12 @@ end
     for (auto &p : particles.handler)
       {
         const auto props = p.get_properties();
+        // Body b is of material b (the scene above).
         if (checkerboard)
-          props[f.material] = (static_cast<int>(4 * p.get_location()[0]) +
-                               static_cast<int>(4 * p.get_location()[1])) %
-                              2;
-        const unsigned int m = static_cast<unsigned int>(props[f.material]);
+          props[f.body] = (static_cast<int>(4 * p.get_location()[0]) +
+                           static_cast<int>(4 * p.get_location()[1])) %
+                          2;
+        const unsigned int m = particles.material_of(props);
         props[f.stress + 1]  = stress_yy[m]; // deal.II's order: xx, yy, xy
       }
     const auto    &grid = simulation->background_grid();
@@ -118,7 +119,7 @@ end
           const Tensor<2, 2> &,
           double) {
         r.L.push_back(L);
-        r.material.push_back(static_cast<unsigned int>(props[f.material]));
+        r.material.push_back(particles.material_of(props));
         r.volume.push_back(props[f.initial_volume]);
         r.stress_yy.push_back(props[f.stress + 1]);
       },

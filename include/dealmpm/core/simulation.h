@@ -244,9 +244,6 @@ namespace dealmpm
      * instead of stored (Stencil::where_used): nothing else reads them. */
     bool
     weights_where_used() const;
-    /** This rank's particles' locations, in the handler's order. */
-    std::vector<Point<dim>>
-    particle_locations() const;
     void
     relocate_particles();
     /** After the cells changed (refinement or repartition): rebuild every

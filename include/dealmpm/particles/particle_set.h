@@ -23,8 +23,11 @@ namespace dealmpm
     unsigned int displacement;
     unsigned int deformation_gradient; ///< dim x dim, row-major
     unsigned int stress;               ///< symmetric, deal.II's unrolled order
+    /** The particle's body index (a double), or invalid_unsigned_int in a
+     * scene of one body, whose particles store none: read it with
+     * ParticleSet::body_of(). A particle's material is its body's
+     * (ParticleSet::material_of()), so no particle stores it. */
     unsigned int body;
-    unsigned int material;
     /** APIC's B_p = sum N v_i (x) (x_i - x_p) (dim x dim), or
      * invalid_unsigned_int when the scene does not use APIC (then no particle
      * stores it). */
@@ -35,6 +38,9 @@ namespace dealmpm
     /** GIMP's initial particle-domain half-lengths (dim), or
      * invalid_unsigned_int for kernels without a particle domain. */
     unsigned int domain_half_length;
+    /** Doubles of the core fields above: every other field of the layout
+     * lies at or after this offset. */
+    unsigned int n_core;
   };
 
   /**
@@ -52,11 +58,14 @@ namespace dealmpm
      * the transfer's: "domain_half_length", "apic_B",
      * "acceleration"), per material index
      * the model's @p internal_variables (models that share a name share
-     * storage), then the listed effects' @p effect_fields.
+     * storage), then the listed effects' @p effect_fields. Body b's
+     * particles are of material @p body_materials[b]; with more than one
+     * body each particle stores its body index.
      */
     ParticleSet(
       const Triangulation<dim>                         &tria,
       const Mapping<dim>                               &mapping,
+      const std::vector<unsigned int>                  &body_materials,
       const std::vector<std::string>                   &model_names,
       const std::vector<std::vector<FieldDescription>> &internal_variables,
       const std::vector<FieldDescription>              &method_fields = {},
@@ -67,6 +76,27 @@ namespace dealmpm
     /** Offset of each material's internal variables (per material index). */
     std::vector<unsigned int> internal_offset;
     std::vector<unsigned int> n_internal;
+    /** Each body's material index. */
+    std::vector<unsigned int> material_of_body;
+
+    /** The body index of the particle with properties @p props. */
+    template <typename Properties>
+    DEAL_II_ALWAYS_INLINE unsigned int
+    body_of(const Properties &props) const
+    {
+      return fields.body == numbers::invalid_unsigned_int ?
+               0 :
+               static_cast<unsigned int>(props[fields.body]);
+    }
+
+    /** The material index of the particle with properties @p props: its
+     * body's. */
+    template <typename Properties>
+    DEAL_II_ALWAYS_INLINE unsigned int
+    material_of(const Properties &props) const
+    {
+      return material_of_body[body_of(props)];
+    }
     /**
      * deal.II's particles: locations, ids and properties (always
      * current), reference locations (in the cell of the step's order),

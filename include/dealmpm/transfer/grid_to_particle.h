@@ -102,10 +102,11 @@ namespace dealmpm
   struct BodyVelocities
   {
     std::vector<VelocityArrays<dim, true>> bodies;
-    unsigned int                           body; ///< the property's offset
+    const ParticleSet<dim>                &particles;
 
-    BodyVelocities(const NodalFieldSet<dim> &set, const unsigned int body)
-      : body(body)
+    BodyVelocities(const NodalFieldSet<dim> &set,
+                   const ParticleSet<dim>   &particles)
+      : particles(particles)
     {
       for (const NodalFields<dim> &fields : set.body)
         bodies.emplace_back(fields);
@@ -115,7 +116,7 @@ namespace dealmpm
     DEAL_II_ALWAYS_INLINE const VelocityArrays<dim, true>                             &
     of(const Properties &props) const
     {
-      return bodies[static_cast<unsigned int>(props[body])];
+      return bodies[particles.body_of(props)];
     }
   };
 

@@ -72,7 +72,8 @@ namespace dealmpm
     {
       const int first = first_correction[&cell - cells_begin];
       if (first >= 0)
-        L += corrections[first + static_cast<int>(props[material_field])];
+        L += corrections[first +
+                         static_cast<int>(particle_set->material_of(props))];
     }
 
     /** Cells split in the last prepare() on this rank. */
@@ -90,8 +91,8 @@ namespace dealmpm
      * per material index, or -1 where nothing is split. */
     std::vector<int>            first_correction;
     std::vector<Tensor<2, dim>> corrections;
-    const GridCell<dim>        *cells_begin    = nullptr;
-    unsigned int                material_field = 0;
+    const GridCell<dim>        *cells_begin  = nullptr;
+    const ParticleSet<dim>     *particle_set = nullptr;
 
     /** One particle of the cell being prepared. */
     struct Member

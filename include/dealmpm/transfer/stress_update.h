@@ -159,8 +159,8 @@ namespace dealmpm
                const Tensor<2, dim>    &F,
                const double             h)
     {
-      const CoreFields       &f = particles.fields;
-      const unsigned int      m = static_cast<unsigned int>(props[f.material]);
+      const CoreFields       &f        = particles.fields;
+      const unsigned int      m        = particles.material_of(props);
       const Material<dim>    &material = *materials[m];
       SymmetricTensor<2, dim> stress   = read_symmetric<dim>(&props[f.stress]);
       material.update_stress(L,
