@@ -477,31 +477,93 @@ namespace dealmpm
     bounding_box = BoundingBox<dim>({lower, upper});
   }
 
+  namespace
+  {
+    /** For each vertex of the triangulation, the cells of @p local (owned
+     * and ghost, by active cell index) that touch it, as deal.II's
+     * GridTools::vertex_to_cell_map counts touching (a hanging vertex
+     * also lists the coarse cell whose face or, in 3D, edge holds it) and
+     * in its order (by cell iterator), in flat arrays: vertex v's cells
+     * are cell[begin[v]] to cell[begin[v + 1]], possibly repeated.
+     * deal.II's map builds a std::set per vertex of the whole mesh. */
+    template <int dim>
+    struct CellsAtVertices
+    {
+      std::vector<unsigned int>          begin;
+      std::vector<const GridCell<dim> *> cell;
+
+      CellsAtVertices(const Triangulation<dim>                 &tria,
+                      const std::vector<const GridCell<dim> *> &local)
+      {
+        // Visit every (vertex, cell) pair twice: count, then place.
+        const auto for_each_pair = [&](const auto &visit) {
+          for (const GridCell<dim> *c : local)
+            {
+              if (c == nullptr)
+                continue;
+              for (const unsigned int v : c->cell->vertex_indices())
+                visit(c->cell->vertex_index(v), c);
+              for (const unsigned int f : c->cell->face_indices())
+                if (!c->cell->at_boundary(f) &&
+                    c->cell->neighbor(f)->is_active())
+                  if (const GridCell<dim> *n =
+                        local[c->cell->neighbor(f)->active_cell_index()])
+                    for (const unsigned int v :
+                         c->cell->face(f)->vertex_indices())
+                      visit(c->cell->face(f)->vertex_index(v), n);
+              if constexpr (dim == 3)
+                for (unsigned int l = 0; l < c->cell->n_lines(); ++l)
+                  if (c->cell->line(l)->has_children())
+                    visit(c->cell->line(l)->child(0)->vertex_index(1), c);
+            }
+        };
+        begin.assign(tria.n_vertices() + 1, 0);
+        for_each_pair(
+          [&](const unsigned int v, const GridCell<dim> *) { ++begin[v + 1]; });
+        for (std::size_t v = 0; v + 1 < begin.size(); ++v)
+          begin[v + 1] += begin[v];
+        cell.resize(begin.back());
+        std::vector<unsigned int> next(begin.begin(), begin.end() - 1);
+        for_each_pair([&](const unsigned int v, const GridCell<dim> *c) {
+          cell[next[v]++] = c;
+        });
+        for (std::size_t v = 0; v + 1 < begin.size(); ++v)
+          std::sort(cell.begin() + begin[v],
+                    cell.begin() + begin[v + 1],
+                    [](const GridCell<dim> *a, const GridCell<dim> *b) {
+                      return a->cell < b->cell;
+                    });
+      }
+    };
+  } // namespace
+
   template <int dim>
   void
   BackgroundGrid<dim>::find_neighbors()
   {
     if (!neighbors.empty() || cells.empty())
       return;
-    std::map<unsigned int, const GridCell<dim> *> by_index;
+    std::vector<const GridCell<dim> *> local(triangulation.n_active_cells(),
+                                             nullptr);
     for (const auto *list : {&cells, &ghost_cells})
       for (const GridCell<dim> &c : *list)
-        by_index[c.cell->active_cell_index()] = &c;
-    const auto vertex_to_cells = GridTools::vertex_to_cell_map(triangulation);
+        local[c.cell->active_cell_index()] = &c;
+    const CellsAtVertices<dim> at_vertex(triangulation, local);
     neighbors.resize(cells.size());
     for (unsigned int i = 0; i < cells.size(); ++i)
       {
+        neighbors[i].reserve(Utilities::pow(3, dim));
         for (const unsigned int v : cells[i].cell->vertex_indices())
-          for (const auto &other :
-               vertex_to_cells[cells[i].cell->vertex_index(v)])
-            {
-              const auto it = by_index.find(other->active_cell_index());
-              if (it != by_index.end() &&
-                  std::find(neighbors[i].begin(),
+          {
+            const unsigned int vertex = cells[i].cell->vertex_index(v);
+            for (unsigned int k = at_vertex.begin[vertex];
+                 k < at_vertex.begin[vertex + 1];
+                 ++k)
+              if (std::find(neighbors[i].begin(),
                             neighbors[i].end(),
-                            it->second) == neighbors[i].end())
-                neighbors[i].push_back(it->second);
-            }
+                            at_vertex.cell[k]) == neighbors[i].end())
+                neighbors[i].push_back(at_vertex.cell[k]);
+          }
       }
 
     neighbor_by_side.clear();
