@@ -12,7 +12,6 @@
 #include <dealmpm/io/progress.h>
 #include <dealmpm/materials/geostatic_start.h>
 #include <dealmpm/particles/fill_bodies.h>
-#include <dealmpm/particles/hold_at_walls.h>
 #include <dealmpm/schemes/compatibility.h>
 #include <dealmpm/transfer/grid_to_particle.h>
 #include <dealmpm/transfer/particle_to_grid.h>
@@ -190,11 +189,10 @@ namespace dealmpm
   void
   Simulation<dim>::relocate_particles()
   {
-    const double held =
-      hold_particles_at_walls(grid, *particles, boundary_conditions.walls());
+    unsigned int held = 0;
     lost_this_step.clear();
-    particles->relocate(grid);
-    const double local[2] = {held, double(lost_this_step.size())};
+    particles->relocate(grid, boundary_conditions.walls(), &held);
+    const double local[2] = {double(held), double(lost_this_step.size())};
     double       counts[2];
     Utilities::MPI::sum(ArrayView<const double>(local, 2),
                         comm,

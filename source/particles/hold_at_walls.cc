@@ -41,49 +41,39 @@ namespace dealmpm
   } // namespace
 
   template <int dim>
-  unsigned int
-  hold_particles_at_walls(const BackgroundGrid<dim>          &grid,
-                          ParticleSet<dim>                   &particles,
-                          const std::set<types::boundary_id> &walls)
+  bool
+  hold_at_walls(const GridCell<dim>                                &c,
+                const std::set<types::boundary_id>                 &walls,
+                const CoreFields                                   &f,
+                Particles::PropertyPool<dim>                       &pool,
+                const typename Particles::PropertyPool<dim>::Handle handle,
+                const Point<dim>                                   &xi)
   {
-    if (walls.empty())
-      return 0;
-    const CoreFields         &f     = particles.fields;
-    const ParticleOrder<dim> &order = particles.order_over(grid);
-    auto                     &pool  = particles.handler.get_property_pool();
-    unsigned int              moved = 0;
-    for (std::size_t i = 0; i < grid.cells.size(); ++i)
-      for (unsigned int k = order.cell_begin[i]; k < order.cell_begin[i + 1];
-           ++k)
-        {
-          const PooledParticle<dim, false> p(pool, order.handles[k]);
-          Point<dim>                       xi = p.get_reference_location();
-          if (GeometryInfo<dim>::is_inside_unit_cell(xi, beyond))
-            continue;
-          const auto normals = clamp_to_walls(xi, grid.cells[i].cell, walls);
-          if (normals.empty())
-            continue;
-          const Point<dim>        x     = grid.cells[i].real_point(xi);
-          const ArrayView<double> props = p.get_properties();
-          write_vector<dim>(&props[f.displacement],
-                            read_vector<dim>(&props[f.displacement]) +
-                              (x - p.get_location()));
-          Tensor<1, dim> v = read_vector<dim>(&props[f.velocity]);
-          for (const Tensor<1, dim> &n : normals)
-            v -= std::max(0., v * n) * n;
-          write_vector<dim>(&props[f.velocity], v);
-          p.set_location(x);
-          p.set_reference_location(xi);
-          ++moved;
-        }
-    return moved;
+    Point<dim> on_wall = xi;
+    const auto normals = clamp_to_walls(on_wall, c.cell, walls);
+    if (normals.empty())
+      return false;
+    const Point<dim>        x     = c.real_point(on_wall);
+    const ArrayView<double> props = pool.get_properties(handle);
+    write_vector<dim>(&props[f.displacement],
+                      read_vector<dim>(&props[f.displacement]) +
+                        (x - pool.get_location(handle)));
+    Tensor<1, dim> v = read_vector<dim>(&props[f.velocity]);
+    for (const Tensor<1, dim> &n : normals)
+      v -= std::max(0., v * n) * n;
+    write_vector<dim>(&props[f.velocity], v);
+    pool.set_location(handle, x);
+    pool.set_reference_location(handle, on_wall);
+    return true;
   }
 
-#define DEALMPM_INSTANTIATE(dim)                 \
-  template unsigned int hold_particles_at_walls( \
-    const BackgroundGrid<dim> &,                 \
-    ParticleSet<dim> &,                          \
-    const std::set<types::boundary_id> &);
+#define DEALMPM_INSTANTIATE(dim)                                          \
+  template bool hold_at_walls(const GridCell<dim> &,                      \
+                              const std::set<types::boundary_id> &,       \
+                              const CoreFields &,                         \
+                              Particles::PropertyPool<dim> &,             \
+                              const Particles::PropertyPool<dim>::Handle, \
+                              const Point<dim> &);
   DEALMPM_INSTANTIATE(2)
   DEALMPM_INSTANTIATE(3)
 #undef DEALMPM_INSTANTIATE

@@ -4,6 +4,7 @@
 #include <deal.II/base/geometry_info.h>
 #include <deal.II/base/mpi.h>
 
+#include <dealmpm/particles/hold_at_walls.h>
 #include <dealmpm/particles/particle_set.h>
 
 #include <functional>
@@ -64,39 +65,78 @@ namespace dealmpm
       return none;
     }
 
-    /** Check every particle against its cell: one still inside gets its
-     * unit-cell coordinates (as deal.II's sort sets them), one outside a
-     * Move and its new cell in @p cell_of. False when some particle needs
-     * deal.II's sort. */
+    /** Whether @p xi, outside grid.cells[i], may lie beyond a boundary
+     * face of that cell, where hold_at_walls() has to look: on grids of
+     * boxes only if no cell lies across a face it is beyond (a face
+     * neighbour is at index sum_d 3^d of neighbor_by_side, less or plus
+     * 3^d along the face's axis); elsewhere always. Most particles that
+     * leave a cell enter a neighbour, and this costs less than the look. */
     template <int dim>
     bool
-    find_moves(const BackgroundGrid<dim>    &grid,
-               const ParticleOrder<dim>     &order,
-               Particles::PropertyPool<dim> &pool,
-               std::vector<unsigned int>    &cell_of,
-               std::vector<Move<dim>>       &moves)
+    may_be_beyond_a_wall(const BackgroundGrid<dim> &grid,
+                         const unsigned int         i,
+                         const Point<dim>          &xi)
     {
+      if (grid.neighbor_by_side.empty())
+        return true;
+      constexpr unsigned int centre = (Utilities::pow(3, dim) - 1) / 2;
+      for (unsigned int d = 0, stride = 1; d < dim; ++d, stride *= 3)
+        if ((xi[d] < 0 &&
+             grid.neighbor_by_side[i][centre - stride] == nullptr) ||
+            (xi[d] > 1 && grid.neighbor_by_side[i][centre + stride] == nullptr))
+          return true;
+      return false;
+    }
+
+    /** Check every particle against its cell: one outside that crossed
+     * a wall is put back on it (counted in @p n_held); one still inside
+     * gets its unit-cell coordinates (as deal.II's sort sets them), one
+     * outside a Move and its new cell in @p cell_of. False when some
+     * particle needs deal.II's sort (every particle is still held). */
+    template <int dim>
+    bool
+    find_moves(const BackgroundGrid<dim>          &grid,
+               const std::set<types::boundary_id> &walls,
+               const CoreFields                   &fields,
+               const ParticleOrder<dim>           &order,
+               Particles::PropertyPool<dim>       &pool,
+               std::vector<unsigned int>          &cell_of,
+               std::vector<Move<dim>>             &moves,
+               unsigned int                       &n_held)
+    {
+      bool found_all = true;
       for (unsigned int i = 0; i < grid.cells.size(); ++i)
         for (unsigned int k = order.cell_begin[i]; k < order.cell_begin[i + 1];
              ++k)
           {
             const auto        handle = order.handles[k];
             const Point<dim> &x      = pool.get_location(handle);
-            const Point<dim>  xi     = grid.cells[i].reference_point(x);
+            Point<dim>        xi     = grid.cells[i].reference_point(x);
             cell_of[k]               = i;
-            if (GeometryInfo<dim>::is_inside_unit_cell(xi))
+            bool inside = GeometryInfo<dim>::is_inside_unit_cell(xi);
+            if (!inside && !walls.empty() &&
+                may_be_beyond_a_wall(grid, i, xi) &&
+                hold_at_walls(grid.cells[i], walls, fields, pool, handle, xi))
+              {
+                ++n_held; // x (a reference into the pool) is on the wall now
+                xi     = grid.cells[i].reference_point(x);
+                inside = GeometryInfo<dim>::is_inside_unit_cell(xi);
+              }
+            if (inside)
               {
                 pool.set_reference_location(handle, xi);
                 continue;
               }
             Move<dim> move{k, none, {}};
-            move.to_cell = owned_neighbor_holding(grid, i, x, xi, move.xi);
-            if (move.to_cell == none)
-              return false;
+            if (found_all)
+              move.to_cell = owned_neighbor_holding(grid, i, x, xi, move.xi);
+            found_all = found_all && move.to_cell != none;
+            if (!found_all)
+              continue;
             cell_of[k] = move.to_cell;
             moves.push_back(move);
           }
-      return true;
+      return found_all;
     }
 
     /** The step's order after the moves: @p handles regrouped by
@@ -127,7 +167,9 @@ namespace dealmpm
 
   template <int dim>
   bool
-  ParticleSet<dim>::relocate(BackgroundGrid<dim> &grid)
+  ParticleSet<dim>::relocate(BackgroundGrid<dim>                &grid,
+                             const std::set<types::boundary_id> &walls,
+                             unsigned int                       *n_held)
   {
     grid.find_neighbors();
     const ParticleOrder<dim> &now = order_over(grid);
@@ -135,8 +177,13 @@ namespace dealmpm
     std::vector<Move<dim>>    moves;
     auto                     &pool = handler.get_property_pool();
     // 0: no particle moved, 1: moved here, 2: deal.II must sort.
-    const int here =
-      find_moves(grid, now, pool, cell_of, moves) ? (moves.empty() ? 0 : 1) : 2;
+    unsigned int held = 0;
+    const int    here =
+      find_moves(grid, walls, fields, now, pool, cell_of, moves, held) ?
+           (moves.empty() ? 0 : 1) :
+           2;
+    if (n_held != nullptr)
+      *n_held = held;
     const int everywhere = Utilities::MPI::max(here, grid.comm);
     if (everywhere == 2)
       {
@@ -153,7 +200,11 @@ namespace dealmpm
   }
 
   template bool
-  ParticleSet<2>::relocate(BackgroundGrid<2> &);
+  ParticleSet<2>::relocate(BackgroundGrid<2> &,
+                           const std::set<types::boundary_id> &,
+                           unsigned int *);
   template bool
-  ParticleSet<3>::relocate(BackgroundGrid<3> &);
+  ParticleSet<3>::relocate(BackgroundGrid<3> &,
+                           const std::set<types::boundary_id> &,
+                           unsigned int *);
 } // namespace dealmpm

@@ -105,7 +105,7 @@ namespace dealmpm
             const std::string                  &why) const;
 
     /** The ids whose condition constrains the nodes (slip, no-slip): walls
-     * that particles do not cross (hold_particles_at_walls()). */
+     * that particles do not cross (hold_at_walls()). */
     std::set<types::boundary_id>
     walls() const;
 

@@ -8,6 +8,7 @@
 #include <dealmpm/particles/particle_order.h>
 
 #include <memory>
+#include <set>
 #include <vector>
 
 namespace dealmpm
@@ -134,11 +135,15 @@ namespace dealmpm
      * cost more than a 2D step. When a particle on any rank went further
      * (another rank's cells, out of the grid, past the neighbours), every
      * rank sorts with deal.II instead, which also reports lost particles.
+     * First, each particle that crossed a face of its cell that is one of
+     * @p walls is put back on it (hold_at_walls()), counted in @p n_held.
      * Collective. Returns whether the particles were moved here (false:
      * deal.II sorted them).
      */
     bool
-    relocate(BackgroundGrid<dim> &grid);
+    relocate(BackgroundGrid<dim>                &grid,
+             const std::set<types::boundary_id> &walls  = {},
+             unsigned int                       *n_held = nullptr);
 
     /** Bring deal.II's per-cell lists up to the step's order over
      * @p grid (deal.II's sort, and the order rebuilt from it) if
