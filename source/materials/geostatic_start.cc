@@ -55,7 +55,6 @@ namespace dealmpm
     ParticleSet<dim>                                  &particles,
     const MPI_Comm                                     comm)
   {
-    const CoreFields &f = particles.fields;
     for (unsigned int b = 0; b < bodies.size(); ++b)
       {
         if (!bodies[b].geostatic)

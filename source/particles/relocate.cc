@@ -88,55 +88,77 @@ namespace dealmpm
       return false;
     }
 
-    /** Check every particle against its cell: one outside that crossed
-     * a wall is put back on it (counted in @p n_held); one still inside
-     * gets its unit-cell coordinates (as deal.II's sort sets them), one
-     * outside a Move and its new cell in @p cell_of. False when some
-     * particle needs deal.II's sort (every particle is still held). */
+    /** Checks particles against their cells (see check()) and collects
+     * the moves. */
     template <int dim>
-    bool
-    find_moves(const BackgroundGrid<dim>          &grid,
-               const std::set<types::boundary_id> &walls,
-               const CoreFields                   &fields,
-               const ParticleOrder<dim>           &order,
-               Particles::PropertyPool<dim>       &pool,
-               std::vector<unsigned int>          &cell_of,
-               std::vector<Move<dim>>             &moves,
-               unsigned int                       &n_held)
+    struct MoveFinder
     {
-      bool found_all = true;
-      for (unsigned int i = 0; i < grid.cells.size(); ++i)
+      const BackgroundGrid<dim>          &grid;
+      const std::set<types::boundary_id> &walls;
+      const CoreFields                   &fields;
+      const ParticleOrder<dim>           &order;
+      Particles::PropertyPool<dim>       &pool;
+      std::vector<unsigned int>          &cell_of;
+      std::vector<Move<dim>>              moves;
+      unsigned int                        n_held    = 0;
+      bool                                found_all = true;
+
+      /** Particle @p k of the order, listed in grid.cells[@p i]: one
+       * outside that crossed a wall is put back on it; one (then) inside
+       * gets its unit-cell coordinates (as deal.II's sort sets them), one
+       * outside a Move and its new cell in cell_of. found_all turns false
+       * when a particle needs deal.II's sort (the rest are still held). */
+      void
+      check(const unsigned int k, const unsigned int i)
+      {
+        const auto        handle = order.handles[k];
+        const Point<dim> &x      = pool.get_location(handle);
+        Point<dim>        xi     = grid.cells[i].reference_point(x);
+        bool              inside = GeometryInfo<dim>::is_inside_unit_cell(xi);
+        if (!inside && !walls.empty() && may_be_beyond_a_wall(grid, i, xi) &&
+            hold_at_walls(grid.cells[i], walls, fields, pool, handle, xi))
+          {
+            ++n_held; // x (a reference into the pool) is on the wall now
+            xi     = grid.cells[i].reference_point(x);
+            inside = GeometryInfo<dim>::is_inside_unit_cell(xi);
+          }
+        if (inside)
+          {
+            pool.set_reference_location(handle, xi);
+            return;
+          }
+        Move<dim> move{k, none, {}};
+        if (found_all)
+          move.to_cell = owned_neighbor_holding(grid, i, x, xi, move.xi);
+        found_all = found_all && move.to_cell != none;
+        if (!found_all)
+          return;
+        cell_of[k] = move.to_cell;
+        moves.push_back(move);
+      }
+    };
+
+    /** Every particle's cell in @p finder.cell_of, and the moves: of the
+     * particles G2P saw leave (@p leavers, when it recorded them; every
+     * other particle is inside its cell at the reference location G2P
+     * set), else of every particle. */
+    template <int dim>
+    void
+    find_moves(MoveFinder<dim>                          &finder,
+               const typename ParticleSet<dim>::Leavers &leavers)
+    {
+      const ParticleOrder<dim> &order = finder.order;
+      for (unsigned int i = 0; i < finder.grid.cells.size(); ++i)
         for (unsigned int k = order.cell_begin[i]; k < order.cell_begin[i + 1];
              ++k)
           {
-            const auto        handle = order.handles[k];
-            const Point<dim> &x      = pool.get_location(handle);
-            Point<dim>        xi     = grid.cells[i].reference_point(x);
-            cell_of[k]               = i;
-            bool inside = GeometryInfo<dim>::is_inside_unit_cell(xi);
-            if (!inside && !walls.empty() &&
-                may_be_beyond_a_wall(grid, i, xi) &&
-                hold_at_walls(grid.cells[i], walls, fields, pool, handle, xi))
-              {
-                ++n_held; // x (a reference into the pool) is on the wall now
-                xi     = grid.cells[i].reference_point(x);
-                inside = GeometryInfo<dim>::is_inside_unit_cell(xi);
-              }
-            if (inside)
-              {
-                pool.set_reference_location(handle, xi);
-                continue;
-              }
-            Move<dim> move{k, none, {}};
-            if (found_all)
-              move.to_cell = owned_neighbor_holding(grid, i, x, xi, move.xi);
-            found_all = found_all && move.to_cell != none;
-            if (!found_all)
-              continue;
-            cell_of[k] = move.to_cell;
-            moves.push_back(move);
+            finder.cell_of[k] = i;
+            if (!leavers.recorded)
+              finder.check(k, i);
           }
-      return found_all;
+      if (leavers.recorded)
+        for (std::size_t j = 0; j < leavers.position.size(); ++j)
+          finder.check(leavers.position[j], leavers.cell[j]);
     }
 
     /** The step's order after the moves: @p handles regrouped by
@@ -174,16 +196,16 @@ namespace dealmpm
     grid.find_neighbors();
     const ParticleOrder<dim> &now = order_over(grid);
     std::vector<unsigned int> cell_of(now.handles.size());
-    std::vector<Move<dim>>    moves;
     auto                     &pool = handler.get_property_pool();
-    // 0: no particle moved, 1: moved here, 2: deal.II must sort.
-    unsigned int held = 0;
-    const int    here =
-      find_moves(grid, walls, fields, now, pool, cell_of, moves, held) ?
-           (moves.empty() ? 0 : 1) :
-           2;
+    MoveFinder<dim>           finder{
+      grid, walls, fields, now, pool, cell_of, {}, 0, true};
+    find_moves(finder, leavers);
+    leavers.recorded = false;
     if (n_held != nullptr)
-      *n_held = held;
+      *n_held = finder.n_held;
+    const std::vector<Move<dim>> &moves = finder.moves;
+    // 0: no particle moved, 1: moved here, 2: deal.II must sort.
+    const int here       = finder.found_all ? (moves.empty() ? 0 : 1) : 2;
     const int everywhere = Utilities::MPI::max(here, grid.comm);
     if (everywhere == 2)
       {

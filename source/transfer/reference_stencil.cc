@@ -79,7 +79,6 @@ namespace dealmpm
   {
     if (n_bodies < 2)
       return {0, 0};
-    const CoreFields &f = particles.fields;
     // Each node's smallest body, over all ranks.
     LinearAlgebra::distributed::Vector<double> smallest(grid.partitioner);
     const auto for_each_entry = [&](const auto &visit) {

@@ -378,7 +378,9 @@ namespace
       }
     EXPECT_EQ(differ, 0u);
     if (grid.triangulation.n_levels() > 1)
-      EXPECT_GT(Utilities::MPI::sum(hanging, MPI_COMM_WORLD), 0u);
+      {
+        EXPECT_GT(Utilities::MPI::sum(hanging, MPI_COMM_WORLD), 0u);
+      }
   }
 
   /** The moving block's grid, refined where @p refine says. */

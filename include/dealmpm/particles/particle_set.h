@@ -109,6 +109,26 @@ namespace dealmpm
      */
     Particles::ParticleHandler<dim> handler;
 
+    /** The particles the step's move took out of their cells, recorded by
+     * G2P for relocate(), which then checks only these: their positions
+     * in the step's order and the indices in grid.cells of the cells they
+     * left. Trusted only while `recorded`, which relocate(), sort() and
+     * changed() clear. */
+    struct Leavers
+    {
+      std::vector<unsigned int> position;
+      std::vector<unsigned int> cell;
+      bool                      recorded = false;
+
+      void
+      start()
+      {
+        position.clear();
+        cell.clear();
+        recorded = true;
+      }
+    } leavers;
+
     /** Sort the particles into their ranks and cells (deal.II's sort);
      * the step's order is rebuilt on its next use, and with it each
      * particle's reference location, by the same map the step uses (so
@@ -118,6 +138,7 @@ namespace dealmpm
     sort()
     {
       handler.sort_particles_into_subdomains_and_cells();
+      leavers.recorded    = false;
       handler_lags        = false;
       reference_from_sort = true;
       order.invalidate();
@@ -177,6 +198,7 @@ namespace dealmpm
     {
       if (handler_lags)
         sort();
+      leavers.recorded = false;
       order.invalidate();
     }
 

@@ -35,6 +35,23 @@ namespace dealmpm
     deformation_then_reference
   };
 
+  /** What a G2P sweep @p what does. */
+  template <G2P what>
+  struct G2PParts
+  {
+    static constexpr bool motion = what == G2P::motion ||
+                                   what == G2P::motion_and_deformation ||
+                                   what == G2P::motion_keeping_reference;
+    static constexpr bool move =
+      motion || what == G2P::position_and_deformation;
+    static constexpr bool deformation =
+      !motion || what == G2P::motion_and_deformation;
+    static constexpr bool keep_reference =
+      what == G2P::motion_keeping_reference;
+    static constexpr bool then_reference =
+      what == G2P::deformation_then_reference;
+  };
+
   /** A callback for sweeps without deformation. */
   struct NoAfterDeformation
   {
@@ -271,9 +288,10 @@ namespace dealmpm
 
     /** Moves the particle from @p x_p by @p dx: displacement, position and
      * reference location in its old cell @p c; sets @p left_cell if that
-     * location is outside the cell. */
+     * location is outside the cell by more than round-off. Returns whether
+     * it is outside at all (relocate() then looks at it). */
     template <bool set_reference = true, int dim, typename Particle>
-    DEAL_II_ALWAYS_INLINE inline void
+    DEAL_II_ALWAYS_INLINE inline bool
     move(Particle                &p,
          const ArrayView<double> &props,
          const CoreFields        &f,
@@ -285,10 +303,15 @@ namespace dealmpm
       const Point<dim> xi = c.reference_point(displace(p, props, f, x_p, dx));
       if (set_reference)
         p.set_reference_location(xi);
+      bool outside = false;
+      for (unsigned int d = 0; d < dim; ++d)
+        outside = outside || xi[d] < 0. || xi[d] > 1.;
       // Slack so that a particle sitting on a face does not trigger a sort.
       const double tolerance = 1e-12;
-      for (unsigned int d = 0; d < dim; ++d)
-        left_cell = left_cell || xi[d] < -tolerance || xi[d] > 1. + tolerance;
+      if (outside)
+        for (unsigned int d = 0; d < dim; ++d)
+          left_cell = left_cell || xi[d] < -tolerance || xi[d] > 1. + tolerance;
+      return outside;
     }
 
     /** F <- dF F with dF = @p increment(dt L) (I + dt L unless the scene
@@ -386,25 +409,30 @@ namespace dealmpm
         (std::is_same_v<Arrays, VelocityArrays<dim, false>> ||
          std::is_same_v<Arrays, VelocityArrays<dim, true>>);
       if constexpr (by_cell)
-        for (std::size_t i = 0; i < grid.cells.size(); ++i)
-          {
-            const GridCell<dim> &c = grid.cells[i];
-            if (c.first_weight == numbers::invalid_unsigned_int &&
-                LinearWeights<dim>::is_box(c))
-              {
-                const CellArrays<dim, Arrays::may_be_light> local(
-                  arrays, &grid.cell_nodes[c.first_node]);
+        {
+          // k: the particle's position in the step's order (these weights
+          // do not need it; the record of particles that left does).
+          std::size_t k = 0;
+          for (std::size_t i = 0; i < grid.cells.size(); ++i)
+            {
+              const GridCell<dim> &c = grid.cells[i];
+              if (c.first_weight == numbers::invalid_unsigned_int &&
+                  LinearWeights<dim>::is_box(c))
+                {
+                  const CellArrays<dim, Arrays::may_be_light> local(
+                    arrays, &grid.cell_nodes[c.first_node]);
+                  for_each_particle_in_cell(
+                    grid, particles, i, [&](auto &p) DEAL_II_ALWAYS_INLINE {
+                      per_particle(k++, p, c, BoxWeights<dim>(), local);
+                    });
+                }
+              else
                 for_each_particle_in_cell(
                   grid, particles, i, [&](auto &p) DEAL_II_ALWAYS_INLINE {
-                    per_particle(0, p, c, BoxWeights<dim>(), local);
+                    per_particle(k++, p, c, weights, arrays);
                   });
-              }
-            else
-              for_each_particle_in_cell(
-                grid, particles, i, [&](auto &p) DEAL_II_ALWAYS_INLINE {
-                  per_particle(0, p, c, weights, arrays);
-                });
-          }
+            }
+        }
       else
         for_each_particle_in_stencil_order(
           grid,
@@ -469,18 +497,15 @@ namespace dealmpm
                    const AdjustGradient      &adjust_gradient   = {},
                    const Increment           &f_increment       = {})
   {
-    constexpr bool motion = what == G2P::motion ||
-                            what == G2P::motion_and_deformation ||
-                            what == G2P::motion_keeping_reference;
-    constexpr bool move = motion || what == G2P::position_and_deformation;
-    constexpr bool deformation = !motion || what == G2P::motion_and_deformation;
-    constexpr bool keep_reference = what == G2P::motion_keeping_reference;
-    constexpr bool then_reference = what == G2P::deformation_then_reference;
-    constexpr bool reference = formulation == Formulation::total_lagrangian;
-    const auto    &arrays    = velocity_arrays(fields);
-    const CoreFields &f      = particles.fields;
+    using parts                 = G2PParts<what>;
+    constexpr bool    reference = formulation == Formulation::total_lagrangian;
+    const auto       &arrays    = velocity_arrays(fields);
+    const CoreFields &f         = particles.fields;
     const bool affine    = f.affine_velocity != numbers::invalid_unsigned_int;
     bool       left_cell = false;
+    auto      &leavers = particles.leavers; // who leaves a cell, for relocate()
+    if constexpr (parts::move && !reference)
+      leavers.start();
     // APIC's x_p are the stored stencil's positions.
     AssertThrow(!(affine && stencil.where_used), ExcInternalError());
     with_weights(grid, stencil, [&](const auto &weights) {
@@ -498,30 +523,34 @@ namespace dealmpm
           Tensor<2, dim>          L, B;
           const Point<dim>        x_p   = p.get_location();
           const ArrayView<double> props = p.get_properties();
-          g2p_sweep::gather<motion, move, deformation>(grid,
-                                                       stencil,
-                                                       weights_here,
-                                                       k,
-                                                       p,
-                                                       c,
-                                                       from,
-                                                       affine,
-                                                       v_grid,
-                                                       dv,
-                                                       L,
-                                                       B);
-          if (motion)
+          g2p_sweep::gather<parts::motion, parts::move, parts::deformation>(
+            grid,
+            stencil,
+            weights_here,
+            k,
+            p,
+            c,
+            from,
+            affine,
+            v_grid,
+            dv,
+            L,
+            B);
+          if (parts::motion)
             g2p_sweep::update_velocity(
               props, f, v_grid, dv, B, flip_fraction, affine);
-          if (move)
+          if (parts::move)
             {
               if constexpr (reference)
                 g2p_sweep::displace(p, props, f, x_p, dt * v_grid);
-              else
-                g2p_sweep::move<!keep_reference>(
-                  p, props, f, c, x_p, dt * v_grid, left_cell);
+              else if (g2p_sweep::move<!parts::keep_reference>(
+                         p, props, f, c, x_p, dt * v_grid, left_cell))
+                {
+                  leavers.position.push_back(k);
+                  leavers.cell.push_back(index_in_grid(grid, c));
+                }
             }
-          if (deformation)
+          if (parts::deformation)
             {
               adjust_gradient(c, props, L);
               if constexpr (reference)
@@ -532,7 +561,7 @@ namespace dealmpm
               after_deformation(
                 p, props, L, F, reference ? c.h * smallest_stretch(F) : c.h);
             }
-          if (then_reference)
+          if (parts::then_reference)
             p.set_reference_location(c.reference_point(x_p));
         });
     });
