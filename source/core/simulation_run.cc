@@ -23,6 +23,24 @@ namespace dealmpm
 {
   namespace
   {
+    /** The lines of a run stopped by @p signal: where its output is and,
+     * if it was @p saved, how to continue. */
+    void
+    print_stop(const ConditionalOStream &pcout,
+               const int                 signal,
+               const RunState           &loop,
+               const RunSettings        &s,
+               const std::string        &saved,
+               const std::string        &scene_file)
+    {
+      pcout << "dealmpm: stopped by " << signal_name(signal) << " at step "
+            << loop.step << " (t = " << loop.time << "); output in "
+            << s.output.directory << "/ is complete" << std::endl;
+      if (!saved.empty())
+        pcout << "dealmpm: saved in " << saved << "/; continue with: dealmpm "
+              << scene_file << " --resume" << std::endl;
+    }
+
     /** (m |g| + F) h / 1000: the work of gravity and of the loads (F:
      * their largest total magnitude so far) over a thousandth of the
      * smallest cell, the energy guard's scale when a scene puts in less. */
@@ -233,6 +251,7 @@ namespace dealmpm
         // mpirun passes the signal to every rank, but not at the same
         // moment: the ranks stop at the same step only if they agree, and
         // save at the same step only if they agree on the time too.
+        test_term_at_step(loop.step);
         int flags[2] = {
           stop_signal(),
           run_settings.checkpoint.due_by_time(last_checkpoint_time) ? 1 : 0};
@@ -258,10 +277,15 @@ namespace dealmpm
       {
         if (loop.output.last_step != loop.step)
           {
-            const Statistics now  = statistics();
-            const double     work = external_work();
+            // This row reports the drift, but the monitor goes on as if
+            // it had not been written (its largest kinetic energy seen
+            // must not count this step, or a resume would differ).
+            const AccuracyMonitor before = loop.accuracy;
+            const Statistics      now    = statistics();
+            const double          work   = external_work();
             loop.accuracy.observe(now, work);
             write_output(dt, now, work, progress);
+            loop.accuracy = before;
           }
         if (s.checkpoint.on_stop_signal)
           saved = last_checkpoint_step == loop.step ? s.checkpoint.directory :
@@ -274,13 +298,7 @@ namespace dealmpm
                         grid.triangulation.n_global_active_cells(),
                         comm);
     if (stopped_by_signal != 0)
-      pcout << "dealmpm: stopped by " << signal_name(stopped_by_signal)
-            << " at step " << loop.step << " (t = " << loop.time
-            << "); output in " << s.output.directory << "/ is complete"
-            << std::endl;
-    if (!saved.empty())
-      pcout << "dealmpm: saved in " << saved << "/; continue with: dealmpm "
-            << scene_file << " --resume" << std::endl;
+      print_stop(pcout, stopped_by_signal, loop, s, saved, scene_file);
   }
 
   template <int dim>

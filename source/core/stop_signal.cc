@@ -1,6 +1,7 @@
 #include <dealmpm/core/stop_signal.h>
 
 #include <csignal>
+#include <cstdlib>
 
 namespace dealmpm
 {
@@ -48,6 +49,14 @@ namespace dealmpm
   stop_signal()
   {
     return received;
+  }
+
+  void
+  test_term_at_step(const unsigned int step)
+  {
+    static const char *when = std::getenv("DEALMPM_TERM_AT_STEP");
+    if (when != nullptr && std::strtoul(when, nullptr, 10) == step)
+      std::raise(SIGTERM);
   }
 
   const char *

@@ -26,6 +26,13 @@ namespace dealmpm
   int
   stop_signal();
 
+  /** For tests: raise SIGTERM in this process when the step loop is about
+   * to take step @p step + 1 and the environment variable
+   * DEALMPM_TERM_AT_STEP names @p step, so that a test can stop a run at a
+   * step of its choice instead of at a moment a timer picks. */
+  void
+  test_term_at_step(const unsigned int step);
+
   /** "SIGTERM", "SIGINT" or "a signal". */
   const char *
   signal_name(const int signal);
