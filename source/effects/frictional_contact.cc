@@ -139,7 +139,7 @@ namespace dealmpm
                                          body.velocity_increment);
     if (state.stable_mass > 0)
       for (NodalFields<dim> &body : set.body)
-        set_increment_weights(body, state.stable_mass, state.grid);
+        set_increment_weights(body, state.stable_mass);
     const auto [taken, by_friction] = correct(set, threshold);
     work += taken;
     friction_part += by_friction;

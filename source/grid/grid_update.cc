@@ -6,9 +6,7 @@ namespace dealmpm
 {
   template <int dim>
   void
-  set_increment_weights(NodalFields<dim>          &fields,
-                        const double               stable_mass,
-                        const BackgroundGrid<dim> &grid)
+  set_increment_weights(NodalFields<dim> &fields, const double stable_mass)
   {
     if (fields.increment_weight.size() != fields.mass.size())
       fields.increment_weight.reinit(fields.mass);
@@ -20,19 +18,13 @@ namespace dealmpm
     fields.increment_weight.update_ghost_values();
     // Light nodes have 0 < w < 1 (empty nodes, w = 0, are in no particle's
     // stencil). Most steps of most scenes have none: then G2P is left
-    // without weights, and no cell is looked at.
+    // without weights. When there are some, G2P looks at each cell's
+    // weights as it reads the cell's nodes (no pass over the grid here).
     const unsigned int n_local =
       n_owned + fields.increment_weight.get_partitioner()->n_ghost_indices();
-    fields.light_cells.clear();
-    if (std::none_of(w, w + n_local, [](const double x) {
-          return x > 0 && x < 1;
-        }))
-      return;
-    fields.light_cells.assign(grid.cells.size(), 0);
-    for (unsigned int c = 0; c < grid.cells.size(); ++c)
-      for (unsigned int j = 0; j < grid.cells[c].n_nodes; ++j)
-        if (w[grid.cell_nodes[grid.cells[c].first_node + j]] < 1)
-          fields.light_cells[c] = 1;
+    fields.has_light_nodes = std::any_of(w, w + n_local, [](const double x) {
+      return x > 0 && x < 1;
+    });
   }
 
   template <int dim>
@@ -41,15 +33,14 @@ namespace dealmpm
                         const double                   dt,
                         const double                   mass_threshold,
                         const BoundaryConditions<dim> &boundary_conditions,
-                        const double                   stable_mass,
-                        const BackgroundGrid<dim>     &grid)
+                        const double                   stable_mass)
   {
     const unsigned int n_owned = fields.mass.locally_owned_size();
     const double      *mass    = fields.mass.begin();
     if (stable_mass > 0)
-      set_increment_weights(fields, stable_mass, grid);
+      set_increment_weights(fields, stable_mass);
     else
-      fields.light_cells.clear(); // no stale weights in G2P
+      fields.has_light_nodes = false; // no stale weights in G2P
     for (unsigned int d = 0; d < dim; ++d)
       {
         const double *p  = fields.momentum[d].begin();
@@ -96,9 +87,7 @@ namespace dealmpm
   }
 
 #define DEALMPM_INSTANTIATE(dim)                                         \
-  template void set_increment_weights(NodalFields<dim> &,                \
-                                      double,                            \
-                                      const BackgroundGrid<dim> &);      \
+  template void set_increment_weights(NodalFields<dim> &, double);       \
   template void velocity_from_momentum(NodalFields<dim> &,               \
                                        double,                           \
                                        const BoundaryConditions<dim> &); \
@@ -106,8 +95,7 @@ namespace dealmpm
                                       double,                            \
                                       double,                            \
                                       const BoundaryConditions<dim> &,   \
-                                      double,                            \
-                                      const BackgroundGrid<dim> &);
+                                      double);
   DEALMPM_INSTANTIATE(2)
   DEALMPM_INSTANTIATE(3)
 #undef DEALMPM_INSTANTIATE

@@ -263,12 +263,8 @@ namespace dealmpm
     grid_update(StepState<dim> &s, const std::string &timer_section)
     {
       TimerOutput::Scope t(s.timer, timer_section);
-      update_nodal_velocity(s.fields,
-                            s.dt,
-                            s.mass_threshold,
-                            s.boundary_conditions,
-                            s.stable_mass,
-                            s.grid);
+      update_nodal_velocity(
+        s.fields, s.dt, s.mass_threshold, s.boundary_conditions, s.stable_mass);
     }
 
     template <int dim>
@@ -351,7 +347,7 @@ namespace dealmpm
     {
       if (s.field_set.has_body_fields())
         sweep(BodyVelocities<dim>(s.field_set, s.particles));
-      else if (light && !s.fields.light_cells.empty())
+      else if (light && s.fields.has_light_nodes)
         sweep(WithLightNodes<dim>{s.fields});
       else
         sweep(s.fields);

@@ -141,12 +141,13 @@ namespace dealmpm
     particle_set        = &particles;
     first_correction.assign(grid.cells.size(), -1);
     corrections.clear();
-    unsigned int k = 0;
+    unsigned int                                       k = 0;
+    const ParticlesByCell<dim, const ParticleSet<dim>> by_cell(grid, particles);
     for (unsigned int c = 0; c < grid.cells.size(); ++c)
       {
         members.clear();
         bool mixed = false;
-        for_each_particle_in_cell(grid, particles, c, [&](const auto &p) {
+        by_cell.for_each(c, [&](const auto &p) {
           const ArrayView<const double> props = p.get_properties();
           const unsigned int            m     = particles.material_of(props);
           const double                  volume =

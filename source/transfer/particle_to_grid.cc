@@ -98,50 +98,50 @@ namespace dealmpm
      * into the nodal vectors once. */
     template <int dim, bool mass_and_momentum, bool internal_force>
     DEAL_II_ALWAYS_INLINE inline void
-    transfer_one_cell(const BackgroundGrid<dim> &grid,
-                      const ParticleSet<dim>    &particles,
-                      const LinearWeights<dim>  &weights,
-                      const std::size_t          cell_index,
-                      const NodalPointers<dim>  &to)
+    transfer_one_cell(
+      const BackgroundGrid<dim>                          &grid,
+      const ParticleSet<dim>                             &particles,
+      const ParticlesByCell<dim, const ParticleSet<dim>> &by_cell,
+      const LinearWeights<dim>                           &weights,
+      const std::size_t                                   cell_index,
+      const NodalPointers<dim>                           &to)
     {
-      constexpr unsigned int    n_vertices = GridCell<dim>::n_vertices;
-      const GridCell<dim>      &c          = grid.cells[cell_index];
-      const CoreFields         &f          = particles.fields;
-      const ParticleOrder<dim> &order      = particles.order_over(grid);
-      if (order.cell_begin[cell_index] == order.cell_begin[cell_index + 1])
+      constexpr unsigned int n_vertices = GridCell<dim>::n_vertices;
+      const GridCell<dim>   &c          = grid.cells[cell_index];
+      const CoreFields      &f          = particles.fields;
+      if (by_cell.empty(cell_index))
         return;
       double mass[n_vertices] = {}, momentum[n_vertices][dim] = {},
              force[n_vertices][dim] = {};
-      for_each_particle_in_cell(
-        grid, particles, cell_index, [&](const auto &p) DEAL_II_ALWAYS_INLINE {
-          const ArrayView<const double> props = p.get_properties();
-          const double                  m     = props[f.mass];
-          const Tensor<1, dim>    v = read_vector<dim>(&props[f.velocity]);
-          SymmetricTensor<2, dim> Vsigma;
-          if (internal_force)
-            Vsigma = force_per_gradient<false, dim>(props, f);
-          unsigned int vertex = 0;
-          weights.at(p.get_reference_location(),
-                     c,
-                     [&](const unsigned int,
-                         const double          N,
-                         const Tensor<1, dim> &grad_N) DEAL_II_ALWAYS_INLINE {
-                       if (mass_and_momentum)
-                         {
-                           const double mN = m * N;
-                           mass[vertex] += mN;
-                           for (unsigned int d = 0; d < dim; ++d)
-                             momentum[vertex][d] += mN * v[d];
-                         }
-                       if (internal_force)
-                         {
-                           const Tensor<1, dim> fi = Vsigma * grad_N;
-                           for (unsigned int d = 0; d < dim; ++d)
-                             force[vertex][d] += fi[d];
-                         }
-                       ++vertex;
-                     });
-        });
+      by_cell.for_each(cell_index, [&](const auto &p) DEAL_II_ALWAYS_INLINE {
+        const ArrayView<const double> props = p.get_properties();
+        const double                  m     = props[f.mass];
+        const Tensor<1, dim>          v = read_vector<dim>(&props[f.velocity]);
+        SymmetricTensor<2, dim>       Vsigma;
+        if (internal_force)
+          Vsigma = force_per_gradient<false, dim>(props, f);
+        unsigned int vertex = 0;
+        weights.at(p.get_reference_location(),
+                   c,
+                   [&](const unsigned int,
+                       const double          N,
+                       const Tensor<1, dim> &grad_N) DEAL_II_ALWAYS_INLINE {
+                     if (mass_and_momentum)
+                       {
+                         const double mN = m * N;
+                         mass[vertex] += mN;
+                         for (unsigned int d = 0; d < dim; ++d)
+                           momentum[vertex][d] += mN * v[d];
+                       }
+                     if (internal_force)
+                       {
+                         const Tensor<1, dim> fi = Vsigma * grad_N;
+                         for (unsigned int d = 0; d < dim; ++d)
+                           force[vertex][d] += fi[d];
+                       }
+                     ++vertex;
+                   });
+      });
       const unsigned int *nodes = &grid.cell_nodes[c.first_node];
       for (unsigned int v = 0; v < n_vertices; ++v)
         {
@@ -174,17 +174,18 @@ namespace dealmpm
                      const NodalPointers<dim>  &to,
                      const PerParticle         &per_particle)
     {
+      const ParticlesByCell<dim, const ParticleSet<dim>> by_cell(grid,
+                                                                 particles);
       for (std::size_t i = 0; i < grid.cells.size(); ++i)
         {
           const GridCell<dim> &c = grid.cells[i];
           if (c.first_weight == numbers::invalid_unsigned_int)
             transfer_one_cell<dim, mass_and_momentum, internal_force>(
-              grid, particles, weights, i, to);
+              grid, particles, by_cell, weights, i, to);
           else
-            for_each_particle_in_cell(
-              grid, particles, i, [&](const auto &p) DEAL_II_ALWAYS_INLINE {
-                per_particle(0, p, c); // LinearWeights needs no k
-              });
+            by_cell.for_each(i, [&](const auto &p) DEAL_II_ALWAYS_INLINE {
+              per_particle(0, p, c); // LinearWeights needs no k
+            });
         }
     }
 

@@ -128,7 +128,7 @@ end
             fields.velocity_increment[d].local_element(i) = 0.1 * r(rng);
           }
       }
-    fields.light_cells.assign(grid.cells.size(), 1);
+    fields.has_light_nodes = true;
   }
 
   void

@@ -1,6 +1,5 @@
 #pragma once
 
-#include <dealmpm/grid/background_grid.h>
 #include <dealmpm/grid/boundary_conditions.h>
 #include <dealmpm/grid/nodal_fields.h>
 
@@ -37,15 +36,12 @@ namespace dealmpm
 
   /**
    * fields.increment_weight = min(1, m / @p stable_mass) on the owned nodes
-   * (sized on first use), ghosts updated, and fields.light_cells for
-   * @p grid's cells (empty if no node is light); see
+   * (sized on first use), ghosts updated, and fields.has_light_nodes; see
    * update_nodal_velocity().
    */
   template <int dim>
   void
-  set_increment_weights(NodalFields<dim>          &fields,
-                        double                     stable_mass,
-                        const BackgroundGrid<dim> &grid);
+  set_increment_weights(NodalFields<dim> &fields, double stable_mass);
 
   /**
    * The explicit grid update on the locally owned nodes: on active nodes
@@ -67,8 +63,7 @@ namespace dealmpm
                         const double                   dt,
                         const double                   mass_threshold,
                         const BoundaryConditions<dim> &boundary_conditions,
-                        const double                   stable_mass,
-                        const BackgroundGrid<dim>     &grid);
+                        const double                   stable_mass);
 
   /**
    * The nodal velocity v = p / m of the current momentum on active nodes

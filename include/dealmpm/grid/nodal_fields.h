@@ -31,10 +31,10 @@ namespace dealmpm
      * velocity gradient uses, min(1, m / stable mass); see
      * update_nodal_velocity(). */
     NodalVector increment_weight;
-    /** Per grid cell (grid.cells' order), whether a node of it weighs less
-     * than 1, so that G2P looks only there; empty when no node is light
-     * (then G2P uses no weights). */
-    std::vector<unsigned char> light_cells;
+    /** Whether a node (owned or ghost) has 0 < weight < 1 this step: G2P
+     * then looks at the weights of each particle's cell (in most steps of
+     * most scenes no node is light, and G2P uses no weights). */
+    bool has_light_nodes = false;
 
     void
     reinit(
@@ -42,7 +42,7 @@ namespace dealmpm
     {
       mass.reinit(partitioner);
       increment_weight = NodalVector(); // sized again on first use
-      light_cells.clear();
+      has_light_nodes  = false;
       for (unsigned int d = 0; d < dim; ++d)
         {
           momentum[d].reinit(partitioner);

@@ -80,17 +80,14 @@ namespace dealmpm
     static constexpr bool may_be_light = light;
     const double         *velocity[dim];
     const double         *increment[dim];
-    /** NodalFields::increment_weight and light_cells, or nullptr. */
-    const double        *weight      = nullptr;
-    const unsigned char *light_cells = nullptr;
+    /** NodalFields::increment_weight when some node is light, or
+     * nullptr. */
+    const double *weight = nullptr;
 
     explicit VelocityArrays(const NodalFields<dim> &fields)
     {
-      if (light && !fields.light_cells.empty())
-        {
-          weight      = fields.increment_weight.begin();
-          light_cells = fields.light_cells.data();
-        }
+      if (light && fields.has_light_nodes)
+        weight = fields.increment_weight.begin();
       for (unsigned int d = 0; d < dim; ++d)
         {
           velocity[d]  = fields.velocity[d].begin();
@@ -103,6 +100,18 @@ namespace dealmpm
     of(const Properties &) const
     {
       return *this;
+    }
+
+    /** Whether a node of @p cell weighs less than 1 (asked only when
+     * weight is set). */
+    DEAL_II_ALWAYS_INLINE bool
+    has_light_node(const BackgroundGrid<dim> &grid,
+                   const GridCell<dim>       &cell) const
+    {
+      for (unsigned int j = 0; j < cell.n_nodes; ++j)
+        if (weight[grid.cell_nodes[cell.first_node + j]] < 1)
+          return true;
+      return false;
     }
   };
 
@@ -226,7 +235,7 @@ namespace dealmpm
       // (@p cell is the particle's, in grid.cells), so that no other sweep
       // and few particles pay for it.
       if constexpr (motion && deformation && Arrays::may_be_light)
-        if (from.weight && from.light_cells[index_in_grid(grid, cell)])
+        if (from.weight && from.has_light_node(grid, cell))
           weights(k,
                   p,
                   cell,
@@ -342,11 +351,11 @@ namespace dealmpm
       double                        velocity[dim][n_vertices];
       double                        increment[dim][n_vertices];
       double                        light_weight[n_vertices];
-      /** light_weight and the grid's light_cells, or nullptr when there
-       * are no light nodes (as VelocityArrays' weight and light_cells). Not
-       * copyable: weight points into this object. */
-      const double        *weight      = nullptr;
-      const unsigned char *light_cells = nullptr;
+      /** light_weight, or nullptr when there are no light nodes (as
+       * VelocityArrays' weight). Not copyable: weight points into this
+       * object. */
+      const double *weight     = nullptr;
+      bool          light_cell = false;
 
       CellArrays(const CellArrays &) = delete;
 
@@ -362,11 +371,21 @@ namespace dealmpm
             }
         if (light && from.weight)
           {
-            weight      = light_weight;
-            light_cells = from.light_cells;
+            weight = light_weight;
             for (unsigned int v = 0; v < n_vertices; ++v)
-              light_weight[v] = from.weight[nodes[v]];
+              {
+                light_weight[v] = from.weight[nodes[v]];
+                light_cell      = light_cell || light_weight[v] < 1;
+              }
           }
+      }
+
+      /** Whether a node of this cell weighs less than 1 (asked only when
+       * weight is set). */
+      DEAL_II_ALWAYS_INLINE bool
+      has_light_node(const BackgroundGrid<dim> &, const GridCell<dim> &) const
+      {
+        return light_cell;
       }
     };
 
@@ -412,7 +431,8 @@ namespace dealmpm
         {
           // k: the particle's position in the step's order (these weights
           // do not need it; the record of particles that left does).
-          std::size_t k = 0;
+          std::size_t                                  k = 0;
+          const ParticlesByCell<dim, ParticleSet<dim>> by_cell(grid, particles);
           for (std::size_t i = 0; i < grid.cells.size(); ++i)
             {
               const GridCell<dim> &c = grid.cells[i];
@@ -421,16 +441,14 @@ namespace dealmpm
                 {
                   const CellArrays<dim, Arrays::may_be_light> local(
                     arrays, &grid.cell_nodes[c.first_node]);
-                  for_each_particle_in_cell(
-                    grid, particles, i, [&](auto &p) DEAL_II_ALWAYS_INLINE {
-                      per_particle(k++, p, c, BoxWeights<dim>(), local);
-                    });
+                  by_cell.for_each(i, [&](auto &p) DEAL_II_ALWAYS_INLINE {
+                    per_particle(k++, p, c, BoxWeights<dim>(), local);
+                  });
                 }
               else
-                for_each_particle_in_cell(
-                  grid, particles, i, [&](auto &p) DEAL_II_ALWAYS_INLINE {
-                    per_particle(k++, p, c, weights, arrays);
-                  });
+                by_cell.for_each(i, [&](auto &p) DEAL_II_ALWAYS_INLINE {
+                  per_particle(k++, p, c, weights, arrays);
+                });
             }
         }
       else
