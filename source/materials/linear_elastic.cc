@@ -1,38 +1,11 @@
 #include <dealmpm/materials/linear_elastic.h>
 
-#include <cmath>
-
 namespace dealmpm
 {
   template <int dim>
   LinearElastic<dim>::LinearElastic(const LameParameters &lame)
     : lame(lame)
   {}
-
-  template <int dim>
-  void
-  LinearElastic<dim>::update_stress(const Tensor<2, dim>    &L,
-                                    const Tensor<2, dim>    &F,
-                                    const double             dt,
-                                    SymmetricTensor<2, dim> &stress,
-                                    ArrayView<double>        internal) const
-  {
-    const SymmetricTensor<2, dim> D = symmetrize(L);
-    const SymmetricTensor<2, dim> increment =
-      dt * (2. * lame.mu * D +
-            lame.lambda * trace(D) * unit_symmetric_tensor<dim>());
-    internal[0] += dt * determinant(F) * ((stress + 0.5 * increment) * D);
-    stress += increment;
-  }
-
-  template <int dim>
-  double
-  LinearElastic<dim>::wave_speed(const Tensor<2, dim> &F) const
-  {
-    // Current density rho0 / J.
-    return std::sqrt((lame.lambda + 2. * lame.mu) * determinant(F) /
-                     this->density);
-  }
 
   template <int dim>
   double

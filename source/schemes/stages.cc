@@ -1,5 +1,6 @@
 #include <dealmpm/base/run_messages.h>
 #include <dealmpm/grid/grid_update.h>
+#include <dealmpm/materials/linear_elastic.h>
 #include <dealmpm/schemes/stages.h>
 #include <dealmpm/transfer/grid_to_particle.h>
 #include <dealmpm/transfer/newmark_update.h>
@@ -353,6 +354,34 @@ namespace dealmpm
         sweep(s.fields);
     }
 
+    /** Run @p sweep(after_deformation) with the stress update: the lean
+     * one (StressUpdate::Of, no virtual call per particle) when every
+     * material is linear elastic and the sweep is the plain one (updated
+     * Lagrangian, no mixed-cell split, first-order F increment, one set of
+     * nodal velocities), so that only those sweeps are compiled twice; the
+     * general one otherwise. */
+    template <int dim,
+              typename Velocities,
+              typename FormulationType,
+              typename Adjust,
+              typename Increment,
+              typename Sweep>
+    void
+    with_stress_update(StepState<dim> &s, const Sweep &sweep)
+    {
+      constexpr bool plain =
+        FormulationType::value == Formulation::updated_lagrangian &&
+        std::is_same_v<Adjust, NoGradientAdjustment> &&
+        std::is_same_v<Increment, FirstOrderIncrement> &&
+        !std::is_same_v<Velocities, BodyVelocities<dim>>;
+      using Elastic = LinearElastic<dim>;
+      if constexpr (plain)
+        if (s.stress_update.template all_materials_are<Elastic>())
+          return sweep(
+            typename StressUpdate<dim>::template Of<Elastic>{s.stress_update});
+      sweep(s.stress_update);
+    }
+
     template <int dim>
     void
     g2p_and_stress_update(StepState<dim> &s, const std::string &timer_section)
@@ -364,17 +393,25 @@ namespace dealmpm
           [&](const auto  formulation,
               const auto &adjust,
               const auto &increment) {
-            s.left_cell = grid_to_particle<G2P::motion_and_deformation,
-                                           decltype(formulation)::value>(
-              s.grid,
-              s.stencil,
-              velocities,
-              s.dt,
-              s.method.flip_fraction,
-              s.particles,
-              s.stress_update,
-              adjust,
-              increment);
+            using Velocities = std::decay_t<decltype(velocities)>;
+            with_stress_update<dim,
+                               Velocities,
+                               decltype(formulation),
+                               std::decay_t<decltype(adjust)>,
+                               std::decay_t<decltype(increment)>>(
+              s, [&](auto &&after_deformation) {
+                s.left_cell = grid_to_particle<G2P::motion_and_deformation,
+                                               decltype(formulation)::value>(
+                  s.grid,
+                  s.stencil,
+                  velocities,
+                  s.dt,
+                  s.method.flip_fraction,
+                  s.particles,
+                  after_deformation,
+                  adjust,
+                  increment);
+              });
           });
       });
     }
@@ -427,18 +464,26 @@ namespace dealmpm
           [&](const auto  formulation,
               const auto &adjust,
               const auto &increment) {
+            using Velocities       = std::decay_t<decltype(velocities)>;
             const auto deformation = [&](const auto what) {
-              grid_to_particle<decltype(what)::value,
-                               decltype(formulation)::value>(
-                s.grid,
-                s.stencil,
-                velocities,
-                s.dt,
-                s.method.flip_fraction,
-                s.particles,
-                s.stress_update,
-                adjust,
-                increment);
+              with_stress_update<dim,
+                                 Velocities,
+                                 decltype(formulation),
+                                 std::decay_t<decltype(adjust)>,
+                                 std::decay_t<decltype(increment)>>(
+                s, [&](auto &&after_deformation) {
+                  grid_to_particle<decltype(what)::value,
+                                   decltype(formulation)::value>(
+                    s.grid,
+                    s.stencil,
+                    velocities,
+                    s.dt,
+                    s.method.flip_fraction,
+                    s.particles,
+                    after_deformation,
+                    adjust,
+                    increment);
+                });
             };
             if constexpr (decltype(formulation)::value ==
                           Formulation::updated_lagrangian)

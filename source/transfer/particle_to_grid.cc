@@ -92,37 +92,39 @@ namespace dealmpm
       }
     };
 
-    /** P2G with linear weights computed where used (updated Lagrangian,
-     * FLIP or PIC, one set of nodal fields) in a cell without hanging
-     * nodes: its particles add into its 2^dim nodes held in locals, added
-     * into the nodal vectors once. */
+    /** One cell's shares of mass, momentum and internal force in its
+     * 2^dim nodes, summed in locals. */
     template <int dim, bool mass_and_momentum, bool internal_force>
-    DEAL_II_ALWAYS_INLINE inline void
-    transfer_one_cell(
-      const BackgroundGrid<dim>                          &grid,
-      const ParticleSet<dim>                             &particles,
-      const ParticlesByCell<dim, const ParticleSet<dim>> &by_cell,
-      const LinearWeights<dim>                           &weights,
-      const std::size_t                                   cell_index,
-      const NodalPointers<dim>                           &to)
+    struct CellSums
     {
-      constexpr unsigned int n_vertices = GridCell<dim>::n_vertices;
-      const GridCell<dim>   &c          = grid.cells[cell_index];
-      const CoreFields      &f          = particles.fields;
-      if (by_cell.empty(cell_index))
-        return;
-      double mass[n_vertices] = {}, momentum[n_vertices][dim] = {},
-             force[n_vertices][dim] = {};
-      by_cell.for_each(cell_index, [&](const auto &p) DEAL_II_ALWAYS_INLINE {
+      static constexpr unsigned int n_vertices = GridCell<dim>::n_vertices;
+      double                        mass[n_vertices]          = {};
+      double                        momentum[n_vertices][dim] = {};
+      double                        force[n_vertices][dim]    = {};
+
+      /** Add particle @p p's shares; @p weights_at(xi, f) hands out the
+       * cell's weights at xi in vertex order. */
+      template <typename Particle, typename WeightsAt>
+      DEAL_II_ALWAYS_INLINE void
+      add(const Particle &p, const CoreFields &f, const WeightsAt &weights_at)
+      {
         const ArrayView<const double> props = p.get_properties();
         const double                  m     = props[f.mass];
         const Tensor<1, dim>          v = read_vector<dim>(&props[f.velocity]);
-        SymmetricTensor<2, dim>       Vsigma;
+        // -V sigma as a plain array: deal.II's symmetric tensor times a
+        // vector goes through accessor objects (17 instructions a node in
+        // 3D); the same sums here.
+        double minus_V_sigma[dim][dim] = {};
         if (internal_force)
-          Vsigma = force_per_gradient<false, dim>(props, f);
+          {
+            const SymmetricTensor<2, dim> S =
+              force_per_gradient<false, dim>(props, f);
+            for (unsigned int i = 0; i < dim; ++i)
+              for (unsigned int j = 0; j < dim; ++j)
+                minus_V_sigma[i][j] = S[i][j];
+          }
         unsigned int vertex = 0;
-        weights.at(p.get_reference_location(),
-                   c,
+        weights_at(p.get_reference_location(),
                    [&](const unsigned int,
                        const double          N,
                        const Tensor<1, dim> &grad_N) DEAL_II_ALWAYS_INLINE {
@@ -134,28 +136,71 @@ namespace dealmpm
                            momentum[vertex][d] += mN * v[d];
                        }
                      if (internal_force)
-                       {
-                         const Tensor<1, dim> fi = Vsigma * grad_N;
-                         for (unsigned int d = 0; d < dim; ++d)
-                           force[vertex][d] += fi[d];
-                       }
+                       for (unsigned int d = 0; d < dim; ++d)
+                         {
+                           double fi = minus_V_sigma[d][0] * grad_N[0];
+                           for (unsigned int j = 1; j < dim; ++j)
+                             fi += minus_V_sigma[d][j] * grad_N[j];
+                           force[vertex][d] += fi;
+                         }
                      ++vertex;
                    });
-      });
-      const unsigned int *nodes = &grid.cell_nodes[c.first_node];
-      for (unsigned int v = 0; v < n_vertices; ++v)
-        {
-          const unsigned int n = nodes[v];
-          if (mass_and_momentum)
-            to.mass[n] += mass[v];
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              if (mass_and_momentum)
-                to.momentum[d][n] += momentum[v][d];
-              if (internal_force)
-                to.force[d][n] += force[v][d];
-            }
-        }
+      }
+
+      /** Add the sums into the nodal vectors at the cell's @p nodes. */
+      DEAL_II_ALWAYS_INLINE void
+      scatter(const unsigned int *nodes, const NodalPointers<dim> &to) const
+      {
+        for (unsigned int v = 0; v < n_vertices; ++v)
+          {
+            const unsigned int n = nodes[v];
+            if (mass_and_momentum)
+              to.mass[n] += mass[v];
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                if (mass_and_momentum)
+                  to.momentum[d][n] += momentum[v][d];
+                if (internal_force)
+                  to.force[d][n] += force[v][d];
+              }
+          }
+      }
+    };
+
+    /** P2G with linear weights computed where used (updated Lagrangian,
+     * FLIP or PIC, one set of nodal fields) in a cell without hanging
+     * nodes: its particles add into its 2^dim nodes held in locals
+     * (CellSums), added into the nodal vectors once. */
+    template <int dim, bool mass_and_momentum, bool internal_force>
+    DEAL_II_ALWAYS_INLINE inline void
+    transfer_one_cell(
+      const BackgroundGrid<dim>                          &grid,
+      const ParticleSet<dim>                             &particles,
+      const ParticlesByCell<dim, const ParticleSet<dim>> &by_cell,
+      const LinearWeights<dim>                           &weights,
+      const std::size_t                                   cell_index,
+      const NodalPointers<dim>                           &to)
+    {
+      const GridCell<dim> &c = grid.cells[cell_index];
+      if (by_cell.empty(cell_index))
+        return;
+      CellSums<dim, mass_and_momentum, internal_force> sums;
+      // The cell's weights, chosen once for the cell.
+      const auto add_particles =
+        [&](const auto &weights_at) DEAL_II_ALWAYS_INLINE {
+          by_cell.for_each(cell_index,
+                           [&](const auto &p) DEAL_II_ALWAYS_INLINE {
+                             sums.add(p, particles.fields, weights_at);
+                           });
+        };
+      if (LinearWeights<dim>::is_box(c))
+        add_particles(
+          [&](const Point<dim> &xi, auto &&f)
+            DEAL_II_ALWAYS_INLINE { LinearWeights<dim>::at_in_box(xi, c, f); });
+      else
+        add_particles([&](const Point<dim> &xi, auto &&f)
+                        DEAL_II_ALWAYS_INLINE { weights.at(xi, c, f); });
+      sums.scatter(&grid.cell_nodes[c.first_node], to);
     }
 
     /** P2G a cell at a time, for linear weights computed here: a cell

@@ -2,6 +2,8 @@
 
 #include <dealmpm/materials/material.h>
 
+#include <cmath>
+
 namespace dealmpm
 {
   /**
@@ -14,9 +16,12 @@ namespace dealmpm
    * volume (trapezoidal rule) in an internal variable: the strain energy in
    * the statistics is then the work actually done on the particle, and the
    * energy balance measures only the scheme's error.
+   *
+   * Final, with the step's methods defined here: a sweep in which every
+   * material is linear elastic calls them directly (StressUpdate::Of).
    */
   template <int dim>
-  class LinearElastic : public Material<dim>
+  class LinearElastic final : public Material<dim>
   {
   public:
     explicit LinearElastic(const LameParameters &lame);
@@ -27,15 +32,28 @@ namespace dealmpm
       return {{"stress_work", 1}};
     }
 
-    void
+    DEAL_II_ALWAYS_INLINE void
     update_stress(const Tensor<2, dim>    &L,
                   const Tensor<2, dim>    &F,
                   const double             dt,
                   SymmetricTensor<2, dim> &stress,
-                  ArrayView<double>        internal) const override;
+                  ArrayView<double>        internal) const override
+    {
+      const SymmetricTensor<2, dim> D = symmetrize(L);
+      const SymmetricTensor<2, dim> increment =
+        dt * (2. * lame.mu * D +
+              lame.lambda * trace(D) * unit_symmetric_tensor<dim>());
+      internal[0] += dt * determinant(F) * ((stress + 0.5 * increment) * D);
+      stress += increment;
+    }
 
-    double
-    wave_speed(const Tensor<2, dim> &F) const override;
+    DEAL_II_ALWAYS_INLINE double
+    wave_speed(const Tensor<2, dim> &F) const override
+    {
+      // Current density rho0 / J.
+      return std::sqrt((lame.lambda + 2. * lame.mu) * determinant(F) /
+                       this->density);
+    }
 
     /** The integrated stress power. */
     /** In plane strain d sigma_zz = dt lambda tr(D) = nu d(sigma_xx +

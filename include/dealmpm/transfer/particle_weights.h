@@ -110,22 +110,69 @@ namespace dealmpm
 
     /** f(vertex, N, grad N) at unit-cell point @p xi of @p c, an
      * axis-aligned box without hanging nodes (is_box()): the gradient is
-     * the unit cell's scaled by the diagonal of d xi / d x. */
+     * the unit cell's scaled by the diagonal of d xi / d x. The same
+     * numbers as q1_values() followed by that scaling ((-a) K = -(a K)
+     * exactly), but each product shared by the vertices that use it is
+     * taken once: d N / d x_0 depends only on the vertex's sides in the
+     * other directions (4 products in 2D instead of 8, 24 in 3D instead
+     * of 48). */
     template <typename Function>
     static DEAL_II_ALWAYS_INLINE void
     at_in_box(const Point<dim> &xi, const GridCell<dim> &c, Function &&f)
     {
+      static_assert(dim == 2 || dim == 3, "Q1 values in 2D and 3D");
+      double side[dim][2]; // 1 - xi_d on a vertex's lower side, xi_d upper
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          side[d][0] = 1. - xi[d];
+          side[d][1] = xi[d];
+        }
+      // Filled first, in a loop the compiler unrolls, then handed out: a
+      // loop that also calls f (a sweep's whole body) is not unrolled.
       constexpr unsigned int n_vertices = GridCell<dim>::n_vertices;
       double                 N[n_vertices];
-      Tensor<1, dim>         grad_xi[n_vertices];
-      q1_values<dim>(xi, N, grad_xi);
-      for (unsigned int v = 0; v < n_vertices; ++v)
+      Tensor<1, dim>         grad[n_vertices];
+      if constexpr (dim == 2)
         {
-          Tensor<1, dim> grad;
-          for (unsigned int d = 0; d < dim; ++d)
-            grad[d] = grad_xi[v][d] * c.inverse_jacobian[d][d];
-          f(v, N[v], grad);
+          double g0[2], g1[2]; // |d N / d x_0| by b, |d N / d x_1| by a
+          for (unsigned int s = 0; s < 2; ++s)
+            {
+              g0[s] = side[1][s] * c.inverse_jacobian[0][0];
+              g1[s] = side[0][s] * c.inverse_jacobian[1][1];
+            }
+          for (unsigned int b = 0; b < 2; ++b)
+            for (unsigned int a = 0; a < 2; ++a)
+              {
+                const unsigned int v = a + 2 * b;
+                N[v]                 = side[0][a] * side[1][b];
+                grad[v][0]           = a ? g0[b] : -g0[b];
+                grad[v][1]           = b ? g1[a] : -g1[a];
+              }
         }
+      else
+        {
+          double g0[2][2], g1[2][2], g2[2][2], p01[2][2];
+          for (unsigned int s = 0; s < 2; ++s)
+            for (unsigned int t = 0; t < 2; ++t)
+              {
+                g0[s][t]  = side[1][s] * side[2][t] * c.inverse_jacobian[0][0];
+                g1[s][t]  = side[0][s] * side[2][t] * c.inverse_jacobian[1][1];
+                p01[s][t] = side[0][s] * side[1][t];
+                g2[s][t]  = p01[s][t] * c.inverse_jacobian[2][2];
+              }
+          for (unsigned int e = 0; e < 2; ++e)
+            for (unsigned int b = 0; b < 2; ++b)
+              for (unsigned int a = 0; a < 2; ++a)
+                {
+                  const unsigned int v = a + 2 * b + 4 * e;
+                  N[v]                 = p01[a][b] * side[2][e];
+                  grad[v][0]           = a ? g0[b][e] : -g0[b][e];
+                  grad[v][1]           = b ? g1[a][e] : -g1[a][e];
+                  grad[v][2]           = e ? g2[a][b] : -g2[a][b];
+                }
+        }
+      for (unsigned int v = 0; v < n_vertices; ++v)
+        f(v, N[v], grad[v]);
     }
 
     /** f(node, N, grad N) at unit-cell point @p xi of cell @p c. */

@@ -87,8 +87,8 @@ namespace dealmpm
     DEAL_II_ALWAYS_INLINE void
     for_each(const std::size_t i, Function &&f) const
     {
-      for (std::size_t k = order.cell_begin[i]; k < order.cell_begin[i + 1];
-           ++k)
+      const std::size_t end = order.cell_begin[i + 1];
+      for (std::size_t k = order.cell_begin[i]; k < end; ++k)
         {
           const PooledParticle<dim, read_only> p(pool, order.handles[k]);
           f(p);

@@ -10,6 +10,7 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <typeinfo>
 #include <vector>
 
 namespace dealmpm
@@ -34,14 +35,15 @@ namespace dealmpm
     Point<dim>            fastest_location;
 
     /** Fold one particle into the check; false when its state is
-     * unusable. */
-    template <typename Accessor>
+     * unusable. @p material is a Material<dim>, or the final model class
+     * the caller knows it to be (StressUpdate::Of). */
+    template <typename Accessor, typename Model>
     DEAL_II_ALWAYS_INLINE inline bool
     inspect(const Accessor                &p,
             const Tensor<1, dim>          &v,
             const Tensor<2, dim>          &F,
             const SymmetricTensor<2, dim> &stress,
-            const Material<dim>           &material,
+            const Model                   &material,
             const double                   h)
     {
       const double J = determinant(F);
@@ -159,10 +161,56 @@ namespace dealmpm
                const Tensor<2, dim>    &F,
                const double             h)
     {
-      const CoreFields       &f        = particles.fields;
-      const unsigned int      m        = particles.material_of(props);
-      const Material<dim>    &material = *materials[m];
-      SymmetricTensor<2, dim> stress   = read_symmetric<dim>(&props[f.stress]);
+      update<Material<dim>>(p, props, L, F, h);
+    }
+
+    /** The update for a sweep in which every material is a @p Model, a
+     * final class whose methods are defined in its header: its calls are
+     * direct and inlined, and the check shares their arithmetic (J). */
+    template <typename Model>
+    struct Of
+    {
+      StressUpdate &stress_update;
+
+      template <typename Accessor>
+      DEAL_II_ALWAYS_INLINE void
+      operator()(const Accessor          &p,
+                 const ArrayView<double> &props,
+                 const Tensor<2, dim>    &L,
+                 const Tensor<2, dim>    &F,
+                 const double             h)
+      {
+        stress_update.template update<Model>(p, props, L, F, h);
+      }
+    };
+
+    /** Whether every material of the scene is exactly a @p Model (not a
+     * class derived from it). */
+    template <typename Model>
+    bool
+    all_materials_are() const
+    {
+      for (const auto &m : materials)
+        if (typeid(*m) != typeid(Model))
+          return false;
+      return true;
+    }
+
+    ParticleCheck<dim> check;
+
+  private:
+    template <typename Model, typename Accessor>
+    DEAL_II_ALWAYS_INLINE void
+    update(const Accessor          &p,
+           const ArrayView<double> &props,
+           const Tensor<2, dim>    &L,
+           const Tensor<2, dim>    &F,
+           const double             h)
+    {
+      const CoreFields  &f        = particles.fields;
+      const unsigned int m        = particles.material_of(props);
+      const Model       &material = static_cast<const Model &>(*materials[m]);
+      SymmetricTensor<2, dim> stress = read_symmetric<dim>(&props[f.stress]);
       material.update_stress(L,
                              F,
                              dt,
@@ -184,9 +232,6 @@ namespace dealmpm
         reset_deformation(props, F);
     }
 
-    ParticleCheck<dim> check;
-
-  private:
     /** F <- J^(1/dim) I. */
     void
     reset_deformation(const ArrayView<double> &props,
