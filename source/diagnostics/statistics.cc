@@ -173,7 +173,7 @@ namespace dealmpm
     const bool                dissipates = some_material_dissipates(materials);
     ErrorSums                 error;
     const ParticleOrder<dim> &order = particles.order_over(grid);
-    auto                     &pool  = particles.handler.get_property_pool();
+    const PoolArrays<dim>     pool(particles.handler.get_property_pool());
     for (const auto handle : order.handles)
       {
         const PooledParticle<dim, true> p(pool, handle);

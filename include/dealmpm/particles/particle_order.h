@@ -18,11 +18,45 @@ namespace dealmpm
   using namespace dealii;
 
   /**
-   * One particle seen through deal.II's property pool: the same calls as a
-   * ParticleAccessor (get_properties, get_location, get_reference_location,
-   * their setters, get_id), without the accessor's cell-list iterator. A
-   * read-only view (@p read_only) hands out const properties and has no
-   * setters.
+   * Where deal.II's property pool keeps its slots' data, fetched once a
+   * sweep: a particle's properties, location and reference location are
+   * then found from its handle with no call and no check of the handle
+   * (the pool's getters test for the invalid handle at each call; the
+   * step's order holds valid ones only). The pool must keep its slots
+   * (no particle added or removed) while this is in use.
+   */
+  template <int dim>
+  struct PoolArrays
+  {
+    using Pool = Particles::PropertyPool<dim>;
+
+    Pool        *pool;
+    double      *properties          = nullptr;
+    Point<dim>  *locations           = nullptr;
+    Point<dim>  *reference_locations = nullptr;
+    unsigned int n_properties;
+
+    explicit PoolArrays(Pool &pool)
+      : pool(&pool)
+      , n_properties(pool.n_properties_per_slot())
+    {
+      if (pool.n_slots() == 0)
+        return;
+      // Slot 0's addresses are the arrays' starts. The pool's points are
+      // not const objects; its getters only hand them out as const.
+      properties = pool.get_properties(0).data();
+      locations  = const_cast<Point<dim> *>(&pool.get_location(0));
+      reference_locations =
+        const_cast<Point<dim> *>(&pool.get_reference_location(0));
+    }
+  };
+
+  /**
+   * One particle seen through deal.II's property pool (its arrays,
+   * PoolArrays): the same calls as a ParticleAccessor (get_properties,
+   * get_location, get_reference_location, their setters, get_id), without
+   * the accessor's cell-list iterator. A read-only view (@p read_only)
+   * hands out const properties and has no setters.
    */
   template <int dim, bool read_only>
   class PooledParticle
@@ -34,33 +68,35 @@ namespace dealmpm
       std::conditional_t<read_only, ArrayView<const double>, ArrayView<double>>;
 
     DEAL_II_ALWAYS_INLINE
-    PooledParticle(Pool &pool, const Handle handle)
-      : pool(&pool)
+    PooledParticle(const PoolArrays<dim> &arrays, const Handle handle)
+      : arrays(&arrays)
       , handle(handle)
     {}
 
     DEAL_II_ALWAYS_INLINE Properties
     get_properties() const
     {
-      return pool->get_properties(handle);
+      return Properties(arrays->properties +
+                          std::size_t(handle) * arrays->n_properties,
+                        arrays->n_properties);
     }
 
     DEAL_II_ALWAYS_INLINE const Point<dim>                             &
     get_location() const
     {
-      return pool->get_location(handle);
+      return arrays->locations[handle];
     }
 
     DEAL_II_ALWAYS_INLINE const Point<dim>                             &
     get_reference_location() const
     {
-      return pool->get_reference_location(handle);
+      return arrays->reference_locations[handle];
     }
 
     DEAL_II_ALWAYS_INLINE types::particle_index
                           get_id() const
     {
-      return pool->get_id(handle);
+      return arrays->pool->get_id(handle);
     }
 
     template <bool writable = !read_only>
@@ -68,7 +104,7 @@ namespace dealmpm
     set_location(const Point<dim> &x) const
     {
       static_assert(writable, "a read-only particle view cannot move");
-      pool->set_location(handle, x);
+      arrays->locations[handle] = x;
     }
 
     template <bool writable = !read_only>
@@ -76,12 +112,12 @@ namespace dealmpm
     set_reference_location(const Point<dim> &xi) const
     {
       static_assert(writable, "a read-only particle view cannot move");
-      pool->set_reference_location(handle, xi);
+      arrays->reference_locations[handle] = xi;
     }
 
   private:
-    Pool  *pool;
-    Handle handle;
+    const PoolArrays<dim> *arrays;
+    Handle                 handle;
   };
 
   /**

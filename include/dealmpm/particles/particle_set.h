@@ -246,10 +246,9 @@ namespace dealmpm
   inline Tensor<1, dim>
   read_vector(const double *p)
   {
-    Tensor<1, dim> t;
-    for (unsigned int d = 0; d < dim; ++d)
-      t[d] = p[d];
-    return t;
+    // deal.II's constructor from an array: a tensor made and then filled
+    // is zeroed first, in stores the compiler keeps.
+    return Tensor<1, dim>(*reinterpret_cast<const double(*)[dim]>(p));
   }
 
   template <int dim>
@@ -264,11 +263,7 @@ namespace dealmpm
   inline Tensor<2, dim>
   read_tensor(const double *p)
   {
-    Tensor<2, dim> t;
-    for (unsigned int i = 0; i < dim; ++i)
-      for (unsigned int j = 0; j < dim; ++j)
-        t[i][j] = p[i * dim + j];
-    return t;
+    return Tensor<2, dim>(*reinterpret_cast<const double(*)[dim][dim]>(p));
   }
 
   /** A particle's volume now, V0 det F, from its properties @p props. */
@@ -293,12 +288,9 @@ namespace dealmpm
   inline SymmetricTensor<2, dim>
   read_symmetric(const double *p)
   {
-    SymmetricTensor<2, dim> t;
-    for (unsigned int i = 0;
-         i < SymmetricTensor<2, dim>::n_independent_components;
-         ++i)
-      t.access_raw_entry(i) = p[i];
-    return t;
+    constexpr unsigned int n =
+      SymmetricTensor<2, dim>::n_independent_components;
+    return SymmetricTensor<2, dim>(*reinterpret_cast<const double(*)[n]>(p));
   }
 
   template <int dim>

@@ -40,9 +40,9 @@ namespace dealmpm
   {
     constexpr bool            read_only = std::is_const_v<ParticleSetType>;
     const ParticleOrder<dim> &order     = particles.order_over(grid);
-    auto                     &pool      = particles.handler.get_property_pool();
-    std::size_t               k         = 0;
-    const std::size_t         n_cells   = grid.cells.size();
+    const PoolArrays<dim>     pool(particles.handler.get_property_pool());
+    std::size_t               k       = 0;
+    const std::size_t         n_cells = grid.cells.size();
     for (std::size_t i = 0; i < n_cells; ++i)
       {
         const GridCell<dim> &c   = grid.cells[i];
@@ -96,8 +96,8 @@ namespace dealmpm
     }
 
   private:
-    const ParticleOrder<dim>          &order;
-    Particles::PropertyPool<dim, dim> &pool;
+    const ParticleOrder<dim> &order;
+    const PoolArrays<dim>     pool;
   };
 
   /** Visit the particles of grid.cells[@p i] with @p f(particle), in the
