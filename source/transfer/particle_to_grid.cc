@@ -1,3 +1,4 @@
+#include <dealmpm/transfer/box_q1.h>
 #include <dealmpm/transfer/particle_to_grid.h>
 #include <dealmpm/transfer/particle_weights.h>
 #include <dealmpm/transfer/stencil_order.h>
@@ -93,7 +94,8 @@ namespace dealmpm
     };
 
     /** One cell's shares of mass, momentum and internal force in its
-     * 2^dim nodes, summed in locals. */
+     * 2^dim nodes, summed in locals by vertex from any weights (a box
+     * cell's: BoxCellSums). */
     template <int dim, bool mass_and_momentum, bool internal_force>
     struct CellSums
     {
@@ -102,45 +104,64 @@ namespace dealmpm
       double                        momentum[n_vertices][dim] = {};
       double                        force[n_vertices][dim]    = {};
 
+      /** What a particle brings: m, v and -V sigma as a plain array
+       * (deal.II's symmetric tensor times a vector goes through accessor
+       * objects: 17 instructions a node in 3D). */
+      struct Shares
+      {
+        double         m;
+        Tensor<1, dim> v;
+        double         minus_V_sigma[dim][dim] = {};
+
+        template <typename Particle>
+        DEAL_II_ALWAYS_INLINE
+        Shares(const Particle &p, const CoreFields &f)
+        {
+          const ArrayView<const double> props = p.get_properties();
+          m                                   = props[f.mass];
+          v = read_vector<dim>(&props[f.velocity]);
+          if (internal_force)
+            {
+              const SymmetricTensor<2, dim> S =
+                force_per_gradient<false, dim>(props, f);
+              for (unsigned int i = 0; i < dim; ++i)
+                for (unsigned int j = 0; j < dim; ++j)
+                  minus_V_sigma[i][j] = S[i][j];
+            }
+        }
+      };
+
+      DEAL_II_ALWAYS_INLINE void
+      add_mass_and_momentum(const unsigned int vertex,
+                            const Shares      &p,
+                            const double       N)
+      {
+        const double mN = p.m * N;
+        mass[vertex] += mN;
+        for (unsigned int d = 0; d < dim; ++d)
+          momentum[vertex][d] += mN * p.v[d];
+      }
+
       /** Add particle @p p's shares; @p weights_at(xi, f) hands out the
        * cell's weights at xi in vertex order. */
       template <typename Particle, typename WeightsAt>
       DEAL_II_ALWAYS_INLINE void
       add(const Particle &p, const CoreFields &f, const WeightsAt &weights_at)
       {
-        const ArrayView<const double> props = p.get_properties();
-        const double                  m     = props[f.mass];
-        const Tensor<1, dim>          v = read_vector<dim>(&props[f.velocity]);
-        // -V sigma as a plain array: deal.II's symmetric tensor times a
-        // vector goes through accessor objects (17 instructions a node in
-        // 3D); the same sums here.
-        double minus_V_sigma[dim][dim] = {};
-        if (internal_force)
-          {
-            const SymmetricTensor<2, dim> S =
-              force_per_gradient<false, dim>(props, f);
-            for (unsigned int i = 0; i < dim; ++i)
-              for (unsigned int j = 0; j < dim; ++j)
-                minus_V_sigma[i][j] = S[i][j];
-          }
+        const Shares shares(p, f);
         unsigned int vertex = 0;
         weights_at(p.get_reference_location(),
                    [&](const unsigned int,
                        const double          N,
                        const Tensor<1, dim> &grad_N) DEAL_II_ALWAYS_INLINE {
                      if (mass_and_momentum)
-                       {
-                         const double mN = m * N;
-                         mass[vertex] += mN;
-                         for (unsigned int d = 0; d < dim; ++d)
-                           momentum[vertex][d] += mN * v[d];
-                       }
+                       add_mass_and_momentum(vertex, shares, N);
                      if (internal_force)
                        for (unsigned int d = 0; d < dim; ++d)
                          {
-                           double fi = minus_V_sigma[d][0] * grad_N[0];
+                           double fi = shares.minus_V_sigma[d][0] * grad_N[0];
                            for (unsigned int j = 1; j < dim; ++j)
-                             fi += minus_V_sigma[d][j] * grad_N[j];
+                             fi += shares.minus_V_sigma[d][j] * grad_N[j];
                            force[vertex][d] += fi;
                          }
                      ++vertex;
@@ -185,22 +206,36 @@ namespace dealmpm
       if (by_cell.empty(cell_index))
         return;
       CellSums<dim, mass_and_momentum, internal_force> sums;
-      // The cell's weights, chosen once for the cell.
-      const auto add_particles =
-        [&](const auto &weights_at) DEAL_II_ALWAYS_INLINE {
-          by_cell.for_each(cell_index,
-                           [&](const auto &p) DEAL_II_ALWAYS_INLINE {
-                             sums.add(p, particles.fields, weights_at);
-                           });
-        };
+      const CoreFields                                &f = particles.fields;
+      const unsigned int *const nodes = &grid.cell_nodes[c.first_node];
       if (LinearWeights<dim>::is_box(c))
-        add_particles(
-          [&](const Point<dim> &xi, auto &&f)
-            DEAL_II_ALWAYS_INLINE { LinearWeights<dim>::at_in_box(xi, c, f); });
+        {
+          BoxCellSums<dim, mass_and_momentum, internal_force> box;
+          by_cell.for_each(
+            cell_index, [&](const auto &p) DEAL_II_ALWAYS_INLINE {
+              const typename CellSums<dim, mass_and_momentum, internal_force>::
+                Shares shares(p, f);
+              box.add(shares.m,
+                      shares.v,
+                      shares.minus_V_sigma,
+                      p.get_reference_location());
+            });
+          for (unsigned int v = 0; v < GridCell<dim>::n_vertices; ++v)
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                sums.force[v][d]    = box.force(v, d, c.inverse_jacobian);
+                sums.momentum[v][d] = box.vertex_momentum(v, d);
+              }
+          for (unsigned int v = 0; v < GridCell<dim>::n_vertices; ++v)
+            sums.mass[v] = box.vertex_mass(v);
+        }
       else
-        add_particles([&](const Point<dim> &xi, auto &&f)
-                        DEAL_II_ALWAYS_INLINE { weights.at(xi, c, f); });
-      sums.scatter(&grid.cell_nodes[c.first_node], to);
+        by_cell.for_each(cell_index, [&](const auto &p) DEAL_II_ALWAYS_INLINE {
+          sums.add(p, f, [&](const Point<dim> &xi, auto &&g) {
+            weights.at(xi, c, g);
+          });
+        });
+      sums.scatter(nodes, to);
     }
 
     /** P2G a cell at a time, for linear weights computed here: a cell

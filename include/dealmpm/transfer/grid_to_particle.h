@@ -5,6 +5,7 @@
 #include <dealmpm/grid/nodal_field_set.h>
 #include <dealmpm/grid/nodal_fields.h>
 #include <dealmpm/particles/particle_set.h>
+#include <dealmpm/transfer/box_q1.h>
 #include <dealmpm/transfer/deformation_update.h>
 #include <dealmpm/transfer/formulation.h>
 #include <dealmpm/transfer/particle_weights.h>
@@ -170,11 +171,15 @@ namespace dealmpm
 
   namespace g2p_sweep
   {
+    template <int dim>
+    struct BoxWeights;
+
     /** The sums over particle @p k's stencil (in @p cell) that a
      * sweep needs, from the nodal arrays @p from: v_grid = sum N v (if it moves
      * the particle), dv = sum N dv and, with APIC (@p affine), B = sum N v (x)
      * (x_i - x_p) (if it updates the velocity), L = sum v (x) grad N (if it
-     * deforms).
+     * deforms). In a box cell (BoxWeights, @p from a CellArrays) by
+     * CellArrays::interpolate(), which needs no weights.
      */
     template <bool motion,
               bool move,
@@ -204,30 +209,35 @@ namespace dealmpm
       // moved it yet; its reference one in total Lagrangian).
       const Point<dim> x_affine =
         motion && affine ? stencil.position[k] : Point<dim>();
-      weights(k,
-              p,
-              cell,
-              [&](const unsigned int    n,
-                  const double          N,
-                  const Tensor<1, dim> &grad_N) DEAL_II_ALWAYS_INLINE {
-                for (unsigned int d = 0; d < dim; ++d)
-                  {
-                    if (move)
-                      v_grid[d] += N * velocity[d][n];
-                    if (motion)
-                      dv[d] += N * increment[d][n];
-                    if (deformation)
-                      for (unsigned int b = 0; b < dim; ++b)
-                        L[d][b] += velocity[d][n] * grad_N[b];
-                  }
-                if (motion && affine)
-                  {
-                    const Tensor<1, dim> r = grid.node_positions[n] - x_affine;
-                    for (unsigned int a = 0; a < dim; ++a)
-                      for (unsigned int b = 0; b < dim; ++b)
-                        B[a][b] += N * velocity[a][n] * r[b];
-                  }
-              });
+      if constexpr (std::is_same_v<Weights, BoxWeights<dim>>)
+        from.template interpolate<motion, move, deformation>(
+          p.get_reference_location(), v_grid, dv, L);
+      else
+        weights(k,
+                p,
+                cell,
+                [&](const unsigned int    n,
+                    const double          N,
+                    const Tensor<1, dim> &grad_N) DEAL_II_ALWAYS_INLINE {
+                  for (unsigned int d = 0; d < dim; ++d)
+                    {
+                      if (move)
+                        v_grid[d] += N * velocity[d][n];
+                      if (motion)
+                        dv[d] += N * increment[d][n];
+                      if (deformation)
+                        for (unsigned int b = 0; b < dim; ++b)
+                          L[d][b] += velocity[d][n] * grad_N[b];
+                    }
+                  if (motion && affine)
+                    {
+                      const Tensor<1, dim> r =
+                        grid.node_positions[n] - x_affine;
+                      for (unsigned int a = 0; a < dim; ++a)
+                        for (unsigned int b = 0; b < dim; ++b)
+                          B[a][b] += N * velocity[a][n] * r[b];
+                    }
+                });
       // USL's light nodes (update_nodal_velocity()) lend L only the weight
       // w of their own increment and the particle's interpolated dv for the
       // rest: v_i - (1 - w) (dv_i - dv). A second pass over the stencil,
@@ -357,10 +367,14 @@ namespace dealmpm
       const double *weight     = nullptr;
       bool          light_cell = false;
 
+      /** The same by component, for interpolate(). */
+      BoxQ1Component<dim> velocity_q1[dim], increment_q1[dim];
+
       CellArrays(const CellArrays &) = delete;
 
       DEAL_II_ALWAYS_INLINE
       CellArrays(const VelocityArrays<dim, light> &from,
+                 const GridCell<dim>              &cell,
                  const unsigned int               *nodes)
       {
         for (unsigned int v = 0; v < n_vertices; ++v)
@@ -369,6 +383,11 @@ namespace dealmpm
               velocity[d][v]  = from.velocity[d][nodes[v]];
               increment[d][v] = from.increment[d][nodes[v]];
             }
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            velocity_q1[d].set(velocity[d], cell.inverse_jacobian);
+            increment_q1[d].set(increment[d], cell.inverse_jacobian);
+          }
         if (light && from.weight)
           {
             weight = light_weight;
@@ -386,6 +405,32 @@ namespace dealmpm
       has_light_node(const BackgroundGrid<dim> &, const GridCell<dim> &) const
       {
         return light_cell;
+      }
+
+      /** gather()'s sums at unit-cell point @p xi (no APIC here). */
+      template <bool motion, bool move, bool deformation>
+      DEAL_II_ALWAYS_INLINE void
+      interpolate(const Point<dim> &xi,
+                  Tensor<1, dim>   &v_grid,
+                  Tensor<1, dim>   &dv,
+                  Tensor<2, dim>   &L) const
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            double grad[dim];
+            if (deformation)
+              {
+                const double v = velocity_q1[d].value_and_gradient(xi, grad);
+                for (unsigned int b = 0; b < dim; ++b)
+                  L[d][b] = grad[b];
+                if (move)
+                  v_grid[d] = v;
+              }
+            else if (move)
+              v_grid[d] = velocity_q1[d].value(xi);
+            if (motion)
+              dv[d] = increment_q1[d].value(xi);
+          }
       }
     };
 
@@ -440,7 +485,7 @@ namespace dealmpm
                   LinearWeights<dim>::is_box(c))
                 {
                   const CellArrays<dim, Arrays::may_be_light> local(
-                    arrays, &grid.cell_nodes[c.first_node]);
+                    arrays, c, &grid.cell_nodes[c.first_node]);
                   by_cell.for_each(i, [&](auto &p) DEAL_II_ALWAYS_INLINE {
                     per_particle(k++, p, c, BoxWeights<dim>(), local);
                   });
