@@ -10,6 +10,7 @@
 #include <memory>
 #include <random>
 #include <string>
+#include <vector>
 
 namespace dealmpm::test
 {
@@ -100,5 +101,88 @@ namespace dealmpm::test
           p.set_reference_location(xi);
           p.set_location(c.real_point(xi));
         }
+  }
+
+  /** Each particle's location, reference location and properties. */
+  template <int dim>
+  std::vector<double>
+  particle_state(const ParticleSet<dim> &particles)
+  {
+    std::vector<double> state;
+    for (const auto &p : particles.handler)
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            state.push_back(p.get_location()[d]);
+            state.push_back(p.get_reference_location()[d]);
+          }
+        for (const double value : p.get_properties())
+          state.push_back(value);
+      }
+    return state;
+  }
+
+  /** Put back a state particle_state() took. */
+  template <int dim>
+  void
+  set_particle_state(ParticleSet<dim> &particles, const std::vector<double> &s)
+  {
+    std::size_t i = 0;
+    for (auto &p : particles.handler)
+      {
+        Point<dim> x, xi;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            x[d]  = s[i++];
+            xi[d] = s[i++];
+          }
+        p.set_location(x);
+        p.set_reference_location(xi);
+        for (double &value : p.get_properties())
+          value = s[i++];
+      }
+  }
+
+  /** Random mass (+-50 %), velocity, stress (+-@p stress) and F (I +-0.1)
+   * on the particles; random nodal velocity, increment and light-node
+   * weight (0 to 1) on the grid. */
+  template <int dim>
+  void
+  randomize_state(ParticleSet<dim>          &particles,
+                  const BackgroundGrid<dim> &grid,
+                  NodalFields<dim>          &fields,
+                  std::mt19937              &rng,
+                  const double               stress = 100.)
+  {
+    std::uniform_real_distribution<double> r(-1., 1.);
+    const CoreFields                      &f = particles.fields;
+    for (auto &p : particles.handler)
+      {
+        auto props = p.get_properties();
+        props[f.mass] += 0.5 * r(rng) * props[f.mass];
+        for (unsigned int d = 0; d < dim; ++d)
+          props[f.velocity + d] = r(rng);
+        for (unsigned int i = 0;
+             i < SymmetricTensor<2, dim>::n_independent_components;
+             ++i)
+          props[f.stress + i] = stress * r(rng);
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = 0; j < dim; ++j)
+            props[f.deformation_gradient + i * dim + j] =
+              (i == j ? 1. : 0.) + 0.1 * r(rng);
+      }
+    fields.increment_weight.reinit(grid.partitioner);
+    for (unsigned int i = 0; i < fields.mass.locally_owned_size() +
+                                   grid.partitioner->n_ghost_indices();
+         ++i)
+      {
+        fields.increment_weight.local_element(i) = 0.5 + 0.5 * r(rng);
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            fields.velocity[d].local_element(i)           = r(rng);
+            fields.velocity_increment[d].local_element(i) = 0.1 * r(rng);
+          }
+      }
+    fields.has_light_nodes = true;
   }
 } // namespace dealmpm::test

@@ -354,21 +354,37 @@ namespace dealmpm
         sweep(s.fields);
     }
 
-    /** Run @p sweep(after_deformation) with the stress update: the lean
-     * one (StressUpdate::Of, no virtual call per particle) when every
+    /** The deforming G2P sweep @p what with the stress update in it: the
+     * lean one (StressUpdate::Of, no virtual call per particle) when every
      * material is linear elastic and the sweep is the plain one (updated
      * Lagrangian, no mixed-cell split, first-order F increment, one set of
      * nodal velocities), so that only those sweeps are compiled twice; the
-     * general one otherwise. */
-    template <int dim,
+     * general one otherwise. Returns whether a particle left its cell. */
+    template <G2P what,
+              int dim,
               typename Velocities,
               typename FormulationType,
               typename Adjust,
-              typename Increment,
-              typename Sweep>
-    void
-    with_stress_update(StepState<dim> &s, const Sweep &sweep)
+              typename Increment>
+    bool
+    deform_and_update_stress(StepState<dim>       &s,
+                             const Velocities     &velocities,
+                             const FormulationType formulation,
+                             const Adjust         &adjust,
+                             const Increment      &increment)
     {
+      const auto sweep = [&](auto &&after_deformation) {
+        return grid_to_particle<what, decltype(formulation)::value>(
+          s.grid,
+          s.stencil,
+          velocities,
+          s.dt,
+          s.method.flip_fraction,
+          s.particles,
+          after_deformation,
+          adjust,
+          increment);
+      };
       constexpr bool plain =
         FormulationType::value == Formulation::updated_lagrangian &&
         std::is_same_v<Adjust, NoGradientAdjustment> &&
@@ -379,7 +395,7 @@ namespace dealmpm
         if (s.stress_update.template all_materials_are<Elastic>())
           return sweep(
             typename StressUpdate<dim>::template Of<Elastic>{s.stress_update});
-      sweep(s.stress_update);
+      return sweep(s.stress_update);
     }
 
     template <int dim>
@@ -393,25 +409,8 @@ namespace dealmpm
           [&](const auto  formulation,
               const auto &adjust,
               const auto &increment) {
-            using Velocities = std::decay_t<decltype(velocities)>;
-            with_stress_update<dim,
-                               Velocities,
-                               decltype(formulation),
-                               std::decay_t<decltype(adjust)>,
-                               std::decay_t<decltype(increment)>>(
-              s, [&](auto &&after_deformation) {
-                s.left_cell = grid_to_particle<G2P::motion_and_deformation,
-                                               decltype(formulation)::value>(
-                  s.grid,
-                  s.stencil,
-                  velocities,
-                  s.dt,
-                  s.method.flip_fraction,
-                  s.particles,
-                  after_deformation,
-                  adjust,
-                  increment);
-              });
+            s.left_cell = deform_and_update_stress<G2P::motion_and_deformation>(
+              s, velocities, formulation, adjust, increment);
           });
       });
     }
@@ -464,34 +463,16 @@ namespace dealmpm
           [&](const auto  formulation,
               const auto &adjust,
               const auto &increment) {
-            using Velocities       = std::decay_t<decltype(velocities)>;
-            const auto deformation = [&](const auto what) {
-              with_stress_update<dim,
-                                 Velocities,
-                                 decltype(formulation),
-                                 std::decay_t<decltype(adjust)>,
-                                 std::decay_t<decltype(increment)>>(
-                s, [&](auto &&after_deformation) {
-                  grid_to_particle<decltype(what)::value,
-                                   decltype(formulation)::value>(
-                    s.grid,
-                    s.stencil,
-                    velocities,
-                    s.dt,
-                    s.method.flip_fraction,
-                    s.particles,
-                    after_deformation,
-                    adjust,
-                    increment);
-                });
-            };
             if constexpr (decltype(formulation)::value ==
                           Formulation::updated_lagrangian)
               if (defers_reference_location(s))
-                return deformation(
-                  std::integral_constant<G2P,
-                                         G2P::deformation_then_reference>());
-            deformation(std::integral_constant<G2P, G2P::deformation>());
+                {
+                  deform_and_update_stress<G2P::deformation_then_reference>(
+                    s, velocities, formulation, adjust, increment);
+                  return;
+                }
+            deform_and_update_stress<G2P::deformation>(
+              s, velocities, formulation, adjust, increment);
           });
       });
     }

@@ -220,14 +220,10 @@ namespace dealmpm
                       shares.minus_V_sigma,
                       p.get_reference_location());
             });
-          for (unsigned int v = 0; v < GridCell<dim>::n_vertices; ++v)
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                sums.force[v][d]    = box.force(v, d, c.inverse_jacobian);
-                sums.momentum[v][d] = box.vertex_momentum(v, d);
-              }
-          for (unsigned int v = 0; v < GridCell<dim>::n_vertices; ++v)
-            sums.mass[v] = box.vertex_mass(v);
+          box.by_vertex(c.inverse_jacobian,
+                        sums.mass,
+                        sums.momentum,
+                        sums.force);
         }
       else
         by_cell.for_each(cell_index, [&](const auto &p) DEAL_II_ALWAYS_INLINE {

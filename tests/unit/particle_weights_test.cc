@@ -1,11 +1,13 @@
 // Linear weights computed where P2G and G2P use them (Stencil::where_used)
-// give what the stored linear stencil gives: G2P's velocity, position,
-// reference location and F to the bit in USL's sweep (with the light-node
-// weights); P2G's nodal mass, momentum and force to round-off (it sums a
-// cell's particles first, so the sums change order) and so MUSL's G2P,
+// give what the stored linear stencil gives, to round-off: G2P's velocity,
+// position, reference location and F in USL's sweep (with the light-node
+// weights; in a box cell by multilinear interpolation, BoxQ1Component),
+// P2G's nodal mass, momentum and force (it sums a cell's particles first,
+// in a box cell the force by direction, BoxCellSums) and so MUSL's G2P,
 // re-map and stress update (which keep the reference location until the
-// stress update); on a grid with hanging nodes and on distorted
-// (non-affine) cells. The weights themselves are deal.II's Q1 functions.
+// stress update); on grids with hanging nodes in 2D and 3D and on
+// distorted (non-affine) cells. The weights themselves are deal.II's Q1
+// functions.
 #include <deal.II/fe/fe_q.h>
 
 #include <dealmpm/transfer/grid_to_particle.h>
@@ -36,6 +38,27 @@ subsection Body 1
 end
 )";
 
+  /** Box cells of three sizes (h = 0.25 to 1/12 along x, unequal edges)
+   * with hanging nodes between them. */
+  const char *refined_scene_3d = R"(
+set Dimension = 3
+subsection Grid
+  set Lower corner = 0, 0, 0
+  set Upper corner = 1, 2, 1
+  set Cells = 3, 4, 2
+  subsection Local refinement
+    set Levels = 2
+    set Lower corner = 0, 0, 0
+    set Upper corner = 0.5, 0.7, 0.5
+  end
+end
+subsection Body 1
+  set Lower corner = 0, 0, 0
+  set Upper corner = 1, 2, 1
+  set Particles per cell = 2
+end
+)";
+
   const std::string distorted_scene =
     "subsection Grid\n set Type = mesh file\n set Mesh file = " DEALMPM_SOURCE_DIR
     "/tests/data/distorted_square.msh\n set Global refinements = 2\nend\n"
@@ -57,101 +80,43 @@ end
     EXPECT_EQ(differ, 0u);
   }
 
-  /** Each particle's location, reference location and properties. */
-  std::vector<double>
-  particle_state(const ParticleSet<2> &particles)
+  /** How many entries of two particle states differ by more than
+   * round-off: in a box cell G2P interpolates the nodal values by
+   * successive linear interpolation (BoxQ1Component), not as
+   * sum_v N_v u_v, so v, L and what follows from them change by a few
+   * ulps of the nodal values (of order 1 here); 1e-12 is far above that
+   * and far below a wrong weight's O(0.01 to 1) error. */
+  unsigned int
+  n_differ(const std::vector<double> &a, const std::vector<double> &b)
   {
-    std::vector<double> state;
-    for (const auto &p : particles.handler)
-      {
-        for (unsigned int d = 0; d < 2; ++d)
-          {
-            state.push_back(p.get_location()[d]);
-            state.push_back(p.get_reference_location()[d]);
-          }
-        for (const double value : p.get_properties())
-          state.push_back(value);
-      }
-    return state;
+    unsigned int differ = 0;
+    for (std::size_t i = 0; i < a.size(); ++i)
+      differ += std::abs(a[i] - b[i]) > 1e-12 * std::max(1., std::abs(a[i]));
+    return differ;
   }
 
-  void
-  set_particle_state(ParticleSet<2> &particles, const std::vector<double> &s)
-  {
-    std::size_t i = 0;
-    for (auto &p : particles.handler)
-      {
-        Point<2> x, xi;
-        for (unsigned int d = 0; d < 2; ++d)
-          {
-            x[d]  = s[i++];
-            xi[d] = s[i++];
-          }
-        p.set_location(x);
-        p.set_reference_location(xi);
-        for (double &value : p.get_properties())
-          value = s[i++];
-      }
-  }
-
-  /** Random state on the particles and a random nodal velocity,
-   * increment and light-node weight on the grid. */
-  void
-  randomize(ParticleSet<2>          &particles,
-            const BackgroundGrid<2> &grid,
-            NodalFields<2>          &fields,
-            std::mt19937            &rng)
-  {
-    std::uniform_real_distribution<double> r(-1., 1.);
-    const CoreFields                      &f = particles.fields;
-    for (auto &p : particles.handler)
-      {
-        auto props = p.get_properties();
-        props[f.mass] += 0.5 * r(rng) * props[f.mass];
-        for (unsigned int d = 0; d < 2; ++d)
-          props[f.velocity + d] = r(rng);
-        for (unsigned int i = 0; i < 3; ++i)
-          props[f.stress + i] = 100. * r(rng);
-        for (unsigned int i = 0; i < 4; ++i)
-          props[f.deformation_gradient + i] =
-            (i == 0 || i == 3 ? 1. : 0.) + 0.1 * r(rng);
-      }
-    fields.increment_weight.reinit(grid.partitioner);
-    for (unsigned int i = 0; i < fields.mass.locally_owned_size() +
-                                   grid.partitioner->n_ghost_indices();
-         ++i)
-      {
-        fields.increment_weight.local_element(i) = 0.5 + 0.5 * r(rng);
-        for (unsigned int d = 0; d < 2; ++d)
-          {
-            fields.velocity[d].local_element(i)           = r(rng);
-            fields.velocity_increment[d].local_element(i) = 0.1 * r(rng);
-          }
-      }
-    fields.has_light_nodes = true;
-  }
-
+  template <int dim>
   void
   check_weights_where_used(const std::string &scene)
   {
-    auto         simulation = test::make_simulation<2>(scene);
+    auto         simulation = test::make_simulation<dim>(scene);
     std::mt19937 rng(7);
     test::scatter_particles_in_cells(*simulation, rng);
-    ParticleSet<2>          &particles = simulation->particle_set();
-    const BackgroundGrid<2> &grid      = simulation->background_grid();
-    NodalFields<2>           fields, fields_where_used, fields_stored_remap;
+    ParticleSet<dim>          &particles = simulation->particle_set();
+    const BackgroundGrid<dim> &grid      = simulation->background_grid();
+    NodalFields<dim>           fields, fields_where_used, fields_stored_remap;
     fields.reinit(grid.partitioner);
     fields_where_used.reinit(grid.partitioner);
     fields_stored_remap.reinit(grid.partitioner);
-    randomize(particles, grid, fields, rng);
+    test::randomize_state(particles, grid, fields, rng);
 
-    Stencil<2> stored, where_used;
+    Stencil<dim> stored, where_used;
     compute_linear_stencil(grid, particles, stored);
     where_used.where_used = true;
     particle_to_grid(grid, particles, stored, fields);
     particle_to_grid(grid, particles, where_used, fields_where_used);
     expect_same_sums(fields.mass, fields_where_used.mass);
-    for (unsigned int d = 0; d < 2; ++d)
+    for (unsigned int d = 0; d < dim; ++d)
       {
         expect_same_sums(fields.momentum[d], fields_where_used.momentum[d]);
         expect_same_sums(fields.force[d], fields_where_used.force[d]);
@@ -159,31 +124,29 @@ end
 
     // USL's sweep: gather with the light-node pass, then move (which
     // changes the reference location the weights are computed from).
-    const std::vector<double> before = particle_state(particles);
-    const auto                g2p    = [&](const Stencil<2> &stencil) {
-      set_particle_state(particles, before);
+    const std::vector<double> before = test::particle_state(particles);
+    const auto                g2p    = [&](const Stencil<dim> &stencil) {
+      test::set_particle_state(particles, before);
       grid_to_particle<G2P::motion_and_deformation>(grid,
                                                     stencil,
-                                                    WithLightNodes<2>{fields},
+                                                    WithLightNodes<dim>{fields},
                                                     /*dt=*/0.01,
                                                     /*flip_fraction=*/0.9,
                                                     particles);
-      return particle_state(particles);
+      return test::particle_state(particles);
     };
     const std::vector<double> after_stored     = g2p(stored);
     const std::vector<double> after_where_used = g2p(where_used);
     ASSERT_EQ(after_stored.size(), after_where_used.size());
-    unsigned int differ = 0;
-    for (std::size_t i = 0; i < after_stored.size(); ++i)
-      differ += after_stored[i] != after_where_used[i];
-    EXPECT_EQ(differ, 0u);
+    EXPECT_EQ(n_differ(after_stored, after_where_used), 0u);
     EXPECT_NE(after_stored, before); // the sweep did something
 
     // MUSL's G2P, re-map and stress update: the stored weights are the
     // step's start's; computed where used, from the reference location
     // its G2P leaves and its stress update sets.
-    const auto musl = [&](const Stencil<2> &stencil, NodalFields<2> &remap) {
-      set_particle_state(particles, before);
+    const auto musl = [&](const Stencil<dim> &stencil,
+                          NodalFields<dim>   &remap) {
+      test::set_particle_state(particles, before);
       const bool keep = stencil.where_used;
       if (keep)
         grid_to_particle<G2P::motion_keeping_reference>(
@@ -198,33 +161,34 @@ end
       else
         grid_to_particle<G2P::deformation>(
           grid, stencil, remap, 0.01, 0.9, particles);
-      return particle_state(particles);
+      return test::particle_state(particles);
     };
     const std::vector<double> musl_stored = musl(stored, fields_stored_remap);
     const std::vector<double> musl_where_used =
       musl(where_used, fields_where_used);
     expect_same_sums(fields_stored_remap.mass, fields_where_used.mass);
-    for (unsigned int d = 0; d < 2; ++d)
+    for (unsigned int d = 0; d < dim; ++d)
       expect_same_sums(fields_stored_remap.momentum[d],
                        fields_where_used.momentum[d]);
     // The re-mapped velocity carries P2G's round-off into L and F.
-    differ = 0;
-    for (std::size_t i = 0; i < musl_stored.size(); ++i)
-      differ += std::abs(musl_stored[i] - musl_where_used[i]) >
-                1e-12 * std::max(1., std::abs(musl_stored[i]));
-    EXPECT_EQ(differ, 0u);
+    EXPECT_EQ(n_differ(musl_stored, musl_where_used), 0u);
     EXPECT_NE(musl_stored, before);
   }
 } // namespace
 
 TEST(ParticleWeights, WhereUsedEqualStoredWithHangingNodes)
 {
-  check_weights_where_used(refined_scene);
+  check_weights_where_used<2>(refined_scene);
 }
 
 TEST(ParticleWeights, WhereUsedEqualStoredOnDistortedCells)
 {
-  check_weights_where_used(distorted_scene);
+  check_weights_where_used<2>(distorted_scene);
+}
+
+TEST(ParticleWeights, WhereUsedEqualStoredIn3D)
+{
+  check_weights_where_used<3>(refined_scene_3d);
 }
 
 namespace

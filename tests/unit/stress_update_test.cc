@@ -33,80 +33,6 @@ namespace
     return m;
   }
 
-  /** Each particle's location, reference location and properties. */
-  template <int dim>
-  std::vector<double>
-  particle_state(const ParticleSet<dim> &particles)
-  {
-    std::vector<double> state;
-    for (const auto &p : particles.handler)
-      {
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            state.push_back(p.get_location()[d]);
-            state.push_back(p.get_reference_location()[d]);
-          }
-        for (const double value : p.get_properties())
-          state.push_back(value);
-      }
-    return state;
-  }
-
-  template <int dim>
-  void
-  set_particle_state(ParticleSet<dim> &particles, const std::vector<double> &s)
-  {
-    std::size_t i = 0;
-    for (auto &p : particles.handler)
-      {
-        Point<dim> x, xi;
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            x[d]  = s[i++];
-            xi[d] = s[i++];
-          }
-        p.set_location(x);
-        p.set_reference_location(xi);
-        for (double &value : p.get_properties())
-          value = s[i++];
-      }
-  }
-
-  /** Random velocity, stress and F (near I) on the particles, random nodal
-   * velocities and increments on the grid. */
-  template <int dim>
-  void
-  randomize(ParticleSet<dim>          &particles,
-            const BackgroundGrid<dim> &grid,
-            NodalFields<dim>          &fields,
-            std::mt19937              &rng)
-  {
-    std::uniform_real_distribution<double> r(-1., 1.);
-    const CoreFields                      &f = particles.fields;
-    for (auto &p : particles.handler)
-      {
-        auto props = p.get_properties();
-        for (unsigned int d = 0; d < dim; ++d)
-          props[f.velocity + d] = r(rng);
-        for (unsigned int i = 0;
-             i < SymmetricTensor<2, dim>::n_independent_components;
-             ++i)
-          props[f.stress + i] = 1e4 * r(rng);
-        for (unsigned int i = 0; i < dim; ++i)
-          for (unsigned int j = 0; j < dim; ++j)
-            props[f.deformation_gradient + i * dim + j] =
-              (i == j ? 1. : 0.) + 0.1 * r(rng);
-      }
-    for (unsigned int i = 0; i < fields.mass.locally_owned_size() +
-                                   grid.partitioner->n_ghost_indices();
-         ++i)
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          fields.velocity[d].local_element(i)           = r(rng);
-          fields.velocity_increment[d].local_element(i) = 0.1 * r(rng);
-        }
-  }
-
   template <int dim>
   void
   check_lean_equals_general(const std::string &scene)
@@ -118,19 +44,19 @@ namespace
     const BackgroundGrid<dim> &grid      = simulation->background_grid();
     NodalFields<dim>           fields;
     fields.reinit(grid.partitioner);
-    randomize(particles, grid, fields, rng);
+    test::randomize_state(particles, grid, fields, rng, 1e4);
     std::vector<std::unique_ptr<Material<dim>>> materials;
     materials.push_back(linear_elastic<dim>());
 
     Stencil<dim> stencil;
     stencil.where_used               = true;
     const double              dt     = 1e-3;
-    const std::vector<double> before = particle_state(particles);
+    const std::vector<double> before = test::particle_state(particles);
     const auto                sweep  = [&](auto &&after_deformation) {
-      set_particle_state(particles, before);
+      test::set_particle_state(particles, before);
       grid_to_particle<G2P::motion_and_deformation>(
         grid, stencil, fields, dt, 0.9, particles, after_deformation);
-      return particle_state(particles);
+      return test::particle_state(particles);
     };
     StressUpdate<dim>         general(materials, particles, dt);
     StressUpdate<dim>         lean(materials, particles, dt);

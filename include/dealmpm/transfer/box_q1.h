@@ -213,35 +213,37 @@ namespace dealmpm
           }
     }
 
-    /** The force on vertex @p v in direction @p d of the cell whose
-     * d xi / d x is @p K (diagonal). */
-    DEAL_II_ALWAYS_INLINE double
-    force(const unsigned int    v,
-          const unsigned int    d,
-          const Tensor<2, dim> &K) const
+    /** The sums by vertex, into CellSums' arrays: the force from the
+     * cell's d xi / d x @p K (diagonal), summed over j in increasing
+     * order. */
+    DEAL_II_ALWAYS_INLINE void
+    by_vertex(const Tensor<2, dim> &K,
+              double (&vertex_mass)[n_vertices],
+              double (&vertex_momentum)[n_vertices][dim],
+              double (&vertex_force)[n_vertices][dim]) const
     {
-      double sum = 0;
-      for (unsigned int j = 0; j < dim; ++j)
+      for (unsigned int v = 0; v < n_vertices; ++v)
         {
-          // v without its bit j: the side of the other directions.
-          const unsigned int u = (v & ((1u << j) - 1)) | ((v >> (j + 1)) << j);
-          const double       t = K[j][j] * T[j][d][u / 2][u % 2];
-          sum += ((v >> j) & 1u) ? t : -t;
+          vertex_mass[v] = mass[v / 2][v % 2];
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              vertex_momentum[v][d] = momentum[d][v / 2][v % 2];
+              vertex_force[v][d]    = 0;
+            }
         }
-      return sum;
-    }
-
-    /** The mass and the momentum in direction @p d of vertex @p v. */
-    DEAL_II_ALWAYS_INLINE double
-    vertex_mass(const unsigned int v) const
-    {
-      return mass[v / 2][v % 2];
-    }
-
-    DEAL_II_ALWAYS_INLINE double
-    vertex_momentum(const unsigned int v, const unsigned int d) const
-    {
-      return momentum[d][v / 2][v % 2];
+      if (internal_force)
+        for (unsigned int j = 0; j < dim; ++j)
+          for (unsigned int d = 0; d < dim; ++d)
+            for (unsigned int u = 0; u < n_vertices / 2; ++u)
+              {
+                const double t = K[j][j] * T[j][d][u / 2][u % 2];
+                // The vertices on side u of the other directions: bit j
+                // inserted into u, 0 (N falls along j) and 1.
+                const unsigned int low =
+                  (u & ((1u << j) - 1)) | ((u >> j) << (j + 1));
+                vertex_force[low][d] -= t;
+                vertex_force[low | (1u << j)][d] += t;
+              }
     }
   };
 } // namespace dealmpm

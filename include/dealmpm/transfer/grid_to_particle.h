@@ -202,8 +202,6 @@ namespace dealmpm
            Tensor<2, dim>            &L,
            Tensor<2, dim>            &B)
     {
-      const auto &velocity  = from.velocity;
-      const auto &increment = from.increment;
       // APIC measures x_i - x_p from the stencil's positions (the
       // particle's own in the updated Lagrangian sweeps, which have not
       // moved it yet; its reference one in total Lagrangian).
@@ -222,12 +220,12 @@ namespace dealmpm
                   for (unsigned int d = 0; d < dim; ++d)
                     {
                       if (move)
-                        v_grid[d] += N * velocity[d][n];
+                        v_grid[d] += N * from.velocity[d][n];
                       if (motion)
-                        dv[d] += N * increment[d][n];
+                        dv[d] += N * from.increment[d][n];
                       if (deformation)
                         for (unsigned int b = 0; b < dim; ++b)
-                          L[d][b] += velocity[d][n] * grad_N[b];
+                          L[d][b] += from.velocity[d][n] * grad_N[b];
                     }
                   if (motion && affine)
                     {
@@ -235,7 +233,7 @@ namespace dealmpm
                         grid.node_positions[n] - x_affine;
                       for (unsigned int a = 0; a < dim; ++a)
                         for (unsigned int b = 0; b < dim; ++b)
-                          B[a][b] += N * velocity[a][n] * r[b];
+                          B[a][b] += N * from.velocity[a][n] * r[b];
                     }
                 });
       // USL's light nodes (update_nodal_velocity()) lend L only the weight
@@ -257,7 +255,7 @@ namespace dealmpm
                       for (unsigned int d = 0; d < dim; ++d)
                         for (unsigned int b = 0; b < dim; ++b)
                           L[d][b] +=
-                            light * (dv[d] - increment[d][n]) * grad_N[b];
+                            light * (dv[d] - from.increment[d][n]) * grad_N[b];
                   });
     }
 
@@ -350,9 +348,10 @@ namespace dealmpm
     }
 
     /** One box cell's nodal velocities and increments (and USL's
-     * light-node weights) copied into locals, indexed by the cell's vertex:
-     * what its particles read through BoxWeights. The nodal arrays are read
-     * once a cell instead of once a particle, through no node index. */
+     * light-node weights) copied into locals, indexed by the cell's vertex
+     * (what the light-node pass reads through BoxWeights), and prepared for
+     * interpolation (BoxQ1Component): the nodal arrays are read once a
+     * cell instead of once a particle. */
     template <int dim, bool light>
     struct CellArrays
     {

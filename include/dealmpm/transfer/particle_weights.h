@@ -14,7 +14,8 @@ namespace dealmpm
    * vertex's upper side of direction d and 1 - xi_d on its lower side, and
    * d N_v / d xi_d = +-prod_(b != d) f_b, the products taken in increasing
    * d. Written out per dimension: the loop over directions did not unroll,
-   * and G2P and P2G call this once per particle each. */
+   * and P2G's box cells (for N), cells that are not boxes and CPDI's
+   * corners call this once per particle. */
   template <int dim>
   DEAL_II_ALWAYS_INLINE inline void
   q1_values(const Point<dim> &xi, double *N, Tensor<1, dim> *grad_xi)
