@@ -13,6 +13,11 @@
 # when the particles per cell rise (2 to 4 per direction in 2D, 2 to 3 in
 # 3D), per particle added.
 #   benchmarks/run_benchmarks.sh [path/to/dealmpm] [sizes|kernels|flowing|memory|all]
+# With `compare OLD [rounds]`, the column at each size from 65k particles
+# up, run by OLD and by this dealmpm in turn (rounds times, default 3; the
+# best of each): the speed-up measured in one run, as the machine's load
+# changes for both alike.
+#   benchmarks/run_benchmarks.sh path/to/dealmpm compare path/to/old [rounds]
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 dealmpm=${1:-$here/../build/dealmpm}
@@ -53,6 +58,29 @@ run() { # dim cells
   echo "| ${dim}D | $cells | $particles | $rate | $mb | $marginal |"
   previous_particles=$particles previous_mb=$mb
 }
+if [ "$part" = compare ]; then
+  old=${3:?"compare needs the old dealmpm: run_benchmarks.sh NEW compare OLD [rounds]"}
+  rounds=${4:-3}
+  rate_of() { # binary dim cells -> M particle-steps/s per core of one run
+    "$1" "$here/elastic_column_${2}d.prm" -s "Grid/Cells=$3" \
+      -s "Output/Directory=$work/out" > "$work/log" 2>&1
+    grep -o '([0-9.e+-]* M per core)' "$work/log" | grep -o '[0-9.e+-]*' | head -1
+  }
+  echo "| dim | cells | particles | old, M p-steps/s | new | new / old |"
+  echo "|---|---|---|---|---|---|"
+  for size in "2|64, 288" "2|128, 576" "2|256, 1152" "3|16, 16, 72" "3|24, 24, 108"; do
+    dim=${size%%|*} cells=${size#*|} best_old="" best_new=""
+    for round in $(seq "$rounds"); do
+      r=$(rate_of "$old" "$dim" "$cells")
+      best_old=$(printf '%s\n%s\n' "$best_old" "$r" | sort -g | tail -1)
+      r=$(rate_of "$dealmpm" "$dim" "$cells")
+      best_new=$(printf '%s\n%s\n' "$best_new" "$r" | sort -g | tail -1)
+    done
+    echo "| ${dim}D | $cells | $(log_particles) | $best_old | $best_new | $(awk "BEGIN {printf \"%.2f\", $best_new / $best_old}") |"
+  done
+  exit 0
+fi
+
 if [ "$part" = all ] || [ "$part" = sizes ]; then
 echo "| dim | cells | particles | M particle-steps/s/core | peak MB | bytes/particle (marginal) |"
 echo "|---|---|---|---|---|---|"
