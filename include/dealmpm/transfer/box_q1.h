@@ -1,7 +1,6 @@
 #pragma once
 
 #include <deal.II/base/config.h>
-#include <deal.II/base/vectorization.h>
 
 #include <dealmpm/grid/background_grid.h>
 
@@ -146,28 +145,12 @@ namespace dealmpm
     static constexpr unsigned int n_vertices = 1u << dim;
     static constexpr unsigned int n_pairs    = n_vertices / 2;
     /** Pairs of sides of the directions other than one. */
-    static constexpr unsigned int n_side_pairs = n_vertices / 4;
-    Pair                          mass[n_pairs];
-    Pair                          momentum[dim][n_pairs];
+    static constexpr unsigned int n_side_pairs           = n_vertices / 4;
+    Pair                          mass[n_pairs]          = {};
+    Pair                          momentum[dim][n_pairs] = {};
     /** T[j][d][q]: sides u = 2 q and 2 q + 1 (u indexes the directions
      * other than j in increasing order, the lowest first). */
-    Pair T[dim][dim][n_side_pairs];
-
-    BoxCellSums()
-    {
-      for (unsigned int q = 0; q < n_pairs; ++q)
-        {
-          mass[q] = Pair{};
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              momentum[d][q] = Pair{};
-            }
-        }
-      for (unsigned int q = 0; q < n_side_pairs; ++q)
-        for (unsigned int j = 0; j < dim; ++j)
-          for (unsigned int d = 0; d < dim; ++d)
-            T[j][d][q] = Pair{};
-    }
+    Pair T[dim][dim][n_side_pairs] = {};
 
     /** Add a particle of mass @p m and velocity @p v, S = -V sigma
      * (S[d][j]), at unit-cell point @p xi. */
