@@ -320,53 +320,62 @@ namespace dealmpm
                                !Targets::per_body && !affine &&
                                !total_lagrangian && !predictor;
       const auto per_particle =
-        [&](const std::size_t    k,
-            const auto          &p,
-            const GridCell<dim> &c) DEAL_II_ALWAYS_INLINE {
-          const ArrayView<const double> props = p.get_properties();
-          const double                  m     = props[f.mass];
-          const NodalPointers<dim>     &to    = targets.of(props);
-          Tensor<1, dim> v = read_vector<dim>(&props[f.velocity]);
-          // Newmark: the grid carries the predicted velocity.
-          if constexpr (predictor)
-            v -= predictor_offset * read_vector<dim>(&props[f.acceleration]);
-          Tensor<2, dim> C;
-          Point<dim>     x_p;
-          if (affine)
-            {
-              x_p = stencil.position[k];
-              C   = affine_velocity_gradient(grid, weights, k, p, c, x_p, f);
-            }
-          // Once per particle.
-          decltype(force_per_gradient<total_lagrangian, dim>(props, f)) Vsigma;
-          if (internal_force)
-            Vsigma = force_per_gradient<total_lagrangian, dim>(props, f);
-          weights(k,
-                  p,
-                  c,
-                  [&](const unsigned int    n,
-                      const double          N,
-                      const Tensor<1, dim> &grad_N) DEAL_II_ALWAYS_INLINE {
-                    if (mass_and_momentum)
-                      {
-                        const double mN = m * N;
-                        to.mass[n] += mN;
-                        const Tensor<1, dim> v_n =
-                          affine ? v + C * (grid.node_positions[n] - x_p) : v;
-                        for (unsigned int d = 0; d < dim; ++d)
-                          to.momentum[d][n] += mN * v_n[d];
-                        if constexpr (Targets::per_body)
+        [&](const std::size_t k, const auto &p, const GridCell<dim> &c)
+          DEAL_II_ALWAYS_INLINE {
+            const ArrayView<const double> props = p.get_properties();
+            const double                  m     = props[f.mass];
+            const NodalPointers<dim>     &to    = targets.of(props);
+            Tensor<1, dim> v = read_vector<dim>(&props[f.velocity]);
+            // Newmark: the grid carries the predicted velocity.
+            if constexpr (predictor)
+              v -= predictor_offset * read_vector<dim>(&props[f.acceleration]);
+            Tensor<2, dim> C;
+            Point<dim>     x_p;
+            if (affine)
+              {
+                x_p = stencil.position[k];
+                C   = affine_velocity_gradient(grid, weights, k, p, c, x_p, f);
+              }
+            // Once per particle, as a plain array (deal.II's symmetric
+            // tensor times a vector goes through accessor objects).
+            double force_per_gradient_component[dim][dim] = {};
+            if (internal_force)
+              {
+                const auto P =
+                  force_per_gradient<total_lagrangian, dim>(props, f);
+                for (unsigned int i = 0; i < dim; ++i)
+                  for (unsigned int j = 0; j < dim; ++j)
+                    force_per_gradient_component[i][j] = P[i][j];
+              }
+            weights(k,
+                    p,
+                    c,
+                    [&](const unsigned int    n,
+                        const double          N,
+                        const Tensor<1, dim> &grad_N) DEAL_II_ALWAYS_INLINE {
+                      if (mass_and_momentum)
+                        {
+                          const double mN = m * N;
+                          to.mass[n] += mN;
+                          const Tensor<1, dim> v_n =
+                            affine ? v + C * (grid.node_positions[n] - x_p) : v;
                           for (unsigned int d = 0; d < dim; ++d)
-                            to.mass_gradient[d][n] += m * grad_N[d];
-                      }
-                    if (internal_force)
-                      {
-                        const Tensor<1, dim> fi = Vsigma * grad_N;
+                            to.momentum[d][n] += mN * v_n[d];
+                          if constexpr (Targets::per_body)
+                            for (unsigned int d = 0; d < dim; ++d)
+                              to.mass_gradient[d][n] += m * grad_N[d];
+                        }
+                      if (internal_force)
                         for (unsigned int d = 0; d < dim; ++d)
-                          to.force[d][n] += fi[d];
-                      }
-                  });
-        };
+                          {
+                            const double *P  = force_per_gradient_component[d];
+                            double        fi = P[0] * grad_N[0];
+                            for (unsigned int j = 1; j < dim; ++j)
+                              fi += P[j] * grad_N[j];
+                            to.force[d][n] += fi;
+                          }
+                    });
+          };
       if constexpr (by_cell)
         transfer_by_cell<dim, mass_and_momentum, internal_force>(
           grid, particles, weights, targets.fields, per_particle);
