@@ -1,7 +1,9 @@
+#include <dealmpm/transfer/lattice_blocks.h>
 #include <dealmpm/transfer/stencil.h>
 #include <dealmpm/transfer/stencil_order.h>
 
 #include <algorithm>
+#include <cstdint>
 
 #include "node_accumulator.h"
 
@@ -176,11 +178,101 @@ namespace dealmpm
                         "cpGIMP";
     }
 
+    /**
+     * Particle k's entries on the lattice @p block of its cell @p own (an
+     * axis-aligned box): each corner's Q1 values in the lattice cell that
+     * holds it, summed by lattice node, the nodes in lattice order. False
+     * (nothing appended) when a corner lies outside the cells of its patch.
+     */
+    template <int dim>
+    DEAL_II_ALWAYS_INLINE inline bool
+    append_on_lattice(const unsigned int   *block,
+                      const std::uint32_t   present,
+                      const GridCell<dim>  &own,
+                      const Point<dim>     &x,
+                      const Tensor<2, dim> &R,
+                      const Tensor<2, dim> &R_inverse_transpose,
+                      const std::size_t     k,
+                      std::size_t          &e,
+                      Stencil<dim>         &stencil)
+    {
+      constexpr unsigned int n_corners = GridCell<dim>::n_vertices;
+      // Raw arrays: deal.II's tensors zero themselves when made, and each
+      // sum is only set where a corner's cell first touches its node.
+      double        N[Utilities::pow(4, dim)];
+      double        G[Utilities::pow(4, dim)][dim];
+      std::uint64_t touched = 0; // bit n: lattice node n has a sum
+      unsigned int  n_new   = 0; // bits set in touched
+      for (unsigned int corner = 0; corner < n_corners; ++corner)
+        {
+          Tensor<1, dim> sign;
+          for (unsigned int d = 0; d < dim; ++d)
+            sign[d] = ((corner >> d) & 1u) ? 1. : -1.;
+          const Point<dim> x_c = x + R * sign;
+          Point<dim>       xi;
+          unsigned int     base = 0; // the lattice node of its cell's vertex 0
+          unsigned int     side = 0; // its cell's side index in the patch
+          for (unsigned int d = 0, stride = 1; d < dim; ++d, stride *= 3)
+            {
+              const double t =
+                (x_c[d] - own.vertices[0][d]) * own.inverse_jacobian[d][d];
+              if (!(t >= -1. && t < 2.))
+                return false;
+              const int offset = t < 0. ? -1 : (t < 1. ? 0 : 1);
+              xi[d]            = t - offset;
+              base += (offset + 1) << (2 * d);
+              side += (offset + 1) * stride;
+            }
+          if (!((present >> side) & 1u))
+            return false;
+          double N_corner[n_corners];
+          q1_values<dim>(xi, N_corner, nullptr);
+          const Tensor<1, dim> g =
+            R_inverse_transpose * sign / double(n_corners);
+          for (unsigned int v = 0; v < n_corners; ++v)
+            {
+              unsigned int n = base;
+              for (unsigned int d = 0; d < dim; ++d)
+                n += ((v >> d) & 1u) << (2 * d);
+              if (!((touched >> n) & 1u))
+                {
+                  touched |= std::uint64_t(1) << n;
+                  ++n_new;
+                  N[n] = 0;
+                  for (unsigned int d = 0; d < dim; ++d)
+                    G[n][d] = 0;
+                }
+              // 1 / n_corners is a power of two: multiplying is dividing.
+              N[n] += N_corner[v] * (1. / n_corners);
+              for (unsigned int d = 0; d < dim; ++d)
+                G[n][d] += N_corner[v] * g[d];
+            }
+        }
+      stencil.begin[k] = e;
+      if (stencil.node.size() < e + n_new)
+        {
+          const std::size_t capacity = (e + n_new) * 3 / 2 + 64;
+          stencil.node.resize(capacity);
+          stencil.N.resize(capacity);
+          stencil.grad_N.resize(capacity);
+        }
+      for (; touched != 0; touched &= touched - 1, ++e)
+        {
+          const unsigned int n = __builtin_ctzll(touched);
+          stencil.node[e]      = block[n];
+          stencil.N[e]         = N[n];
+          for (unsigned int d = 0; d < dim; ++d)
+            stencil.grad_N[e][d] = G[n][d];
+        }
+      return true;
+    }
+
     template <int dim, bool boxes>
     void
     compute(const BackgroundGrid<dim> &grid,
             const ParticleSet<dim>    &particles,
-            Stencil<dim>              &stencil)
+            Stencil<dim>              &stencil,
+            const LatticeBlocks<dim>  *lattice)
     {
       constexpr unsigned int n_corners = GridCell<dim>::n_vertices;
       // A corner further than this (in unit-cell lengths) from every cell
@@ -204,6 +296,18 @@ namespace dealmpm
               domain_half_edges<dim>(p.get_properties(), f);
             const Tensor<2, dim> R_inverse_transpose =
               determinant(R) > 0 ? transpose(invert(R)) : Tensor<2, dim>();
+            const unsigned int *block =
+              boxes && lattice ? lattice->of(i) : nullptr;
+            if (block != nullptr && append_on_lattice(block,
+                                                      lattice->cells_present(i),
+                                                      own,
+                                                      x,
+                                                      R,
+                                                      R_inverse_transpose,
+                                                      k,
+                                                      e,
+                                                      stencil))
+              return;
             sums.clear();
             for (unsigned int corner = 0; corner < n_corners; ++corner)
               {
@@ -232,19 +336,21 @@ namespace dealmpm
   void
   compute_cpdi_stencil(const BackgroundGrid<dim> &grid,
                        const ParticleSet<dim>    &particles,
-                       Stencil<dim>              &stencil)
+                       Stencil<dim>              &stencil,
+                       const LatticeBlocks<dim>  *lattice)
   {
     stencil.failed = false;
     if (grid.cartesian)
-      compute<dim, true>(grid, particles, stencil);
+      compute<dim, true>(grid, particles, stencil, lattice);
     else
-      compute<dim, false>(grid, particles, stencil);
+      compute<dim, false>(grid, particles, stencil, nullptr);
   }
 
 #define DEALMPM_INSTANTIATE(dim)                                  \
   template void compute_cpdi_stencil(const BackgroundGrid<dim> &, \
                                      const ParticleSet<dim> &,    \
-                                     Stencil<dim> &);
+                                     Stencil<dim> &,              \
+                                     const LatticeBlocks<dim> *);
   DEALMPM_INSTANTIATE(2)
   DEALMPM_INSTANTIATE(3)
 #undef DEALMPM_INSTANTIATE

@@ -1,8 +1,10 @@
+#include <dealmpm/transfer/lattice_blocks.h>
 #include <dealmpm/transfer/stencil.h>
 #include <dealmpm/transfer/stencil_order.h>
 
 #include <algorithm>
 
+#include "lattice_products.h"
 #include "node_accumulator.h"
 
 namespace dealmpm
@@ -11,7 +13,7 @@ namespace dealmpm
   {
     /** Integrals over [a, b] of the 1D hats of a cell [x0, x1]: the one
      * that is 1 at x0 (lower) and the one that is 1 at x1 (upper). */
-    inline void
+    DEAL_II_ALWAYS_INLINE inline void
     hat_integrals(const double a,
                   const double b,
                   const double x0,
@@ -71,6 +73,81 @@ namespace dealmpm
         }
       return true;
     }
+
+    /** The 1D weights of [x - l, x + l] on the lattice of the cell
+     * [x0, x1]; false when the domain reaches past the three cells. */
+    DEAL_II_ALWAYS_INLINE inline bool
+    lattice_weights_1d(const double      x,
+                       const double      l,
+                       const double      x0,
+                       const double      x1,
+                       LatticeWeights1D &w)
+    {
+      const double h         = x1 - x0;
+      const double bounds[4] = {x0 - h, x0, x1, x1 + h};
+      if (x - l < bounds[0] || x + l > bounds[3])
+        return false;
+      double length = 0;
+      w.count       = 0;
+      for (unsigned int k = 0; k < 3; ++k)
+        {
+          const double a = std::max(x - l, bounds[k]);
+          const double b = std::min(x + l, bounds[k + 1]);
+          if (!(b > a))
+            continue;
+          if (w.count == 0)
+            {
+              w.first    = k;
+              w.count    = 1;
+              w.value[k] = 0;
+              w.slope[k] = 0;
+            }
+          double lower, upper;
+          hat_integrals(a, b, bounds[k], bounds[k + 1], lower, upper);
+          w.value[k] += lower;
+          w.slope[k] -= (b - a) / h;
+          w.value[k + 1] = upper;
+          w.slope[k + 1] = (b - a) / h;
+          length += b - a;
+          ++w.count;
+        }
+      for (unsigned int n = w.first; n < w.first + w.count; ++n)
+        {
+          w.value[n] /= length;
+          w.slope[n] /= length;
+        }
+      return true;
+    }
+
+    /** Particle k's entries on the lattice @p block of its cell @p c, or
+     * false (nothing appended) when its domain reaches past the cells of its
+     * patch. The same numbers as the general path to round-off: that one sums
+     * per-cell products of the 1D integrals, this one their 1D sums. */
+    template <int dim>
+    DEAL_II_ALWAYS_INLINE inline bool
+    append_on_lattice(const unsigned int   *block,
+                      const std::uint32_t   present,
+                      const GridCell<dim>  &c,
+                      const Point<dim>     &x,
+                      const Tensor<1, dim> &l,
+                      const std::size_t     k,
+                      std::size_t          &e,
+                      Stencil<dim>         &stencil)
+    {
+      constexpr unsigned int n_vertices = GridCell<dim>::n_vertices;
+      LatticeWeights1D       w[dim];
+      for (unsigned int d = 0; d < dim; ++d)
+        if (!lattice_weights_1d(x[d],
+                                l[d],
+                                c.vertices[0][d],
+                                c.vertices[n_vertices - 1][d],
+                                w[d]))
+          return false;
+      if (!spans_present_cells<dim>(w, present))
+        return false;
+      append_products(block, w, k, e, stencil);
+      return true;
+    }
   } // namespace
 
   template <int dim>
@@ -78,7 +155,8 @@ namespace dealmpm
   compute_gimp_stencil(const BackgroundGrid<dim> &grid,
                        const ParticleSet<dim>    &particles,
                        const bool                 follow_deformation,
-                       Stencil<dim>              &stencil)
+                       Stencil<dim>              &stencil,
+                       const LatticeBlocks<dim>  *lattice)
   {
     constexpr unsigned int n_vertices = GridCell<dim>::n_vertices;
     const CoreFields      &f          = particles.fields;
@@ -104,10 +182,15 @@ namespace dealmpm
                 l[d] *=
                   std::max(props[f.deformation_gradient + d * dim + d], 1e-3);
             }
+          const unsigned int  i     = index_in_grid(grid, own);
+          const unsigned int *block = lattice ? lattice->of(i) : nullptr;
+          if (block != nullptr &&
+              append_on_lattice(
+                block, lattice->cells_present(i), own, x, l, k, e, stencil))
+            return;
           gathered.clear();
           double covered = 0;
-          for (const GridCell<dim> *c :
-               grid.neighbors[index_in_grid(grid, own)])
+          for (const GridCell<dim> *c : grid.neighbors[i])
             {
               double volume;
               if (!overlap_integrals(*c, x, l, S, G, volume))
@@ -127,7 +210,8 @@ namespace dealmpm
   template void compute_gimp_stencil(const BackgroundGrid<dim> &, \
                                      const ParticleSet<dim> &,    \
                                      bool,                        \
-                                     Stencil<dim> &);
+                                     Stencil<dim> &,              \
+                                     const LatticeBlocks<dim> *);
   DEALMPM_INSTANTIATE(2)
   DEALMPM_INSTANTIATE(3)
 #undef DEALMPM_INSTANTIATE

@@ -1,4 +1,5 @@
 #include <dealmpm/transfer/kernel.h>
+#include <dealmpm/transfer/lattice_blocks.h>
 #include <dealmpm/transfer/quadratic_bspline.h>
 
 #include <set>
@@ -60,6 +61,7 @@ namespace dealmpm
           return "'linear' or 'CPDI' on this grid: GIMP needs cells that "
                  "are axis-aligned boxes (a rectangle grid, or such a mesh)";
         grid.find_neighbors();
+        lattice.setup(grid);
         return "";
       }
 
@@ -68,11 +70,13 @@ namespace dealmpm
                       const ParticleSet<dim>    &particles,
                       Stencil<dim>              &stencil) const override
       {
-        compute_gimp_stencil(grid, particles, follow_deformation, stencil);
+        compute_gimp_stencil(
+          grid, particles, follow_deformation, stencil, &lattice);
       }
 
     private:
-      bool follow_deformation;
+      bool               follow_deformation;
+      LatticeBlocks<dim> lattice;
     };
 
     template <int dim>
@@ -83,6 +87,7 @@ namespace dealmpm
       setup(BackgroundGrid<dim> &grid) override
       {
         grid.find_neighbors();
+        lattice.setup(grid);
         return "";
       }
 
@@ -91,8 +96,11 @@ namespace dealmpm
                       const ParticleSet<dim>    &particles,
                       Stencil<dim>              &stencil) const override
       {
-        compute_cpdi_stencil(grid, particles, stencil);
+        compute_cpdi_stencil(grid, particles, stencil, &lattice);
       }
+
+    private:
+      LatticeBlocks<dim> lattice;
     };
 
     template <int dim>

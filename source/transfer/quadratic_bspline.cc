@@ -5,6 +5,8 @@
 
 #include <cmath>
 
+#include "lattice_products.h"
+
 namespace dealmpm
 {
   template <int dim>
@@ -97,47 +99,47 @@ namespace dealmpm
     /**
      * The 1D weights along one direction at t (in cell lengths from the
      * grid's origin) for a particle in the cell whose lower node is J, of n
-     * cells: up to three (position in the 4-node block, value, derivative
-     * times h).
+     * cells, on that cell's 4-node block of cell length h: three nodes, or
+     * two next to a boundary.
      */
-    inline unsigned int
-    weights_1d(const double t,
-               const int    J,
-               const int    n,
-               unsigned int position[3],
-               double       value[3],
-               double       derivative[3])
+    DEAL_II_ALWAYS_INLINE inline void
+    weights_1d(const double      t,
+               const int         J,
+               const int         n,
+               const double      h,
+               LatticeWeights1D &w)
     {
       if (t < 0.5 || t >= n - 0.5)
         {
           // The half cell next to a boundary: linear hats.
           const double s = t - J;
-          position[0]    = 1;
-          position[1]    = 2;
-          value[0]       = 1. - s;
-          value[1]       = s;
-          derivative[0]  = -1.;
-          derivative[1]  = 1.;
-          return 2;
+          w.first        = 1;
+          w.count        = 2;
+          w.value[1]     = 1. - s;
+          w.value[2]     = s;
+          w.slope[1]     = -1. / h;
+          w.slope[2]     = 1. / h;
+          return;
         }
       const int nearest = int(std::floor(t + 0.5));
+      w.first           = nearest - J;
+      w.count           = 3;
       for (int m = -1; m <= 1; ++m)
         {
-          const double r  = t - (nearest + m);
-          const double a  = std::abs(r);
-          position[m + 1] = nearest + m - J + 1;
+          const double       r        = t - (nearest + m);
+          const double       a        = std::abs(r);
+          const unsigned int position = nearest + m - J + 1;
           if (a < 0.5)
             {
-              value[m + 1]      = 0.75 - r * r;
-              derivative[m + 1] = -2. * r;
+              w.value[position] = 0.75 - r * r;
+              w.slope[position] = -2. * r / h;
             }
           else
             {
-              value[m + 1]      = 0.5 * (1.5 - a) * (1.5 - a);
-              derivative[m + 1] = -(1.5 - a) * (r > 0 ? 1. : -1.);
+              w.value[position] = 0.5 * (1.5 - a) * (1.5 - a);
+              w.slope[position] = -(1.5 - a) * (r > 0 ? 1. : -1.) / h;
             }
         }
-      return 3;
     }
   } // namespace
 
@@ -158,53 +160,26 @@ namespace dealmpm
         stencil.grad_N.resize(n_local * max_entries);
       }
     std::size_t       e = 0;
-    unsigned int      position[dim][3], count[dim];
-    double            value[dim][3], derivative[dim][3];
+    LatticeWeights1D  w[dim];
     const std::size_t n_visited = for_each_particle_in_stencil_order(
       grid,
       particles,
       [&](const std::size_t k, const auto &p, const GridCell<dim> &c)
         DEAL_II_ALWAYS_INLINE {
-          const unsigned int  i = index_in_grid(grid, c);
-          const unsigned int *block =
-            &spline.block_nodes[i * QuadraticBSplineGrid<dim>::block_size];
-          const Point<dim> x = p.get_location();
+          const unsigned int i = index_in_grid(grid, c);
+          const Point<dim>   x = p.get_location();
           for (unsigned int d = 0; d < dim; ++d)
-            count[d] = weights_1d((x[d] - spline.origin[d]) / spline.h[d],
-                                  spline.lower_index[i][d],
-                                  spline.n_cells[d],
-                                  position[d],
-                                  value[d],
-                                  derivative[d]);
-          stencil.begin[k] = e;
-          // The tensor product over the directions.
-          unsigned int       m[3] = {0, 0, 0};
-          const unsigned int n_entries =
-            count[0] * count[1] * (dim == 3 ? count[dim - 1] : 1);
-          for (unsigned int q = 0; q < n_entries; ++q, ++e)
-            {
-              unsigned int rest = q, node_position = 0, stride = 1;
-              for (unsigned int d = 0; d < dim; ++d, stride *= 4)
-                {
-                  m[d] = rest % count[d];
-                  rest /= count[d];
-                  node_position += position[d][m[d]] * stride;
-                }
-              double         N = 1;
-              Tensor<1, dim> grad;
-              for (unsigned int d = 0; d < dim; ++d)
-                {
-                  N *= value[d][m[d]];
-                  double g = derivative[d][m[d]] / spline.h[d];
-                  for (unsigned int b = 0; b < dim; ++b)
-                    if (b != d)
-                      g *= value[b][m[b]];
-                  grad[d] = g;
-                }
-              stencil.node[e]   = block[node_position];
-              stencil.N[e]      = N;
-              stencil.grad_N[e] = grad;
-            }
+            weights_1d((x[d] - spline.origin[d]) / spline.h[d],
+                       spline.lower_index[i][d],
+                       spline.n_cells[d],
+                       spline.h[d],
+                       w[d]);
+          append_products(
+            &spline.block_nodes[i * QuadraticBSplineGrid<dim>::block_size],
+            w,
+            k,
+            e,
+            stencil);
         });
     stencil.begin[n_visited] = e;
     AssertThrow(n_visited == n_local, ExcInternalError());

@@ -3,11 +3,15 @@
 // sum x_i (x) grad N_i = I), on uniform grids and, where the kernel allows,
 // next to hanging nodes and in distorted cells; gradients against finite
 // differences; the quadratic B-spline against its closed form and its
-// refusal of refined grids.
+// refusal of refined grids; the weights on uniform patches' lattices
+// against the general path.
 #include <dealmpm/base/errors.h>
 #include <dealmpm/transfer/kernel.h>
+#include <dealmpm/transfer/lattice_blocks.h>
 
 #include <gtest/gtest.h>
+
+#include <map>
 
 #include "test_scene.h"
 
@@ -324,5 +328,105 @@ TEST(Kernel, QuadraticBSplineRefusesRefinedGrid)
       EXPECT_NE(std::string(error.what()).find("hanging nodes"),
                 std::string::npos)
         << error.what();
+    }
+}
+
+namespace
+{
+  /** Particle k's entries (node -> N, grad N) of @p stencil. */
+  template <int dim>
+  std::map<unsigned int, std::pair<double, Tensor<1, dim>>>
+  entries_of(const Stencil<dim> &stencil, const std::size_t k)
+  {
+    std::map<unsigned int, std::pair<double, Tensor<1, dim>>> entries;
+    for (unsigned int e = stencil.begin[k]; e < stencil.begin[k + 1]; ++e)
+      entries[stencil.node[e]] = {stencil.N[e], stencil.grad_N[e]};
+    return entries;
+  }
+
+  /**
+   * GIMP and CPDI weights on the lattices of uniform patches (products of
+   * 1D weights, sums by lattice node) against the general path (per-cell
+   * integrals or corners gathered node by node), on a grid with a refined
+   * corner (cells next to hanging nodes have no lattice) and random
+   * deformations; every fifth particle's domain is grown to reach past its
+   * patch, so that the fall-back is taken too. The two compute the same
+   * sums in another order: equal to round-off.
+   */
+  template <int dim>
+  void
+  check_lattice_path(const std::string &kernel)
+  {
+    const std::string lower      = dim == 2 ? "0, 0" : "0, 0, 0";
+    const std::string upper      = dim == 2 ? "1, 1" : "1, 1, 1";
+    const std::string part       = dim == 2 ? "0.3, 0.3" : "0.4, 0.4, 0.4";
+    auto              simulation = test::make_simulation<dim>(
+      "set Dimension = " + std::to_string(dim) +
+      "\nsubsection Grid\n set Lower corner = " + lower +
+      "\n set Upper corner = " + upper +
+      "\n set Cells = " + (dim == 2 ? "9, 8" : "5, 6, 5") +
+      "\n subsection Local refinement\n  set Levels = 1\n"
+                   "  set Lower corner = " +
+      lower + "\n  set Upper corner = " + part +
+      "\n end\nend\nsubsection Body 1\n set Shape = box\n"
+                   " set Lower corner = " +
+      lower + "\n set Upper corner = " + upper +
+      "\n set Particles per cell = 2\nend\n"
+                   "subsection MPM\n set Shape function = " +
+      kernel + "\nend\n");
+    std::mt19937 rng(23);
+    test::scatter_particles_in_cells(*simulation, rng);
+    deform_particles(*simulation, rng);
+    ParticleSet<dim> &particles = simulation->particle_set();
+    unsigned int      n         = 0;
+    for (auto &p : particles.handler)
+      if (++n % 5 == 0)
+        for (unsigned int d = 0; d < dim; ++d)
+          p.get_properties()[particles.fields.domain_half_length + d] *= 3.;
+    const BackgroundGrid<dim> &grid = simulation->background_grid();
+    LatticeBlocks<dim>         lattice;
+    lattice.setup(grid);
+    unsigned int n_with_lattice = 0;
+    for (unsigned int i = 0; i < grid.cells.size(); ++i)
+      n_with_lattice += lattice.of(i) != nullptr;
+    EXPECT_GT(n_with_lattice, grid.cells.size() / 10);
+    EXPECT_LT(n_with_lattice, grid.cells.size());
+
+    Stencil<dim> general, on_lattice;
+    const auto   compute = [&](Stencil<dim>             &stencil,
+                             const LatticeBlocks<dim> *blocks) {
+      if (kernel == "CPDI")
+        compute_cpdi_stencil(grid, particles, stencil, blocks);
+      else
+        compute_gimp_stencil(
+          grid, particles, kernel == "cpGIMP", stencil, blocks);
+    };
+    compute(general, nullptr);
+    compute(on_lattice, &lattice);
+    ASSERT_EQ(general.n_particles(), on_lattice.n_particles());
+    for (std::size_t k = 0; k < general.n_particles(); ++k)
+      {
+        const auto a = entries_of(general, k), b = entries_of(on_lattice, k);
+        ASSERT_EQ(a.size(), b.size()) << kernel << " particle " << k;
+        double scale = 0;
+        for (const auto &[node, value] : a)
+          scale = std::max(scale, value.second.norm());
+        for (const auto &[node, value] : a)
+          {
+            ASSERT_EQ(b.count(node), 1u) << kernel << " particle " << k;
+            EXPECT_NEAR(b.at(node).first, value.first, 1e-14) << kernel;
+            EXPECT_LT((b.at(node).second - value.second).norm(), 1e-14 * scale)
+              << kernel << " particle " << k << " node " << node;
+          }
+      }
+  }
+} // namespace
+
+TEST(Kernel, LatticePathEqualsGeneralPath)
+{
+  for (const std::string kernel : {"uGIMP", "cpGIMP", "CPDI"})
+    {
+      check_lattice_path<2>(kernel);
+      check_lattice_path<3>(kernel);
     }
 }

@@ -10,6 +10,9 @@
 
 namespace dealmpm
 {
+  template <int dim>
+  class LatticeBlocks;
+
   /**
    * The particle -> node weights of one step: for each local particle (in
    * the order the kernels visit them: grid.cells, then the particles of each
@@ -71,14 +74,17 @@ namespace dealmpm
    * of grad N_i, summed over the (owned or ghost) cells the domain overlaps,
    * with hanging nodes resolved, V the covered volume. The domain is the box
    * of half-lengths domain_half_length (uGIMP), stretched by F_dd when
-   * @p follow_deformation (cpGIMP). Needs grid.find_neighbors().
+   * @p follow_deformation (cpGIMP). Needs grid.find_neighbors(). With
+   * @p lattice, a particle whose cell has one and whose domain stays
+   * inside it gets the same weights as products of 1D ones.
    */
   template <int dim>
   void
   compute_gimp_stencil(const BackgroundGrid<dim> &grid,
                        const ParticleSet<dim>    &particles,
                        const bool                 follow_deformation,
-                       Stencil<dim>              &stencil);
+                       Stencil<dim>              &stencil,
+                       const LatticeBlocks<dim>  *lattice = nullptr);
 
   /**
    * CPDI weights (Sadeghirad, Brannon and Burghardt 2011): the particle
@@ -91,10 +97,14 @@ namespace dealmpm
    * boundary uses the nearest cell's functions extrapolated (they still sum
    * to one and reproduce linear fields). Works on any quadrilateral or
    * hexahedral grid, also with hanging nodes. Needs grid.find_neighbors().
+   * With @p lattice, a particle in a cell that has one, on a grid of boxes,
+   * whose corners stay inside it gets the same weights summed by lattice
+   * node.
    */
   template <int dim>
   void
   compute_cpdi_stencil(const BackgroundGrid<dim> &grid,
                        const ParticleSet<dim>    &particles,
-                       Stencil<dim>              &stencil);
+                       Stencil<dim>              &stencil,
+                       const LatticeBlocks<dim>  *lattice = nullptr);
 } // namespace dealmpm
