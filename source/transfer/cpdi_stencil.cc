@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "node_accumulator.h"
+#include "stencil_entries.h"
 
 namespace dealmpm
 {
@@ -249,13 +250,7 @@ namespace dealmpm
             }
         }
       stencil.begin[k] = e;
-      if (stencil.node.size() < e + n_new)
-        {
-          const std::size_t capacity = (e + n_new) * 3 / 2 + 64;
-          stencil.node.resize(capacity);
-          stencil.N.resize(capacity);
-          stencil.grad_N.resize(capacity);
-        }
+      make_room_for_entries(stencil, e + n_new);
       for (; touched != 0; touched &= touched - 1, ++e)
         {
           const unsigned int n = __builtin_ctzll(touched);

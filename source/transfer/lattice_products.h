@@ -4,6 +4,8 @@
 
 #include <cstdint>
 
+#include "stencil_entries.h"
+
 namespace dealmpm
 {
   /** One direction of a particle's weights on its cell's lattice (nodes
@@ -57,13 +59,7 @@ namespace dealmpm
     stencil.begin[k]           = e;
     const unsigned int count_2 = dim == 3 ? w[dim - 1].count : 1;
     const unsigned int n_new   = w[0].count * w[1].count * count_2;
-    if (stencil.node.size() < e + n_new)
-      {
-        const std::size_t capacity = (e + n_new) * 3 / 2 + 64;
-        stencil.node.resize(capacity);
-        stencil.N.resize(capacity);
-        stencil.grad_N.resize(capacity);
-      }
+    make_room_for_entries(stencil, e + n_new);
     // Through raw pointers: with the vectors' own, every store reloaded
     // their data pointers.
     unsigned int   *node   = stencil.node.data() + e;

@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <vector>
 
+#include "stencil_entries.h"
+
 namespace dealmpm
 {
   /**
@@ -91,13 +93,7 @@ namespace dealmpm
               const double      scale = 1.) const
     {
       stencil.begin[k] = e;
-      if (stencil.node.size() < e + nodes.size())
-        {
-          const std::size_t capacity = (e + nodes.size()) * 3 / 2 + 64;
-          stencil.node.resize(capacity);
-          stencil.N.resize(capacity);
-          stencil.grad_N.resize(capacity);
-        }
+      make_room_for_entries(stencil, e + nodes.size());
       for (unsigned int n = 0; n < nodes.size(); ++n, ++e)
         {
           stencil.node[e]   = nodes[n];
