@@ -12,6 +12,7 @@
 #include <dealmpm/transfer/stencil.h>
 #include <dealmpm/transfer/stencil_order.h>
 
+#include <algorithm>
 #include <type_traits>
 #include <vector>
 
@@ -320,9 +321,14 @@ namespace dealmpm
       const Point<dim> xi = c.reference_point(displace(p, props, f, x_p, dx));
       if (set_reference)
         p.set_reference_location(xi);
-      bool outside = false;
-      for (unsigned int d = 0; d < dim; ++d)
-        outside = outside || xi[d] < 0. || xi[d] > 1.;
+      // The extreme coordinates first: two comparisons instead of 2 dim.
+      double lowest = xi[0], highest = xi[0];
+      for (unsigned int d = 1; d < dim; ++d)
+        {
+          lowest  = std::min(lowest, xi[d]);
+          highest = std::max(highest, xi[d]);
+        }
+      const bool outside = (lowest < 0.) | (highest > 1.);
       // Slack so that a particle sitting on a face does not trigger a sort.
       const double tolerance = 1e-12;
       if (outside)
