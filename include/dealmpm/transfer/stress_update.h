@@ -5,6 +5,7 @@
 #include <dealmpm/materials/material.h>
 #include <dealmpm/particles/particle_set.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -151,6 +152,12 @@ namespace dealmpm
           resets.push_back(m->resets_deformation());
           any_resets = any_resets || resets.back();
         }
+      const auto &of_body = particles.material_of_body;
+      if (!of_body.empty() &&
+          std::all_of(of_body.begin(), of_body.end(), [&](unsigned int m) {
+            return m == of_body.front();
+          }))
+        only_material = of_body.front();
     }
 
     template <typename Accessor>
@@ -207,8 +214,10 @@ namespace dealmpm
            const Tensor<2, dim>    &F,
            const double             h)
     {
-      const CoreFields  &f        = particles.fields;
-      const unsigned int m        = particles.material_of(props);
+      const CoreFields  &f = particles.fields;
+      const unsigned int m = only_material != numbers::invalid_unsigned_int ?
+                               only_material :
+                               particles.material_of(props);
       const Model       &material = static_cast<const Model &>(*materials[m]);
       SymmetricTensor<2, dim> stress = read_symmetric<dim>(&props[f.stress]);
       material.update_stress(L,
@@ -245,8 +254,11 @@ namespace dealmpm
                         isotropic);
     }
 
-    std::vector<bool>                                  resets;
-    bool                                               any_resets = false;
+    std::vector<bool> resets;
+    bool              any_resets = false;
+    /** The material of every body, when they share one (the usual scene):
+     * then no particle looks up its body. */
+    unsigned int only_material = numbers::invalid_unsigned_int;
     const std::vector<std::unique_ptr<Material<dim>>> &materials;
     const ParticleSet<dim>                            &particles;
     double                                             dt;
