@@ -205,8 +205,7 @@ namespace dealmpm
       const GridCell<dim> &c = grid.cells[cell_index];
       if (by_cell.empty(cell_index))
         return;
-      CellSums<dim, mass_and_momentum, internal_force> sums;
-      const CoreFields                                &f = particles.fields;
+      const CoreFields         &f     = particles.fields;
       const unsigned int *const nodes = &grid.cell_nodes[c.first_node];
       if (LinearWeights<dim>::is_box(c))
         {
@@ -220,17 +219,15 @@ namespace dealmpm
                       shares.minus_V_sigma,
                       p.get_reference_location());
             });
-          box.by_vertex(c.inverse_jacobian,
-                        sums.mass,
-                        sums.momentum,
-                        sums.force);
+          box.scatter(c.inverse_jacobian, nodes, to);
+          return;
         }
-      else
-        by_cell.for_each(cell_index, [&](const auto &p) DEAL_II_ALWAYS_INLINE {
-          sums.add(p, f, [&](const Point<dim> &xi, auto &&g) {
-            weights.at(xi, c, g);
-          });
+      CellSums<dim, mass_and_momentum, internal_force> sums;
+      by_cell.for_each(cell_index, [&](const auto &p) DEAL_II_ALWAYS_INLINE {
+        sums.add(p, f, [&](const Point<dim> &xi, auto &&g) {
+          weights.at(xi, c, g);
         });
+      });
       sums.scatter(nodes, to);
     }
 

@@ -196,37 +196,51 @@ namespace dealmpm
           }
     }
 
-    /** The sums by vertex, into CellSums' arrays: the force from the
-     * cell's d xi / d x @p K (diagonal), summed over j in increasing
-     * order. */
+    /** Add the sums into the nodal vectors @p to (.mass, .momentum[d],
+     * .force[d]: raw arrays) at the cell's @p nodes: the force from the
+     * cell's d xi / d x @p K (diagonal), each vertex's summed over j in
+     * increasing order in locals first, then added. Mass and momentum go
+     * straight from the pairs: no vertex arrays zeroed and copied in
+     * between (the 2D column, USL: 480 -> 472 instructions per
+     * particle-step, the same numbers). */
+    template <typename To>
     DEAL_II_ALWAYS_INLINE void
-    by_vertex(const Tensor<2, dim> &K,
-              double (&vertex_mass)[n_vertices],
-              double (&vertex_momentum)[n_vertices][dim],
-              double (&vertex_force)[n_vertices][dim]) const
+    scatter(const Tensor<2, dim>     &K,
+            const unsigned int *const nodes,
+            const To                 &to) const
     {
+      double vertex_force[n_vertices][dim];
+      if (internal_force)
+        {
+          for (unsigned int v = 0; v < n_vertices; ++v)
+            for (unsigned int d = 0; d < dim; ++d)
+              vertex_force[v][d] = 0;
+          for (unsigned int j = 0; j < dim; ++j)
+            for (unsigned int d = 0; d < dim; ++d)
+              for (unsigned int u = 0; u < n_vertices / 2; ++u)
+                {
+                  const double t = K[j][j] * T[j][d][u / 2][u % 2];
+                  // The vertices on side u of the other directions: bit j
+                  // inserted into u, 0 (N falls along j) and 1.
+                  const unsigned int low =
+                    (u & ((1u << j) - 1)) | ((u >> j) << (j + 1));
+                  vertex_force[low][d] -= t;
+                  vertex_force[low | (1u << j)][d] += t;
+                }
+        }
       for (unsigned int v = 0; v < n_vertices; ++v)
         {
-          vertex_mass[v] = mass[v / 2][v % 2];
+          const unsigned int n = nodes[v];
+          if (mass_and_momentum)
+            to.mass[n] += mass[v / 2][v % 2];
           for (unsigned int d = 0; d < dim; ++d)
             {
-              vertex_momentum[v][d] = momentum[d][v / 2][v % 2];
-              vertex_force[v][d]    = 0;
+              if (mass_and_momentum)
+                to.momentum[d][n] += momentum[d][v / 2][v % 2];
+              if (internal_force)
+                to.force[d][n] += vertex_force[v][d];
             }
         }
-      if (internal_force)
-        for (unsigned int j = 0; j < dim; ++j)
-          for (unsigned int d = 0; d < dim; ++d)
-            for (unsigned int u = 0; u < n_vertices / 2; ++u)
-              {
-                const double t = K[j][j] * T[j][d][u / 2][u % 2];
-                // The vertices on side u of the other directions: bit j
-                // inserted into u, 0 (N falls along j) and 1.
-                const unsigned int low =
-                  (u & ((1u << j) - 1)) | ((u >> j) << (j + 1));
-                vertex_force[low][d] -= t;
-                vertex_force[low | (1u << j)][d] += t;
-              }
     }
   };
 } // namespace dealmpm
