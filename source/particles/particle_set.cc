@@ -27,6 +27,14 @@ namespace dealmpm
       fields.body =
         n_bodies > 1 ? layout.add("body", 1) : numbers::invalid_unsigned_int;
       fields.n_core = layout.size();
+      using Core    = FixedCore<dim>;
+      AssertThrow(fields.mass == Core::mass &&
+                    fields.initial_volume == Core::initial_volume &&
+                    fields.velocity == Core::velocity &&
+                    fields.displacement == Core::displacement &&
+                    fields.deformation_gradient == Core::deformation_gradient &&
+                    fields.stress == Core::stress,
+                  ExcInternalError());
       return layout;
     }
   } // namespace

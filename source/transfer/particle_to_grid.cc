@@ -15,13 +15,13 @@ namespace dealmpm
      * the particle's internal force on a node is this times grad N. */
     template <bool total_lagrangian, int dim>
     DEAL_II_ALWAYS_INLINE inline auto
-    force_per_gradient(const ArrayView<const double> &props,
-                       const CoreFields              &f)
+    force_per_gradient(const ArrayView<const double> &props)
     {
-      const Tensor<2, dim> F = read_tensor<dim>(&props[f.deformation_gradient]);
+      const Tensor<2, dim> F =
+        read_tensor<dim>(&props[FixedCore<dim>::deformation_gradient]);
       const SymmetricTensor<2, dim> minus_V_sigma =
-        -determinant(F) * props[f.initial_volume] *
-        read_symmetric<dim>(&props[f.stress]);
+        -determinant(F) * props[FixedCore<dim>::initial_volume] *
+        read_symmetric<dim>(&props[FixedCore<dim>::stress]);
       if constexpr (total_lagrangian)
         return Tensor<2, dim>(minus_V_sigma * transpose(invert(F)));
       else
@@ -115,15 +115,15 @@ namespace dealmpm
 
         template <typename Particle>
         DEAL_II_ALWAYS_INLINE
-        Shares(const Particle &p, const CoreFields &f)
+        Shares(const Particle &p)
         {
           const ArrayView<const double> props = p.get_properties();
-          m                                   = props[f.mass];
-          v = read_vector<dim>(&props[f.velocity]);
+          m                                   = props[FixedCore<dim>::mass];
+          v = read_vector<dim>(&props[FixedCore<dim>::velocity]);
           if (internal_force)
             {
               const SymmetricTensor<2, dim> S =
-                force_per_gradient<false, dim>(props, f);
+                force_per_gradient<false, dim>(props);
               for (unsigned int i = 0; i < dim; ++i)
                 for (unsigned int j = 0; j < dim; ++j)
                   minus_V_sigma[i][j] = S[i][j];
@@ -146,9 +146,9 @@ namespace dealmpm
        * cell's weights at xi in vertex order. */
       template <typename Particle, typename WeightsAt>
       DEAL_II_ALWAYS_INLINE void
-      add(const Particle &p, const CoreFields &f, const WeightsAt &weights_at)
+      add(const Particle &p, const WeightsAt &weights_at)
       {
-        const Shares shares(p, f);
+        const Shares shares(p);
         unsigned int vertex = 0;
         weights_at(p.get_reference_location(),
                    [&](const unsigned int,
@@ -196,7 +196,6 @@ namespace dealmpm
     DEAL_II_ALWAYS_INLINE inline void
     transfer_one_cell(
       const BackgroundGrid<dim>                          &grid,
-      const ParticleSet<dim>                             &particles,
       const ParticlesByCell<dim, const ParticleSet<dim>> &by_cell,
       const LinearWeights<dim>                           &weights,
       const std::size_t                                   cell_index,
@@ -205,7 +204,6 @@ namespace dealmpm
       const GridCell<dim> &c = grid.cells[cell_index];
       if (by_cell.empty(cell_index))
         return;
-      const CoreFields         &f     = particles.fields;
       const unsigned int *const nodes = &grid.cell_nodes[c.first_node];
       if (LinearWeights<dim>::is_box(c))
         {
@@ -213,7 +211,7 @@ namespace dealmpm
           by_cell.for_each(
             cell_index, [&](const auto &p) DEAL_II_ALWAYS_INLINE {
               const typename CellSums<dim, mass_and_momentum, internal_force>::
-                Shares shares(p, f);
+                Shares shares(p);
               box.add(shares.m,
                       shares.v,
                       shares.minus_V_sigma,
@@ -224,9 +222,8 @@ namespace dealmpm
         }
       CellSums<dim, mass_and_momentum, internal_force> sums;
       by_cell.for_each(cell_index, [&](const auto &p) DEAL_II_ALWAYS_INLINE {
-        sums.add(p, f, [&](const Point<dim> &xi, auto &&g) {
-          weights.at(xi, c, g);
-        });
+        sums.add(p,
+                 [&](const Point<dim> &xi, auto &&g) { weights.at(xi, c, g); });
       });
       sums.scatter(nodes, to);
     }
@@ -254,7 +251,7 @@ namespace dealmpm
           const GridCell<dim> &c = grid.cells[i];
           if (c.first_weight == numbers::invalid_unsigned_int)
             transfer_one_cell<dim, mass_and_momentum, internal_force>(
-              grid, particles, by_cell, weights, i, to);
+              grid, by_cell, weights, i, to);
           else
             by_cell.for_each(i, [&](const auto &p) DEAL_II_ALWAYS_INLINE {
               per_particle(0, p, c); // LinearWeights needs no k
@@ -320,9 +317,10 @@ namespace dealmpm
         [&](const std::size_t k, const auto &p, const GridCell<dim> &c)
           DEAL_II_ALWAYS_INLINE {
             const ArrayView<const double> props = p.get_properties();
-            const double                  m     = props[f.mass];
+            const double                  m     = props[FixedCore<dim>::mass];
             const NodalPointers<dim>     &to    = targets.of(props);
-            Tensor<1, dim> v = read_vector<dim>(&props[f.velocity]);
+            Tensor<1, dim>                v =
+              read_vector<dim>(&props[FixedCore<dim>::velocity]);
             // Newmark: the grid carries the predicted velocity.
             if constexpr (predictor)
               v -= predictor_offset * read_vector<dim>(&props[f.acceleration]);
@@ -338,8 +336,7 @@ namespace dealmpm
             double force_per_gradient_component[dim][dim] = {};
             if (internal_force)
               {
-                const auto P =
-                  force_per_gradient<total_lagrangian, dim>(props, f);
+                const auto P = force_per_gradient<total_lagrangian, dim>(props);
                 for (unsigned int i = 0; i < dim; ++i)
                   for (unsigned int j = 0; j < dim; ++j)
                     force_per_gradient_component[i][j] = P[i][j];

@@ -44,6 +44,21 @@ namespace dealmpm
     unsigned int n_core;
   };
 
+  /** The offsets of the fields every particle has (CoreFields' first six,
+   * which ParticleSet lays out first and in this order, and checks): as
+   * constants for the step's hot loops, where a runtime offset costs a load
+   * and an address computation at each access. */
+  template <int dim>
+  struct FixedCore
+  {
+    static constexpr unsigned int mass                 = 0;
+    static constexpr unsigned int initial_volume       = 1;
+    static constexpr unsigned int velocity             = 2;
+    static constexpr unsigned int displacement         = 2 + dim;
+    static constexpr unsigned int deformation_gradient = 2 + 2 * dim;
+    static constexpr unsigned int stress = 2 + 2 * dim + dim * dim;
+  };
+
   /**
    * The material points: deal.II's ParticleHandler (positions, cells, ids,
    * MPI ownership) with a property layout of core fields and the internal

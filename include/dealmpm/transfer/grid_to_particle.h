@@ -275,21 +275,22 @@ namespace dealmpm
     {
       if (affine)
         {
-          write_vector<dim>(&props[f.velocity], v_grid);
+          write_vector<dim>(&props[FixedCore<dim>::velocity], v_grid);
           write_tensor<dim>(&props[f.affine_velocity], B);
         }
       else if (flip_fraction == 0.) // PIC
-        write_vector<dim>(&props[f.velocity], v_grid);
+        write_vector<dim>(&props[FixedCore<dim>::velocity], v_grid);
       else
         {
-          const Tensor<1, dim> v_old = read_vector<dim>(&props[f.velocity]);
+          const Tensor<1, dim> v_old =
+            read_vector<dim>(&props[FixedCore<dim>::velocity]);
           // FLIP and PIC without the blend's products: the same numbers
           // but for the sign of a zero (PIC 483 -> 470 instructions per
           // particle-step on the 2D column; FLIP's count did not move).
           if (flip_fraction == 1.)
-            write_vector<dim>(&props[f.velocity], v_old + dv);
+            write_vector<dim>(&props[FixedCore<dim>::velocity], v_old + dv);
           else
-            write_vector<dim>(&props[f.velocity],
+            write_vector<dim>(&props[FixedCore<dim>::velocity],
                               flip_fraction * (v_old + dv) +
                                 (1. - flip_fraction) * v_grid);
         }
@@ -301,12 +302,12 @@ namespace dealmpm
     DEAL_II_ALWAYS_INLINE inline Point<dim>
     displace(Particle                &p,
              const ArrayView<double> &props,
-             const CoreFields        &f,
              const Point<dim>        &x_p,
              const Tensor<1, dim>    &dx)
     {
-      write_vector<dim>(&props[f.displacement],
-                        read_vector<dim>(&props[f.displacement]) + dx);
+      write_vector<dim>(&props[FixedCore<dim>::displacement],
+                        read_vector<dim>(&props[FixedCore<dim>::displacement]) +
+                          dx);
       const Point<dim> x = x_p + dx;
       p.set_location(x);
       return x;
@@ -320,13 +321,12 @@ namespace dealmpm
     DEAL_II_ALWAYS_INLINE inline bool
     move(Particle                &p,
          const ArrayView<double> &props,
-         const CoreFields        &f,
          const GridCell<dim>     &c,
          const Point<dim>        &x_p,
          const Tensor<1, dim>    &dx,
          bool                    &left_cell)
     {
-      const Point<dim> xi = c.reference_point(displace(p, props, f, x_p, dx));
+      const Point<dim> xi = c.reference_point(displace(p, props, x_p, dx));
       if (set_reference)
         p.set_reference_location(xi);
       // The extreme coordinates first: two comparisons instead of 2 dim.
@@ -350,14 +350,14 @@ namespace dealmpm
     template <int dim, typename Increment>
     DEAL_II_ALWAYS_INLINE inline Tensor<2, dim>
     deform(const ArrayView<double> &props,
-           const CoreFields        &f,
            const Tensor<2, dim>    &L,
            const double             dt,
            const Increment         &increment)
     {
       const Tensor<2, dim> F =
-        increment(dt * L) * read_tensor<dim>(&props[f.deformation_gradient]);
-      write_tensor<dim>(&props[f.deformation_gradient], F);
+        increment(dt * L) *
+        read_tensor<dim>(&props[FixedCore<dim>::deformation_gradient]);
+      write_tensor<dim>(&props[FixedCore<dim>::deformation_gradient], F);
       return F;
     }
 
@@ -618,9 +618,9 @@ namespace dealmpm
           if (parts::move)
             {
               if constexpr (reference)
-                g2p_sweep::displace(p, props, f, x_p, dt * v_grid);
+                g2p_sweep::displace(p, props, x_p, dt * v_grid);
               else if (g2p_sweep::move<!parts::keep_reference>(
-                         p, props, f, c, x_p, dt * v_grid, left_cell))
+                         p, props, c, x_p, dt * v_grid, left_cell))
                 {
                   leavers.position.push_back(k);
                   leavers.cell.push_back(index_in_grid(grid, c));
@@ -630,10 +630,10 @@ namespace dealmpm
             {
               adjust_gradient(c, props, L);
               if constexpr (reference)
-                L =
-                  L * invert(read_tensor<dim>(&props[f.deformation_gradient]));
+                L = L * invert(read_tensor<dim>(
+                          &props[FixedCore<dim>::deformation_gradient]));
               const Tensor<2, dim> F =
-                g2p_sweep::deform(props, f, L, dt, f_increment);
+                g2p_sweep::deform(props, L, dt, f_increment);
               after_deformation(
                 p, props, L, F, reference ? c.h * smallest_stretch(F) : c.h);
             }

@@ -214,12 +214,12 @@ namespace dealmpm
            const Tensor<2, dim>    &F,
            const double             h)
     {
-      const CoreFields  &f = particles.fields;
       const unsigned int m = only_material != numbers::invalid_unsigned_int ?
                                only_material :
                                particles.material_of(props);
       const Model       &material = static_cast<const Model &>(*materials[m]);
-      SymmetricTensor<2, dim> stress = read_symmetric<dim>(&props[f.stress]);
+      SymmetricTensor<2, dim> stress =
+        read_symmetric<dim>(&props[FixedCore<dim>::stress]);
       material.update_stress(L,
                              F,
                              dt,
@@ -227,9 +227,13 @@ namespace dealmpm
                              ArrayView<double>(props.data() +
                                                  particles.internal_offset[m],
                                                particles.n_internal[m]));
-      write_symmetric<dim>(&props[f.stress], stress);
-      if (!check.inspect(
-            p, read_vector<dim>(&props[f.velocity]), F, stress, material, h))
+      write_symmetric<dim>(&props[FixedCore<dim>::stress], stress);
+      if (!check.inspect(p,
+                         read_vector<dim>(&props[FixedCore<dim>::velocity]),
+                         F,
+                         stress,
+                         material,
+                         h))
         check.describe_state(
           p.get_id(),
           m,
