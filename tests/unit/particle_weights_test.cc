@@ -5,9 +5,9 @@
 // P2G's nodal mass, momentum and force (it sums a cell's particles first,
 // in a box cell the force by direction, BoxCellSums) and so MUSL's G2P,
 // re-map and stress update (which keep the reference location until the
-// stress update); on grids with hanging nodes in 2D and 3D and on
-// distorted (non-affine) cells. The weights themselves are deal.II's Q1
-// functions.
+// stress update), the re-map also made in MUSL's G2P sweep; on grids with
+// hanging nodes in 2D and 3D and on distorted (non-affine) cells. The weights
+// themselves are deal.II's Q1 functions.
 #include <deal.II/fe/fe_q.h>
 
 #include <dealmpm/transfer/grid_to_particle.h>
@@ -189,6 +189,82 @@ TEST(ParticleWeights, WhereUsedEqualStoredOnDistortedCells)
 TEST(ParticleWeights, WhereUsedEqualStoredIn3D)
 {
   check_weights_where_used<3>(refined_scene_3d);
+}
+
+namespace
+{
+  /** MUSL's G2P with the re-map in its sweep (RemapInSweep) leaves the
+   * particles as the G2P without it does, and the nodal mass and momentum
+   * that particle_to_grid() re-maps after that G2P (to round-off: a cell
+   * with hanging nodes or a distorted cell adds its particles in another
+   * order), with the weights computed where used and stored. */
+  template <int dim>
+  void
+  check_remap_in_sweep(const std::string &scene)
+  {
+    auto         simulation = test::make_simulation<dim>(scene);
+    std::mt19937 rng(11);
+    test::scatter_particles_in_cells(*simulation, rng);
+    ParticleSet<dim>          &particles = simulation->particle_set();
+    const BackgroundGrid<dim> &grid      = simulation->background_grid();
+    NodalFields<dim>           fields, after_sweep, in_sweep;
+    fields.reinit(grid.partitioner);
+    after_sweep.reinit(grid.partitioner);
+    in_sweep.reinit(grid.partitioner);
+    test::randomize_state(particles, grid, fields, rng);
+    Stencil<dim> stored, where_used;
+    compute_linear_stencil(grid, particles, stored);
+    where_used.where_used            = true;
+    const std::vector<double> before = test::particle_state(particles);
+    for (const Stencil<dim> *stencil : {&stored, &where_used})
+      {
+        // MUSL's G2P as stages::g2p() runs it for each kind of stencil.
+        const auto g2p = [&](auto &&remap) {
+          test::set_particle_state(particles, before);
+          if (stencil->where_used)
+            grid_to_particle<G2P::motion_keeping_reference>(
+              grid,
+              *stencil,
+              fields,
+              0.01,
+              0.9,
+              particles,
+              NoAfterDeformation(),
+              NoGradientAdjustment(),
+              FirstOrderIncrement(),
+              remap);
+          else
+            grid_to_particle<G2P::motion>(grid,
+                                          *stencil,
+                                          fields,
+                                          0.01,
+                                          0.9,
+                                          particles,
+                                          NoAfterDeformation(),
+                                          NoGradientAdjustment(),
+                                          FirstOrderIncrement(),
+                                          remap);
+          return test::particle_state(particles);
+        };
+        const std::vector<double> moved = g2p(NoRemap());
+        particle_to_grid(grid, particles, *stencil, after_sweep, true, false);
+        in_sweep.mass = 1.; // what the re-map must not add to
+        RemapInSweep<dim> remap(in_sweep);
+        EXPECT_EQ(g2p(remap), moved);
+        remap.finish();
+        EXPECT_NE(moved, before);
+        expect_same_sums(after_sweep.mass, in_sweep.mass);
+        for (unsigned int d = 0; d < dim; ++d)
+          expect_same_sums(after_sweep.momentum[d], in_sweep.momentum[d]);
+      }
+  }
+} // namespace
+
+TEST(ParticleWeights, MuslRemapInTheSweepEqualsTheRemapAfterIt)
+{
+  check_remap_in_sweep<2>(refined_scene);
+  check_remap_in_sweep<2>(distorted_scene);
+  check_remap_in_sweep<3>(refined_scene_3d);
 }
 
 namespace

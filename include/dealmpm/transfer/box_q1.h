@@ -237,7 +237,7 @@ namespace dealmpm
             {
               if (mass_and_momentum)
                 to.momentum[d][n] += momentum[d][v / 2][v % 2];
-              if (internal_force)
+              if constexpr (internal_force) // @p to may have no force
                 to.force[d][n] += vertex_force[v][d];
             }
         }

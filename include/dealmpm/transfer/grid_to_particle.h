@@ -9,6 +9,7 @@
 #include <dealmpm/transfer/deformation_update.h>
 #include <dealmpm/transfer/formulation.h>
 #include <dealmpm/transfer/particle_weights.h>
+#include <dealmpm/transfer/remap_in_sweep.h>
 #include <dealmpm/transfer/stencil.h>
 #include <dealmpm/transfer/stencil_order.h>
 
@@ -260,11 +261,11 @@ namespace dealmpm
                   });
     }
 
-    /** The particle's new velocity: with APIC, v = sum N v and the
-     * B = sum N v (x) (x_i - x_p) P2G turns into C; else the FLIP/PIC blend
-     * alpha (v_p + sum N dv) + (1 - alpha) sum N v. */
+    /** Writes and returns the particle's new velocity: with APIC, v = sum N v
+     * and the B = sum N v (x) (x_i - x_p) P2G turns into C; else the FLIP/PIC
+     * blend alpha (v_p + sum N dv) + (1 - alpha) sum N v. */
     template <int dim>
-    DEAL_II_ALWAYS_INLINE inline void
+    DEAL_II_ALWAYS_INLINE inline Tensor<1, dim>
     update_velocity(const ArrayView<double> &props,
                     const CoreFields        &f,
                     const Tensor<1, dim>    &v_grid,
@@ -273,27 +274,23 @@ namespace dealmpm
                     const double             flip_fraction,
                     const bool               affine)
     {
+      // FLIP and PIC without the blend's products: the same numbers but
+      // for the sign of a zero (PIC 483 -> 470 instructions per
+      // particle-step on the 2D column; FLIP's count did not move).
+      Tensor<1, dim> v = v_grid; // APIC and PIC
       if (affine)
-        {
-          write_vector<dim>(&props[FixedCore<dim>::velocity], v_grid);
-          write_tensor<dim>(&props[f.affine_velocity], B);
-        }
-      else if (flip_fraction == 0.) // PIC
-        write_vector<dim>(&props[FixedCore<dim>::velocity], v_grid);
-      else
+        write_tensor<dim>(&props[f.affine_velocity], B);
+      else if (flip_fraction != 0.)
         {
           const Tensor<1, dim> v_old =
             read_vector<dim>(&props[FixedCore<dim>::velocity]);
-          // FLIP and PIC without the blend's products: the same numbers
-          // but for the sign of a zero (PIC 483 -> 470 instructions per
-          // particle-step on the 2D column; FLIP's count did not move).
           if (flip_fraction == 1.)
-            write_vector<dim>(&props[FixedCore<dim>::velocity], v_old + dv);
+            v = v_old + dv;
           else
-            write_vector<dim>(&props[FixedCore<dim>::velocity],
-                              flip_fraction * (v_old + dv) +
-                                (1. - flip_fraction) * v_grid);
+            v = flip_fraction * (v_old + dv) + (1. - flip_fraction) * v_grid;
         }
+      write_vector<dim>(&props[FixedCore<dim>::velocity], v);
+      return v;
     }
 
     /** Moves the particle from @p x_p by @p dx: displacement and position
@@ -345,6 +342,27 @@ namespace dealmpm
       return outside;
     }
 
+    /** move(), and the particle's position @p k in the step's order and
+     * its old cell in @p leavers if it is outside that cell. */
+    template <bool set_reference, int dim, typename Particle, typename Leavers>
+    DEAL_II_ALWAYS_INLINE inline void
+    move_and_record(const BackgroundGrid<dim> &grid,
+                    const std::size_t          k,
+                    Particle                  &p,
+                    const ArrayView<double>   &props,
+                    const GridCell<dim>       &c,
+                    const Point<dim>          &x_p,
+                    const Tensor<1, dim>      &dx,
+                    Leavers                   &leavers,
+                    bool                      &left_cell)
+    {
+      if (move<set_reference>(p, props, c, x_p, dx, left_cell))
+        {
+          leavers.position.push_back(k);
+          leavers.cell.push_back(index_in_grid(grid, c));
+        }
+    }
+
     /** F <- dF F with dF = @p increment(dt L) (I + dt L unless the scene
      * chose another DeformationUpdate); returns the new F. */
     template <int dim, typename Increment>
@@ -361,12 +379,44 @@ namespace dealmpm
       return F;
     }
 
+    /** The deformation part of a sweep for particle @p p in @p c:
+     * @p adjust_gradient(c, props, L), with @p reference (total Lagrangian)
+     * L = (dF/dt) F^-1, F updated (deform()), then @p after_deformation(p,
+     * props, L, F, h) with the cell size h (scaled by F's smallest stretch
+     * with @p reference). */
+    template <bool reference,
+              int  dim,
+              typename Particle,
+              typename AdjustGradient,
+              typename Increment,
+              typename AfterDeformation>
+    DEAL_II_ALWAYS_INLINE inline void
+    deform_and_report(Particle                &p,
+                      const ArrayView<double> &props,
+                      const GridCell<dim>     &c,
+                      Tensor<2, dim>           L,
+                      const double             dt,
+                      const AdjustGradient    &adjust_gradient,
+                      const Increment         &f_increment,
+                      AfterDeformation        &after_deformation)
+    {
+      adjust_gradient(c, props, L);
+      if constexpr (reference)
+        L = L * invert(read_tensor<dim>(
+                  &props[FixedCore<dim>::deformation_gradient]));
+      const Tensor<2, dim> F = deform(props, L, dt, f_increment);
+      after_deformation(
+        p, props, L, F, reference ? c.h * smallest_stretch(F) : c.h);
+    }
+
     /** One box cell's nodal velocities and increments (and USL's
      * light-node weights) copied into locals, indexed by the cell's vertex
      * (what the light-node pass reads through BoxWeights), and prepared for
      * interpolation (BoxQ1Component): the nodal arrays are read once a
-     * cell instead of once a particle. */
-    template <int dim, bool light>
+     * cell instead of once a particle. The increments only with @p
+     * increments (a sweep that updates the velocity; MUSL's stress update
+     * does not: 2D column 8 instructions per particle-step). */
+    template <int dim, bool light, bool increments = true>
     struct CellArrays
     {
       static constexpr bool         may_be_light = light;
@@ -393,13 +443,15 @@ namespace dealmpm
         for (unsigned int v = 0; v < n_vertices; ++v)
           for (unsigned int d = 0; d < dim; ++d)
             {
-              velocity[d][v]  = from.velocity[d][nodes[v]];
-              increment[d][v] = from.increment[d][nodes[v]];
+              velocity[d][v] = from.velocity[d][nodes[v]];
+              if (increments)
+                increment[d][v] = from.increment[d][nodes[v]];
             }
         for (unsigned int d = 0; d < dim; ++d)
           {
             velocity_q1[d].set(velocity[d], cell.inverse_jacobian);
-            increment_q1[d].set(increment[d], cell.inverse_jacobian);
+            if (increments)
+              increment_q1[d].set(increment[d], cell.inverse_jacobian);
           }
         if (light && from.weight)
           {
@@ -428,6 +480,7 @@ namespace dealmpm
                   Tensor<1, dim>   &dv,
                   Tensor<2, dim>   &L) const
       {
+        static_assert(!motion || increments);
         for (unsigned int d = 0; d < dim; ++d)
           {
             double grad[dim];
@@ -465,22 +518,34 @@ namespace dealmpm
     };
 
     /** Visit the particles with @p per_particle(k, particle, cell,
-     * weights, arrays): a cell at a time with CellArrays and BoxWeights
-     * where the weights are linear ones computed here (LinearWeights), the
-     * particles read one set of nodal arrays (VelocityArrays, not one per
-     * body) and the cell is a box without hanging nodes; else each
-     * particle with @p weights and @p arrays. Both give the same numbers
-     * in the same order. The cell path passes k = 0 and vertex indices:
-     * fine for what reads weights computed here (not APIC, whose x_p and
-     * node positions need the stored stencil). */
-    template <int dim, typename Weights, typename Arrays, typename PerParticle>
+     * weights, arrays, sums), sums a local @p remap's Sums (the box cell's,
+     * handed to @p remap.end_box_cell(cell, nodes, sums) after its
+     * particles: a local the compiler keeps in registers, which it cannot
+     * do with a member that the particles' properties might alias): a cell
+     * at a time with CellArrays (with the increments if @p increments)
+     * and BoxWeights where the weights are linear ones computed here
+     * (LinearWeights), the particles read one set of nodal arrays
+     * (VelocityArrays, not one per body) and the cell is a box without hanging
+     * nodes; else each particle with @p weights and @p arrays. Both give the
+     * same numbers in the same order. The cell path passes k = 0 and vertex
+     * indices: fine for what reads weights computed here (not APIC, whose x_p
+     * and node positions need the stored stencil). */
+    template <bool increments,
+              int  dim,
+              typename Weights,
+              typename Arrays,
+              typename Remap,
+              typename PerParticle>
     DEAL_II_ALWAYS_INLINE inline void
     visit(const BackgroundGrid<dim> &grid,
           ParticleSet<dim>          &particles,
           const Weights             &weights,
           const Arrays              &arrays,
+          Remap                     &remap,
           const PerParticle         &per_particle)
     {
+      using Sums = typename Remap::Sums;
+      Sums           no_sums; // where the weights are not BoxWeights
       constexpr bool by_cell =
         std::is_same_v<Weights, LinearWeights<dim>> &&
         (std::is_same_v<Arrays, VelocityArrays<dim, false>> ||
@@ -497,15 +562,19 @@ namespace dealmpm
               if (c.first_weight == numbers::invalid_unsigned_int &&
                   LinearWeights<dim>::is_box(c))
                 {
-                  const CellArrays<dim, Arrays::may_be_light> local(
-                    arrays, c, &grid.cell_nodes[c.first_node]);
+                  const unsigned int *const nodes =
+                    &grid.cell_nodes[c.first_node];
+                  const CellArrays<dim, Arrays::may_be_light, increments> local(
+                    arrays, c, nodes);
+                  Sums sums;
                   by_cell.for_each(i, [&](auto &p) DEAL_II_ALWAYS_INLINE {
-                    per_particle(k++, p, c, BoxWeights<dim>(), local);
+                    per_particle(k++, p, c, BoxWeights<dim>(), local, sums);
                   });
+                  remap.end_box_cell(c, nodes, sums);
                 }
               else
                 by_cell.for_each(i, [&](auto &p) DEAL_II_ALWAYS_INLINE {
-                  per_particle(k++, p, c, weights, arrays);
+                  per_particle(k++, p, c, weights, arrays, no_sums);
                 });
             }
         }
@@ -515,7 +584,8 @@ namespace dealmpm
           particles,
           [&](const std::size_t k, auto &p, const GridCell<dim> &c)
             DEAL_II_ALWAYS_INLINE {
-              per_particle(k, p, c, weights, arrays.of(p.get_properties()));
+              per_particle(
+                k, p, c, weights, arrays.of(p.get_properties()), no_sums);
             });
     }
   } // namespace g2p_sweep
@@ -552,6 +622,11 @@ namespace dealmpm
    *   deformation, from the same nodal velocity (Newmark's re-mapped
    *   displacement velocity, newmark_predict()).
    *
+   * With @p remap a RemapInSweep (MUSL's motion), the sweep also re-maps
+   * the particles' mass and updated momentum to the grid.
+   *
+   * APIC needs the stored stencil (its x_p are the stencil's positions).
+   *
    * @return true if motion moved some local particle out of its cell
    * (never with total Lagrangian).
    */
@@ -561,7 +636,8 @@ namespace dealmpm
             typename Fields,
             typename AfterDeformation = NoAfterDeformation,
             typename AdjustGradient   = NoGradientAdjustment,
-            typename Increment        = FirstOrderIncrement>
+            typename Increment        = FirstOrderIncrement,
+            typename Remap            = NoRemap>
   bool
   grid_to_particle(const BackgroundGrid<dim> &grid,
                    const Stencil<dim>        &stencil,
@@ -571,7 +647,8 @@ namespace dealmpm
                    ParticleSet<dim>          &particles,
                    AfterDeformation         &&after_deformation = {},
                    const AdjustGradient      &adjust_gradient   = {},
-                   const Increment           &f_increment       = {})
+                   const Increment           &f_increment       = {},
+                   Remap                    &&remap             = {})
   {
     using parts                 = G2PParts<what>;
     constexpr bool    reference = formulation == Formulation::total_lagrangian;
@@ -582,19 +659,20 @@ namespace dealmpm
     auto      &leavers = particles.leavers; // who leaves a cell, for relocate()
     if constexpr (parts::move && !reference)
       leavers.start();
-    // APIC's x_p are the stored stencil's positions.
     AssertThrow(!(affine && stencil.where_used), ExcInternalError());
     with_weights(grid, stencil, [&](const auto &weights) {
-      g2p_sweep::visit(
+      g2p_sweep::visit<parts::motion>(
         grid,
         particles,
         weights,
         arrays,
+        remap,
         [&](const std::size_t    k,
             auto                &p,
             const GridCell<dim> &c,
             const auto          &weights_here,
-            const auto          &from) DEAL_II_ALWAYS_INLINE {
+            const auto          &from,
+            auto                &sums) DEAL_II_ALWAYS_INLINE {
           Tensor<1, dim>          v_grid, dv;
           Tensor<2, dim>          L, B;
           const Point<dim>        x_p   = p.get_location();
@@ -613,30 +691,26 @@ namespace dealmpm
             L,
             B);
           if (parts::motion)
-            g2p_sweep::update_velocity(
-              props, f, v_grid, dv, B, flip_fraction, affine);
-          if (parts::move)
             {
-              if constexpr (reference)
-                g2p_sweep::displace(p, props, x_p, dt * v_grid);
-              else if (g2p_sweep::move<!parts::keep_reference>(
-                         p, props, c, x_p, dt * v_grid, left_cell))
-                {
-                  leavers.position.push_back(k);
-                  leavers.cell.push_back(index_in_grid(grid, c));
-                }
+              const Tensor<1, dim> v = g2p_sweep::update_velocity(
+                props, f, v_grid, dv, B, flip_fraction, affine);
+              remap.add(
+                weights_here, k, p, c, props[FixedCore<dim>::mass], v, sums);
             }
+          if constexpr (parts::move && reference)
+            g2p_sweep::displace(p, props, x_p, dt * v_grid);
+          else if constexpr (parts::move)
+            g2p_sweep::move_and_record<!parts::keep_reference>(
+              grid, k, p, props, c, x_p, dt * v_grid, leavers, left_cell);
           if (parts::deformation)
-            {
-              adjust_gradient(c, props, L);
-              if constexpr (reference)
-                L = L * invert(read_tensor<dim>(
-                          &props[FixedCore<dim>::deformation_gradient]));
-              const Tensor<2, dim> F =
-                g2p_sweep::deform(props, L, dt, f_increment);
-              after_deformation(
-                p, props, L, F, reference ? c.h * smallest_stretch(F) : c.h);
-            }
+            g2p_sweep::deform_and_report<reference>(p,
+                                                    props,
+                                                    c,
+                                                    L,
+                                                    dt,
+                                                    adjust_gradient,
+                                                    f_increment,
+                                                    after_deformation);
           if (parts::then_reference)
             p.set_reference_location(c.reference_point(x_p));
         });
