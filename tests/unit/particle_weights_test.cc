@@ -95,24 +95,55 @@ end
     return differ;
   }
 
+  /** A scene's particles scattered at random in their cells, with a
+   * random state and random nodal velocities (fields), and the linear
+   * stencil both stored and computed where used. */
+  template <int dim>
+  struct RandomState
+  {
+    decltype(test::make_simulation<dim>(std::string())) simulation;
+    ParticleSet<dim>                                   &particles;
+    const BackgroundGrid<dim>                          &grid;
+    NodalFields<dim>                                    fields;
+    Stencil<dim>                                        stored, where_used;
+    std::vector<double>                                 before;
+
+    RandomState(const std::string &scene, const unsigned int seed)
+      : simulation(test::make_simulation<dim>(scene))
+      , particles(simulation->particle_set())
+      , grid(simulation->background_grid())
+    {
+      std::mt19937 rng(seed);
+      test::scatter_particles_in_cells(*simulation, rng);
+      fields.reinit(grid.partitioner);
+      test::randomize_state(particles, grid, fields, rng);
+      compute_linear_stencil(grid, particles, stored);
+      where_used.where_used = true;
+      before                = test::particle_state(particles);
+    }
+
+    /** @p more sized for the grid. */
+    template <typename... Fields>
+    void
+    reinit(Fields &...more) const
+    {
+      (more.reinit(grid.partitioner), ...);
+    }
+  };
+
   template <int dim>
   void
   check_weights_where_used(const std::string &scene)
   {
-    auto         simulation = test::make_simulation<dim>(scene);
-    std::mt19937 rng(7);
-    test::scatter_particles_in_cells(*simulation, rng);
-    ParticleSet<dim>          &particles = simulation->particle_set();
-    const BackgroundGrid<dim> &grid      = simulation->background_grid();
-    NodalFields<dim>           fields, fields_where_used, fields_stored_remap;
-    fields.reinit(grid.partitioner);
-    fields_where_used.reinit(grid.partitioner);
-    fields_stored_remap.reinit(grid.partitioner);
-    test::randomize_state(particles, grid, fields, rng);
-
-    Stencil<dim> stored, where_used;
-    compute_linear_stencil(grid, particles, stored);
-    where_used.where_used = true;
+    RandomState<dim>           state(scene, 7);
+    ParticleSet<dim>          &particles  = state.particles;
+    const BackgroundGrid<dim> &grid       = state.grid;
+    NodalFields<dim>          &fields     = state.fields;
+    const Stencil<dim>        &stored     = state.stored;
+    const Stencil<dim>        &where_used = state.where_used;
+    const std::vector<double> &before     = state.before;
+    NodalFields<dim>           fields_where_used, fields_stored_remap;
+    state.reinit(fields_where_used, fields_stored_remap);
     particle_to_grid(grid, particles, stored, fields);
     particle_to_grid(grid, particles, where_used, fields_where_used);
     expect_same_sums(fields.mass, fields_where_used.mass);
@@ -124,8 +155,7 @@ end
 
     // USL's sweep: gather with the light-node pass, then move (which
     // changes the reference location the weights are computed from).
-    const std::vector<double> before = test::particle_state(particles);
-    const auto                g2p    = [&](const Stencil<dim> &stencil) {
+    const auto g2p = [&](const Stencil<dim> &stencil) {
       test::set_particle_state(particles, before);
       grid_to_particle<G2P::motion_and_deformation>(grid,
                                                     stencil,
@@ -202,48 +232,35 @@ namespace
   void
   check_remap_in_sweep(const std::string &scene)
   {
-    auto         simulation = test::make_simulation<dim>(scene);
-    std::mt19937 rng(11);
-    test::scatter_particles_in_cells(*simulation, rng);
-    ParticleSet<dim>          &particles = simulation->particle_set();
-    const BackgroundGrid<dim> &grid      = simulation->background_grid();
-    NodalFields<dim>           fields, after_sweep, in_sweep;
-    fields.reinit(grid.partitioner);
-    after_sweep.reinit(grid.partitioner);
-    in_sweep.reinit(grid.partitioner);
-    test::randomize_state(particles, grid, fields, rng);
-    Stencil<dim> stored, where_used;
-    compute_linear_stencil(grid, particles, stored);
-    where_used.where_used            = true;
-    const std::vector<double> before = test::particle_state(particles);
-    for (const Stencil<dim> *stencil : {&stored, &where_used})
+    RandomState<dim>           state(scene, 11);
+    ParticleSet<dim>          &particles = state.particles;
+    const BackgroundGrid<dim> &grid      = state.grid;
+    const NodalFields<dim>    &fields    = state.fields;
+    const std::vector<double> &before    = state.before;
+    NodalFields<dim>           after_sweep, in_sweep;
+    state.reinit(after_sweep, in_sweep);
+    for (const Stencil<dim> *stencil : {&state.stored, &state.where_used})
       {
         // MUSL's G2P as stages::g2p() runs it for each kind of stencil.
+        const auto run = [&](const auto what, auto &&remap) {
+          grid_to_particle<decltype(what)::value>(grid,
+                                                  *stencil,
+                                                  fields,
+                                                  0.01,
+                                                  0.9,
+                                                  particles,
+                                                  NoAfterDeformation(),
+                                                  NoGradientAdjustment(),
+                                                  FirstOrderIncrement(),
+                                                  remap);
+        };
         const auto g2p = [&](auto &&remap) {
           test::set_particle_state(particles, before);
           if (stencil->where_used)
-            grid_to_particle<G2P::motion_keeping_reference>(
-              grid,
-              *stencil,
-              fields,
-              0.01,
-              0.9,
-              particles,
-              NoAfterDeformation(),
-              NoGradientAdjustment(),
-              FirstOrderIncrement(),
-              remap);
+            run(std::integral_constant<G2P, G2P::motion_keeping_reference>(),
+                remap);
           else
-            grid_to_particle<G2P::motion>(grid,
-                                          *stencil,
-                                          fields,
-                                          0.01,
-                                          0.9,
-                                          particles,
-                                          NoAfterDeformation(),
-                                          NoGradientAdjustment(),
-                                          FirstOrderIncrement(),
-                                          remap);
+            run(std::integral_constant<G2P, G2P::motion>(), remap);
           return test::particle_state(particles);
         };
         const std::vector<double> moved = g2p(NoRemap());
