@@ -218,12 +218,29 @@ namespace dealmpm
                     0.);
     }
 
+    /** MUSL's G2P re-maps mass and momentum in its sweep (RemapInSweep;
+     * the 2D column: 574 -> 563 instructions per particle-step) unless the
+     * re-map needs more than the updated velocity and the sweep's weights:
+     * APIC's affine part, or each body's fields (contact). */
+    template <int dim>
+    bool
+    remaps_in_g2p(const StepState<dim> &s)
+    {
+      // Newmark runs MUSL's stages with its own G2P, not g2p(): its
+      // re-map stays a P2G.
+      return s.method.scheme == UpdateScheme::MUSL &&
+             !s.method.particle_update.newmark &&
+             !s.field_set.has_body_fields() &&
+             s.particles.fields.affine_velocity ==
+               numbers::invalid_unsigned_int;
+    }
+
     template <int dim>
     void
     p2g_mass_momentum(StepState<dim> &s, const std::string &timer_section)
     {
       // MUSL's G2P made the re-map (remaps_in_g2p()): no timer row.
-      if (s.remapped_in_g2p)
+      if (remaps_in_g2p(s))
         return;
       TimerOutput::Scope t(s.timer, timer_section);
       map_to_grid(s, true, false);
@@ -429,21 +446,6 @@ namespace dealmpm
       return s.stencil.where_used && s.method.scheme == UpdateScheme::MUSL;
     }
 
-    /** MUSL's G2P re-maps mass and momentum in its sweep (RemapInSweep;
-     * the 2D column: 574 -> 563 instructions per particle-step) unless the
-     * re-map needs more than the updated velocity and the sweep's weights:
-     * APIC's affine part, or each body's fields (contact). */
-    template <int dim>
-    bool
-    remaps_in_g2p(const StepState<dim> &s)
-    {
-      return s.method.scheme == UpdateScheme::MUSL &&
-             !s.method.particle_update.newmark &&
-             !s.field_set.has_body_fields() &&
-             s.particles.fields.affine_velocity ==
-               numbers::invalid_unsigned_int;
-    }
-
     template <int dim>
     void
     g2p(StepState<dim> &s, const std::string &timer_section)
@@ -484,7 +486,6 @@ namespace dealmpm
       });
       if (remap)
         remap->finish();
-      s.remapped_in_g2p = remap.has_value();
     }
 
     template <int dim>

@@ -100,9 +100,6 @@ namespace dealmpm
     /** Some particle left its cell in G2P (they are relocated after the
      * step). */
     bool left_cell = false;
-    /** MUSL's G2P re-mapped mass and momentum (its P2G stage then has
-     * nothing to do). */
-    bool remapped_in_g2p = false;
 
     /** What an effect sees of the step. */
     EffectContext<dim>

@@ -413,10 +413,8 @@ namespace dealmpm
      * light-node weights) copied into locals, indexed by the cell's vertex
      * (what the light-node pass reads through BoxWeights), and prepared for
      * interpolation (BoxQ1Component): the nodal arrays are read once a
-     * cell instead of once a particle. The increments only with @p
-     * increments (a sweep that updates the velocity; MUSL's stress update
-     * does not: 2D column 8 instructions per particle-step). */
-    template <int dim, bool light, bool increments = true>
+     * cell instead of once a particle. */
+    template <int dim, bool light>
     struct CellArrays
     {
       static constexpr bool         may_be_light = light;
@@ -443,15 +441,13 @@ namespace dealmpm
         for (unsigned int v = 0; v < n_vertices; ++v)
           for (unsigned int d = 0; d < dim; ++d)
             {
-              velocity[d][v] = from.velocity[d][nodes[v]];
-              if (increments)
-                increment[d][v] = from.increment[d][nodes[v]];
+              velocity[d][v]  = from.velocity[d][nodes[v]];
+              increment[d][v] = from.increment[d][nodes[v]];
             }
         for (unsigned int d = 0; d < dim; ++d)
           {
             velocity_q1[d].set(velocity[d], cell.inverse_jacobian);
-            if (increments)
-              increment_q1[d].set(increment[d], cell.inverse_jacobian);
+            increment_q1[d].set(increment[d], cell.inverse_jacobian);
           }
         if (light && from.weight)
           {
@@ -480,7 +476,6 @@ namespace dealmpm
                   Tensor<1, dim>   &dv,
                   Tensor<2, dim>   &L) const
       {
-        static_assert(!motion || increments);
         for (unsigned int d = 0; d < dim; ++d)
           {
             double grad[dim];
@@ -522,16 +517,14 @@ namespace dealmpm
      * handed to @p remap.end_box_cell(cell, nodes, sums) after its
      * particles: a local the compiler keeps in registers, which it cannot
      * do with a member that the particles' properties might alias): a cell
-     * at a time with CellArrays (with the increments if @p increments)
-     * and BoxWeights where the weights are linear ones computed here
-     * (LinearWeights), the particles read one set of nodal arrays
-     * (VelocityArrays, not one per body) and the cell is a box without hanging
-     * nodes; else each particle with @p weights and @p arrays. Both give the
-     * same numbers in the same order. The cell path passes k = 0 and vertex
-     * indices: fine for what reads weights computed here (not APIC, whose x_p
-     * and node positions need the stored stencil). */
-    template <bool increments,
-              int  dim,
+     * at a time with CellArrays and BoxWeights where the weights are linear
+     * ones computed here (LinearWeights), the particles read one set of nodal
+     * arrays (VelocityArrays, not one per body) and the cell is a box without
+     * hanging nodes; else each particle with @p weights and @p arrays. Both
+     * give the same numbers in the same order. The cell path passes k = 0 and
+     * vertex indices: fine for what reads weights computed here (not APIC,
+     * whose x_p and node positions need the stored stencil). */
+    template <int dim,
               typename Weights,
               typename Arrays,
               typename Remap,
@@ -564,9 +557,10 @@ namespace dealmpm
                 {
                   const unsigned int *const nodes =
                     &grid.cell_nodes[c.first_node];
-                  const CellArrays<dim, Arrays::may_be_light, increments> local(
-                    arrays, c, nodes);
-                  Sums sums;
+                  const CellArrays<dim, Arrays::may_be_light> local(arrays,
+                                                                    c,
+                                                                    nodes);
+                  Sums                                        sums;
                   by_cell.for_each(i, [&](auto &p) DEAL_II_ALWAYS_INLINE {
                     per_particle(k++, p, c, BoxWeights<dim>(), local, sums);
                   });
@@ -661,7 +655,7 @@ namespace dealmpm
       leavers.start();
     AssertThrow(!(affine && stencil.where_used), ExcInternalError());
     with_weights(grid, stencil, [&](const auto &weights) {
-      g2p_sweep::visit<parts::motion>(
+      g2p_sweep::visit(
         grid,
         particles,
         weights,
