@@ -170,6 +170,10 @@ namespace dealmpm::test
           for (unsigned int j = 0; j < dim; ++j)
             props[f.deformation_gradient + i * dim + j] =
               (i == j ? 1. : 0.) + 0.1 * r(rng);
+        // APIC's B = sum N v (x) (x_i - x_p): of order v h.
+        if (f.affine_velocity != numbers::invalid_unsigned_int)
+          for (unsigned int i = 0; i < dim * dim; ++i)
+            props[f.affine_velocity + i] = 0.1 * r(rng);
       }
     fields.increment_weight.reinit(grid.partitioner);
     for (unsigned int i = 0; i < fields.mass.locally_owned_size() +

@@ -140,13 +140,12 @@ namespace dealmpm
     // The sweeps compute a particle's weights from its reference location
     // in its listed cell, which G2P's move changes after the sweeps of the
     // step that read them (MUSL's G2P leaves it to the stress update). The
-    // other readers read stored weights: APIC's positions, Newmark's
-    // predictor, the mixed-cell split, FEM regions' contact, total
-    // Lagrangian's reference stencil, most effects.
+    // other readers read stored weights: Newmark's predictor, the
+    // mixed-cell split, FEM regions' contact, total Lagrangian's reference
+    // stencil, most effects. APIC needs none (affine_transfer.h).
     const MethodSettings &method = run_settings.method;
-    if (kernel.name() != "linear" || method.apic ||
-        method.particle_update.newmark || method.total_lagrangian() ||
-        mixed_cells || !regions.empty())
+    if (kernel.name() != "linear" || method.particle_update.newmark ||
+        method.total_lagrangian() || mixed_cells || !regions.empty())
       return false;
     return std::none_of(effects.begin(), effects.end(), [](const auto &effect) {
       return effect->reads_stencil();

@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <functional>
-#include <optional>
 #include <type_traits>
 
 namespace dealmpm
@@ -221,7 +220,8 @@ namespace dealmpm
     /** MUSL's G2P re-maps mass and momentum in its sweep (RemapInSweep;
      * the 2D column: 574 -> 563 instructions per particle-step) unless the
      * re-map needs more than the updated velocity and the sweep's weights:
-     * APIC's affine part, or each body's fields (contact). */
+     * each body's fields (contact), or APIC's x_p in total Lagrangian
+     * (the stencil's reference positions). */
     template <int dim>
     bool
     remaps_in_g2p(const StepState<dim> &s)
@@ -231,8 +231,29 @@ namespace dealmpm
       return s.method.scheme == UpdateScheme::MUSL &&
              !s.method.particle_update.newmark &&
              !s.field_set.has_body_fields() &&
-             s.particles.fields.affine_velocity ==
-               numbers::invalid_unsigned_int;
+             !(s.method.apic &&
+               s.method.formulation == Formulation::total_lagrangian);
+    }
+
+    /** @p sweep(remap) with the re-map MUSL's G2P makes (remaps_in_g2p();
+     * with APIC's affine part compiled in only where the particles carry
+     * it: a run-time switch in the box cells cost MUSL's 2D column 616
+     * against 568 instructions per particle-step), or with NoRemap. */
+    template <int dim, typename Sweep>
+    void
+    with_remap(StepState<dim> &s, const Sweep &sweep)
+    {
+      NoRemap none;
+      if (!remaps_in_g2p(s))
+        return sweep(none);
+      const auto run = [&](auto &&remap) {
+        sweep(remap);
+        remap.finish();
+      };
+      if (s.method.apic)
+        run(RemapInSweep<dim, true>(s.fields, s.grid));
+      else
+        run(RemapInSweep<dim>(s.fields, s.grid));
     }
 
     template <int dim>
@@ -450,13 +471,10 @@ namespace dealmpm
     void
     g2p(StepState<dim> &s, const std::string &timer_section)
     {
-      TimerOutput::Scope               t(s.timer, timer_section);
-      std::optional<RemapInSweep<dim>> remap;
-      if (remaps_in_g2p(s))
-        remap.emplace(s.fields);
+      TimerOutput::Scope t(s.timer, timer_section);
       with_nodal_velocity(s, [&](const auto &velocities) {
-        const auto motion = [&](const auto formulation, const auto what) {
-          const auto sweep = [&](auto &&with_remap) {
+        with_remap(s, [&](auto &remap) {
+          const auto motion = [&](const auto formulation, const auto what) {
             s.left_cell = grid_to_particle<decltype(what)::value,
                                            decltype(formulation)::value>(
               s.grid,
@@ -468,24 +486,19 @@ namespace dealmpm
               NoAfterDeformation(),
               NoGradientAdjustment(),
               FirstOrderIncrement(),
-              with_remap);
+              remap);
           };
-          if (remap)
-            sweep(*remap);
+          using Motion = std::integral_constant<G2P, G2P::motion>;
+          if (s.method.formulation == Formulation::total_lagrangian)
+            motion(TotalLagrangian(), Motion());
+          else if (defers_reference_location(s))
+            motion(
+              UpdatedLagrangian(),
+              std::integral_constant<G2P, G2P::motion_keeping_reference>());
           else
-            sweep(NoRemap());
-        };
-        using Motion = std::integral_constant<G2P, G2P::motion>;
-        if (s.method.formulation == Formulation::total_lagrangian)
-          motion(TotalLagrangian(), Motion());
-        else if (defers_reference_location(s))
-          motion(UpdatedLagrangian(),
-                 std::integral_constant<G2P, G2P::motion_keeping_reference>());
-        else
-          motion(UpdatedLagrangian(), Motion());
+            motion(UpdatedLagrangian(), Motion());
+        });
       });
-      if (remap)
-        remap->finish();
     }
 
     template <int dim>

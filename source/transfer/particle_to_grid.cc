@@ -1,3 +1,4 @@
+#include <dealmpm/transfer/affine_transfer.h>
 #include <dealmpm/transfer/box_q1.h>
 #include <dealmpm/transfer/particle_to_grid.h>
 #include <dealmpm/transfer/particle_weights.h>
@@ -189,17 +190,20 @@ namespace dealmpm
     };
 
     /** P2G with linear weights computed where used (updated Lagrangian,
-     * FLIP or PIC, one set of nodal fields) in a cell without hanging
-     * nodes: its particles add into its 2^dim nodes held in locals
-     * (CellSums), added into the nodal vectors once. */
-    template <int dim, bool mass_and_momentum, bool internal_force>
+     * one set of nodal fields) in a cell without hanging nodes: its
+     * particles add into its 2^dim nodes held in locals (CellSums),
+     * added into the nodal vectors once. With APIC (@p affine: the
+     * particles' B at @p affine_velocity) only in box cells, by the
+     * closed forms of affine_transfer.h. */
+    template <int dim, bool mass_and_momentum, bool internal_force, bool affine>
     DEAL_II_ALWAYS_INLINE inline void
     transfer_one_cell(
       const BackgroundGrid<dim>                          &grid,
       const ParticlesByCell<dim, const ParticleSet<dim>> &by_cell,
       const LinearWeights<dim>                           &weights,
       const std::size_t                                   cell_index,
-      const NodalPointers<dim>                           &to)
+      const NodalPointers<dim>                           &to,
+      const unsigned int                                  affine_velocity)
     {
       const GridCell<dim> &c = grid.cells[cell_index];
       if (by_cell.empty(cell_index))
@@ -211,11 +215,21 @@ namespace dealmpm
           by_cell.for_each(
             cell_index, [&](const auto &p) DEAL_II_ALWAYS_INLINE {
               const typename CellSums<dim, mass_and_momentum, internal_force>::
-                Shares shares(p);
-              box.add(shares.m,
-                      shares.v,
-                      shares.minus_V_sigma,
-                      p.get_reference_location());
+                Shares         shares(p);
+              const Point<dim> xi = p.get_reference_location();
+              if constexpr (affine)
+                {
+                  double g[dim][dim];
+                  box_affine_unit_gradient(
+                    read_tensor<dim>(&p.get_properties()[affine_velocity]),
+                    xi,
+                    c.inverse_jacobian,
+                    g);
+                  box.add_affine(
+                    shares.m, shares.v, g, shares.minus_V_sigma, xi);
+                }
+              else
+                box.add(shares.m, shares.v, shares.minus_V_sigma, xi);
             });
           box.scatter(c.inverse_jacobian, nodes, to);
           return;
@@ -231,11 +245,13 @@ namespace dealmpm
     /** P2G a cell at a time, for linear weights computed here: a cell
      * without hanging nodes keeps its nodes' sums in locals and adds them
      * once (transfer_one_cell(); a value added straight into the nodal
-     * vectors cost 7 to 10 instructions), the others add each particle's
-     * shares with @p per_particle(k, particle, cell). */
+     * vectors cost 7 to 10 instructions; with APIC a box cell only), the
+     * others add each particle's shares with @p per_particle(k, particle,
+     * cell). */
     template <int  dim,
               bool mass_and_momentum,
               bool internal_force,
+              bool affine,
               typename PerParticle>
     void
     transfer_by_cell(const BackgroundGrid<dim> &grid,
@@ -249,9 +265,10 @@ namespace dealmpm
       for (std::size_t i = 0; i < grid.cells.size(); ++i)
         {
           const GridCell<dim> &c = grid.cells[i];
-          if (c.first_weight == numbers::invalid_unsigned_int)
-            transfer_one_cell<dim, mass_and_momentum, internal_force>(
-              grid, by_cell, weights, i, to);
+          if (c.first_weight == numbers::invalid_unsigned_int &&
+              (!affine || LinearWeights<dim>::is_box(c)))
+            transfer_one_cell<dim, mass_and_momentum, internal_force, affine>(
+              grid, by_cell, weights, i, to, particles.fields.affine_velocity);
           else
             by_cell.for_each(i, [&](const auto &p) DEAL_II_ALWAYS_INLINE {
               per_particle(0, p, c); // LinearWeights needs no k
@@ -259,36 +276,35 @@ namespace dealmpm
         }
     }
 
-    /** APIC: the particle carries the affine field v + C (x - x_p) with
-     * C = B D^-1, B stored by G2P and D = sum N (x_i - x_p) (x) (x_i -
-     * x_p), x_p the position of the stencil (MUSL re-maps after the
-     * particles moved): with this D the round trip conserves angular
-     * momentum exactly (Jiang et al. 2015). Returns C (zero where D is
-     * singular: a particle on a node line). */
+    /** APIC's x_p, and C = B D^-1 about it into @p C. x_p is the
+     * stencil's recorded position, or, for weights computed where used,
+     * the point they are computed at (MUSL re-maps after the particles
+     * moved). */
     template <int dim, typename Weights, typename Particle>
-    DEAL_II_ALWAYS_INLINE inline Tensor<2, dim>
-    affine_velocity_gradient(const BackgroundGrid<dim> &grid,
-                             const Weights             &weights,
-                             const std::size_t          k,
-                             const Particle            &p,
-                             const GridCell<dim>       &c,
-                             const Point<dim>          &x_p,
-                             const CoreFields          &f)
+    DEAL_II_ALWAYS_INLINE inline Point<dim>
+    affine_origin(const BackgroundGrid<dim> &grid,
+                  const Stencil<dim>        &stencil,
+                  const Weights             &weights,
+                  const std::size_t          k,
+                  const Particle            &p,
+                  const GridCell<dim>       &c,
+                  const CoreFields          &f,
+                  Tensor<2, dim>            &C)
     {
-      Tensor<2, dim> D;
-      weights(k,
-              p,
-              c,
-              [&](const unsigned int n, const double N, const Tensor<1, dim> &)
-                DEAL_II_ALWAYS_INLINE {
-                  const Tensor<1, dim> r = grid.node_positions[n] - x_p;
-                  D += N * outer_product(r, r);
-                });
-      if (std::abs(determinant(D)) >
-          1e-12 * Utilities::fixed_power<dim>(trace(D)))
-        return read_tensor<dim>(&p.get_properties()[f.affine_velocity]) *
-               invert(D);
-      return Tensor<2, dim>();
+      Point<dim> x_p;
+      if constexpr (std::is_same_v<Weights, LinearWeights<dim>>)
+        x_p = weights_centroid(grid, weights, k, p, c);
+      else
+        x_p = stencil.position[k];
+      C = affine_velocity_gradient(grid,
+                                   weights,
+                                   k,
+                                   p,
+                                   c,
+                                   x_p,
+                                   read_tensor<dim>(
+                                     &p.get_properties()[f.affine_velocity]));
+      return x_p;
     }
 
     /** The kernel, compiled once per choice of quantities so that the usual
@@ -311,8 +327,8 @@ namespace dealmpm
     {
       const CoreFields &f       = particles.fields;
       constexpr bool    by_cell = std::is_same_v<Weights, LinearWeights<dim>> &&
-                               !Targets::per_body && !affine &&
-                               !total_lagrangian && !predictor;
+                               !Targets::per_body && !total_lagrangian &&
+                               !predictor;
       const auto per_particle =
         [&](const std::size_t k, const auto &p, const GridCell<dim> &c)
           DEAL_II_ALWAYS_INLINE {
@@ -327,10 +343,7 @@ namespace dealmpm
             Tensor<2, dim> C;
             Point<dim>     x_p;
             if (affine)
-              {
-                x_p = stencil.position[k];
-                C   = affine_velocity_gradient(grid, weights, k, p, c, x_p, f);
-              }
+              x_p = affine_origin(grid, stencil, weights, k, p, c, f, C);
             // Once per particle, as a plain array (deal.II's symmetric
             // tensor times a vector goes through accessor objects).
             double force_per_gradient_component[dim][dim] = {};
@@ -371,7 +384,7 @@ namespace dealmpm
                     });
           };
       if constexpr (by_cell)
-        transfer_by_cell<dim, mass_and_momentum, internal_force>(
+        transfer_by_cell<dim, mass_and_momentum, internal_force, affine>(
           grid, particles, weights, targets.fields, per_particle);
       else
         for_each_particle_in_stencil_order(grid, particles, per_particle);
@@ -431,9 +444,7 @@ namespace dealmpm
       const bool affine =
         particles.fields.affine_velocity != numbers::invalid_unsigned_int;
       const bool reference = formulation == Formulation::total_lagrangian;
-      // APIC's x_p are the stored stencil's positions.
-      AssertThrow(!(affine && stencil.where_used), ExcInternalError());
-      const auto run = [&](auto... choices) {
+      const auto run       = [&](auto... choices) {
         with_weights(grid, stencil, [&](const auto &weights) {
           transfer<dim, decltype(choices)::value...>(
             grid, particles, stencil, weights, targets, predictor_offset);

@@ -21,7 +21,7 @@ using namespace dealmpm;
 
 namespace
 {
-  const char *refined_scene = R"(
+  const std::string refined_scene = R"(
 set Dimension = 2
 subsection Grid
   set Lower corner = 0, 0
@@ -40,7 +40,7 @@ end
 
   /** Box cells of three sizes (h = 0.25 to 1/12 along x, unequal edges)
    * with hanging nodes between them. */
-  const char *refined_scene_3d = R"(
+  const std::string refined_scene_3d = R"(
 set Dimension = 3
 subsection Grid
   set Lower corner = 0, 0, 0
@@ -58,6 +58,9 @@ subsection Body 1
   set Particles per cell = 2
 end
 )";
+
+  /** Appended to a scene: the particles carry APIC's B. */
+  const std::string apic = "subsection MPM\n set Velocity update = APIC\nend\n";
 
   const std::string distorted_scene =
     "subsection Grid\n set Type = mesh file\n set Mesh file = " DEALMPM_SOURCE_DIR
@@ -118,6 +121,8 @@ end
       fields.reinit(grid.partitioner);
       test::randomize_state(particles, grid, fields, rng);
       compute_linear_stencil(grid, particles, stored);
+      if (particles.fields.affine_velocity != numbers::invalid_unsigned_int)
+        record_positions(grid, particles, stored);
       where_used.where_used = true;
       before                = test::particle_state(particles);
     }
@@ -221,6 +226,18 @@ TEST(ParticleWeights, WhereUsedEqualStoredIn3D)
   check_weights_where_used<3>(refined_scene_3d);
 }
 
+// APIC with weights computed where used: B = L_v D and C = B D^-1 by
+// their closed forms in box cells, the sums about the particle's position
+// (G2P, MUSL's re-map in its sweep) or the weights' centroid (P2G, also
+// MUSL's re-map after its sweep) elsewhere; the stored stencil measures
+// from its recorded positions.
+TEST(ParticleWeights, ApicWhereUsedEqualsStored)
+{
+  check_weights_where_used<2>(refined_scene + apic);
+  check_weights_where_used<2>(distorted_scene + apic);
+  check_weights_where_used<3>(refined_scene_3d + apic);
+}
+
 namespace
 {
   /** MUSL's G2P with the re-map in its sweep (RemapInSweep) leaves the
@@ -265,10 +282,15 @@ namespace
         };
         const std::vector<double> moved = g2p(NoRemap());
         particle_to_grid(grid, particles, *stencil, after_sweep, true, false);
-        in_sweep.mass = 1.; // what the re-map must not add to
-        RemapInSweep<dim> remap(in_sweep);
-        EXPECT_EQ(g2p(remap), moved);
-        remap.finish();
+        in_sweep.mass           = 1.; // what the re-map must not add to
+        const auto in_the_sweep = [&](auto &&remap) {
+          EXPECT_EQ(g2p(remap), moved);
+          remap.finish();
+        };
+        if (particles.fields.affine_velocity != numbers::invalid_unsigned_int)
+          in_the_sweep(RemapInSweep<dim, true>(in_sweep, grid));
+        else
+          in_the_sweep(RemapInSweep<dim>(in_sweep, grid));
         EXPECT_NE(moved, before);
         expect_same_sums(after_sweep.mass, in_sweep.mass);
         for (unsigned int d = 0; d < dim; ++d)
@@ -282,6 +304,13 @@ TEST(ParticleWeights, MuslRemapInTheSweepEqualsTheRemapAfterIt)
   check_remap_in_sweep<2>(refined_scene);
   check_remap_in_sweep<2>(distorted_scene);
   check_remap_in_sweep<3>(refined_scene_3d);
+}
+
+TEST(ParticleWeights, ApicMuslRemapInTheSweepEqualsTheRemapAfterIt)
+{
+  check_remap_in_sweep<2>(refined_scene + apic);
+  check_remap_in_sweep<2>(distorted_scene + apic);
+  check_remap_in_sweep<3>(refined_scene_3d + apic);
 }
 
 namespace

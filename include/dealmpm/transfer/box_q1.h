@@ -196,6 +196,43 @@ namespace dealmpm
           }
     }
 
+    /** add() with APIC's affine velocity (affine_transfer.h): vertex i
+     * gets the momentum m N_i (v + g (xi_i - xi)), @p g = C h by unit-cell
+     * direction (box_affine_unit_gradient()): add()'s m N_i v, then
+     * m N_i g (xi_i - xi), so that add() stays as lean without APIC. */
+    DEAL_II_ALWAYS_INLINE void
+    add_affine(const double          m,
+               const Tensor<1, dim> &v,
+               const double (&g)[dim][dim],
+               const double (&S)[dim][dim],
+               const Point<dim> &xi)
+    {
+      add(m, v, S, xi);
+      if (!mass_and_momentum)
+        return;
+      Pair f[dim]; // (1 - xi_d, xi_d), as in add()
+      for (unsigned int d = 0; d < dim; ++d)
+        f[d] = Pair{1. - xi[d], xi[d]};
+      const Pair f01[2] = {f[0] * f[1][0], f[0] * f[1][1]};
+      for (unsigned int w = 0; w < n_pairs; ++w)
+        {
+          const Pair mN =
+            m * (dim == 2 ? f01[w] : f01[w & 1] * f[dim - 1][w >> 1]);
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              // g (xi_i - xi) at the pair's vertex on the lower x side,
+              // then one step along x.
+              double lower = 0;
+              for (unsigned int b = 0; b < dim; ++b)
+                lower -= g[d][b] * xi[b];
+              for (unsigned int b = 1; b < dim; ++b)
+                if ((w >> (b - 1)) & 1u)
+                  lower += g[d][b];
+              momentum[d][w] += mN * Pair{lower, lower + g[d][0]};
+            }
+        }
+    }
+
     /** Add the sums into the nodal vectors @p to (.mass, .momentum[d],
      * .force[d]: raw arrays) at the cell's @p nodes: the force from the
      * cell's d xi / d x @p K (diagonal), each vertex's summed over j in

@@ -5,6 +5,7 @@
 #include <dealmpm/grid/nodal_field_set.h>
 #include <dealmpm/grid/nodal_fields.h>
 #include <dealmpm/particles/particle_set.h>
+#include <dealmpm/transfer/affine_transfer.h>
 #include <dealmpm/transfer/box_q1.h>
 #include <dealmpm/transfer/deformation_update.h>
 #include <dealmpm/transfer/formulation.h>
@@ -12,6 +13,7 @@
 #include <dealmpm/transfer/remap_in_sweep.h>
 #include <dealmpm/transfer/stencil.h>
 #include <dealmpm/transfer/stencil_order.h>
+#include <dealmpm/transfer/velocity_arrays.h>
 
 #include <algorithm>
 #include <type_traits>
@@ -73,108 +75,43 @@ namespace dealmpm
     {}
   };
 
-  /** The nodal velocity and increment arrays a G2P sweep reads: one set
-   * for every particle (single-velocity MPM). With @p light, also USL's
-   * light-node weights (update_nodal_velocity()), if the fields have any:
-   * a sweep compiled without them pays nothing for them. */
-  template <int dim, bool light = false>
-  struct VelocityArrays
-  {
-    static constexpr bool may_be_light = light;
-    const double         *velocity[dim];
-    const double         *increment[dim];
-    /** NodalFields::increment_weight when some node is light, or
-     * nullptr. */
-    const double *weight = nullptr;
-
-    explicit VelocityArrays(const NodalFields<dim> &fields)
-    {
-      if (light && fields.has_light_nodes)
-        weight = fields.increment_weight.begin();
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          velocity[d]  = fields.velocity[d].begin();
-          increment[d] = fields.velocity_increment[d].begin();
-        }
-    }
-
-    template <typename Properties>
-    DEAL_II_ALWAYS_INLINE const VelocityArrays &
-    of(const Properties &) const
-    {
-      return *this;
-    }
-
-    /** Whether a node of @p cell weighs less than 1 (asked only when
-     * weight is set). */
-    DEAL_II_ALWAYS_INLINE bool
-    has_light_node(const BackgroundGrid<dim> &grid,
-                   const GridCell<dim>       &cell) const
-    {
-      for (unsigned int j = 0; j < cell.n_nodes; ++j)
-        if (weight[grid.cell_nodes[cell.first_node + j]] < 1)
-          return true;
-      return false;
-    }
-  };
-
-  /** The core fields with USL's light-node weights (a sweep's Fields). */
-  template <int dim>
-  struct WithLightNodes
-  {
-    const NodalFields<dim> &fields;
-  };
-
-  /** Each particle reads its own body's nodal velocity (contact: the
-   * field set's body fields), light-node weights included. */
-  template <int dim>
-  struct BodyVelocities
-  {
-    std::vector<VelocityArrays<dim, true>> bodies;
-    const ParticleSet<dim>                &particles;
-
-    BodyVelocities(const NodalFieldSet<dim> &set,
-                   const ParticleSet<dim>   &particles)
-      : particles(particles)
-    {
-      for (const NodalFields<dim> &fields : set.body)
-        bodies.emplace_back(fields);
-    }
-
-    template <typename Properties>
-    DEAL_II_ALWAYS_INLINE const VelocityArrays<dim, true>                             &
-    of(const Properties &props) const
-    {
-      return bodies[particles.body_of(props)];
-    }
-  };
-
-  /** What a sweep reads for @p fields: their arrays. */
-  template <int dim>
-  VelocityArrays<dim>
-  velocity_arrays(const NodalFields<dim> &fields)
-  {
-    return VelocityArrays<dim>(fields);
-  }
-
-  template <int dim>
-  VelocityArrays<dim, true>
-  velocity_arrays(const WithLightNodes<dim> &with)
-  {
-    return VelocityArrays<dim, true>(with.fields);
-  }
-
-  template <int dim>
-  const BodyVelocities<dim> &
-  velocity_arrays(const BodyVelocities<dim> &bodies)
-  {
-    return bodies;
-  }
-
   namespace g2p_sweep
   {
     template <int dim>
     struct BoxWeights;
+
+    /** USL's light nodes (update_nodal_velocity()) lend L only the weight
+     * w of their own increment and the particle's interpolated dv for the
+     * rest: v_i - (1 - w) (dv_i - dv). A second pass over the stencil,
+     * which is in cache, in the cells that have such nodes only
+     * (@p cell is the particle's, in grid.cells), so that no other sweep
+     * and few particles pay for it. */
+    template <int dim, typename Weights, typename Particle, typename Arrays>
+    DEAL_II_ALWAYS_INLINE inline void
+    lend_light_nodes(const BackgroundGrid<dim> &grid,
+                     const Weights             &weights,
+                     const std::size_t          k,
+                     const Particle            &p,
+                     const GridCell<dim>       &cell,
+                     const Arrays              &from,
+                     const Tensor<1, dim>      &dv,
+                     Tensor<2, dim>            &L)
+    {
+      if (from.weight && from.has_light_node(grid, cell))
+        weights(k,
+                p,
+                cell,
+                [&](const unsigned int n,
+                    const double,
+                    const Tensor<1, dim> &grad_N) DEAL_II_ALWAYS_INLINE {
+                  const double light = 1. - from.weight[n];
+                  if (light > 0)
+                    for (unsigned int d = 0; d < dim; ++d)
+                      for (unsigned int b = 0; b < dim; ++b)
+                        L[d][b] +=
+                          light * (dv[d] - from.increment[d][n]) * grad_N[b];
+                });
+    }
 
     /** The sums over particle @p k's stencil (in @p cell) that a
      * sweep needs, from the nodal arrays @p from: v_grid = sum N v (if it moves
@@ -204,61 +141,59 @@ namespace dealmpm
            Tensor<2, dim>            &L,
            Tensor<2, dim>            &B)
     {
-      // APIC measures x_i - x_p from the stencil's positions (the
-      // particle's own in the updated Lagrangian sweeps, which have not
-      // moved it yet; its reference one in total Lagrangian).
-      const Point<dim> x_affine =
-        motion && affine ? stencil.position[k] : Point<dim>();
       if constexpr (std::is_same_v<Weights, BoxWeights<dim>>)
-        from.template interpolate<motion, move, deformation>(
-          p.get_reference_location(), v_grid, dv, L);
+        {
+          const Point<dim> xi = p.get_reference_location();
+          from.template interpolate<motion, move, deformation>(xi,
+                                                               v_grid,
+                                                               dv,
+                                                               L);
+          // APIC: B = L_v D (affine_transfer.h), before the light-node
+          // pass below changes L.
+          if (motion && affine)
+            B = box_affine_moment(deformation ? L : from.velocity_gradient(xi),
+                                  xi,
+                                  cell.inverse_jacobian);
+        }
       else
-        weights(k,
-                p,
-                cell,
-                [&](const unsigned int    n,
-                    const double          N,
-                    const Tensor<1, dim> &grad_N) DEAL_II_ALWAYS_INLINE {
-                  for (unsigned int d = 0; d < dim; ++d)
-                    {
-                      if (move)
-                        v_grid[d] += N * from.velocity[d][n];
-                      if (motion)
-                        dv[d] += N * from.increment[d][n];
-                      if (deformation)
-                        for (unsigned int b = 0; b < dim; ++b)
-                          L[d][b] += from.velocity[d][n] * grad_N[b];
-                    }
-                  if (motion && affine)
-                    {
-                      const Tensor<1, dim> r =
-                        grid.node_positions[n] - x_affine;
-                      for (unsigned int a = 0; a < dim; ++a)
-                        for (unsigned int b = 0; b < dim; ++b)
-                          B[a][b] += N * from.velocity[a][n] * r[b];
-                    }
-                });
-      // USL's light nodes (update_nodal_velocity()) lend L only the weight
-      // w of their own increment and the particle's interpolated dv for the
-      // rest: v_i - (1 - w) (dv_i - dv). A second pass over the stencil,
-      // which is in cache, in the cells that have such nodes only
-      // (@p cell is the particle's, in grid.cells), so that no other sweep
-      // and few particles pay for it.
-      if constexpr (motion && deformation && Arrays::may_be_light)
-        if (from.weight && from.has_light_node(grid, cell))
+        {
+          // APIC measures x_i - x_p from the stencil's positions (the
+          // particle's own in the updated Lagrangian sweeps, which have not
+          // moved it yet; its reference one in total Lagrangian), or, with
+          // weights computed where used, from the particle's position.
+          Point<dim> x_affine;
+          if constexpr (std::is_same_v<Weights, LinearWeights<dim>>)
+            x_affine = p.get_location();
+          else if (motion && affine)
+            x_affine = stencil.position[k];
           weights(k,
                   p,
                   cell,
-                  [&](const unsigned int n,
-                      const double,
+                  [&](const unsigned int    n,
+                      const double          N,
                       const Tensor<1, dim> &grad_N) DEAL_II_ALWAYS_INLINE {
-                    const double light = 1. - from.weight[n];
-                    if (light > 0)
-                      for (unsigned int d = 0; d < dim; ++d)
-                        for (unsigned int b = 0; b < dim; ++b)
-                          L[d][b] +=
-                            light * (dv[d] - from.increment[d][n]) * grad_N[b];
+                    for (unsigned int d = 0; d < dim; ++d)
+                      {
+                        if (move)
+                          v_grid[d] += N * from.velocity[d][n];
+                        if (motion)
+                          dv[d] += N * from.increment[d][n];
+                        if (deformation)
+                          for (unsigned int b = 0; b < dim; ++b)
+                            L[d][b] += from.velocity[d][n] * grad_N[b];
+                      }
+                    if (motion && affine)
+                      {
+                        const Tensor<1, dim> r =
+                          grid.node_positions[n] - x_affine;
+                        for (unsigned int a = 0; a < dim; ++a)
+                          for (unsigned int b = 0; b < dim; ++b)
+                            B[a][b] += N * from.velocity[a][n] * r[b];
+                      }
                   });
+        }
+      if constexpr (motion && deformation && Arrays::may_be_light)
+        lend_light_nodes(grid, weights, k, p, cell, from, dv, L);
     }
 
     /** Writes and returns the particle's new velocity: with APIC, v = sum N v
@@ -468,7 +403,23 @@ namespace dealmpm
         return light_cell;
       }
 
-      /** gather()'s sums at unit-cell point @p xi (no APIC here). */
+      /** The real gradient of the velocity at unit-cell point @p xi
+       * (APIC's B in a sweep that does not deform). */
+      DEAL_II_ALWAYS_INLINE Tensor<2, dim>
+                            velocity_gradient(const Point<dim> &xi) const
+      {
+        Tensor<2, dim> L;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            double grad[dim];
+            velocity_q1[d].value_and_gradient(xi, grad);
+            for (unsigned int b = 0; b < dim; ++b)
+              L[d][b] = grad[b];
+          }
+        return L;
+      }
+
+      /** gather()'s sums at unit-cell point @p xi but APIC's B. */
       template <bool motion, bool move, bool deformation>
       DEAL_II_ALWAYS_INLINE void
       interpolate(const Point<dim> &xi,
@@ -522,8 +473,8 @@ namespace dealmpm
      * arrays (VelocityArrays, not one per body) and the cell is a box without
      * hanging nodes; else each particle with @p weights and @p arrays. Both
      * give the same numbers in the same order. The cell path passes k = 0 and
-     * vertex indices: fine for what reads weights computed here (not APIC,
-     * whose x_p and node positions need the stored stencil). */
+     * vertex indices: fine for what reads weights computed here (APIC's
+     * sums there have closed forms, affine_transfer.h). */
     template <int dim,
               typename Weights,
               typename Arrays,
@@ -584,6 +535,95 @@ namespace dealmpm
     }
   } // namespace g2p_sweep
 
+  namespace g2p_sweep
+  {
+    /** grid_to_particle() with APIC's B (@p affine) or without. */
+    template <G2P         what,
+              Formulation formulation,
+              bool        affine,
+              int         dim,
+              typename Arrays,
+              typename AfterDeformation,
+              typename AdjustGradient,
+              typename Increment,
+              typename Remap>
+    bool
+    sweep(const BackgroundGrid<dim> &grid,
+          const Stencil<dim>        &stencil,
+          const Arrays              &arrays,
+          const double               dt,
+          const double               flip_fraction,
+          ParticleSet<dim>          &particles,
+          AfterDeformation          &after_deformation,
+          const AdjustGradient      &adjust_gradient,
+          const Increment           &f_increment,
+          Remap                     &remap)
+    {
+      using parts              = G2PParts<what>;
+      constexpr bool reference = formulation == Formulation::total_lagrangian;
+      const CoreFields &f      = particles.fields;
+      bool              left_cell = false;
+      auto &leavers = particles.leavers; // who leaves a cell, for relocate()
+      if constexpr (parts::move && !reference)
+        leavers.start();
+      with_weights(grid, stencil, [&](const auto &weights) {
+        g2p_sweep::visit(
+          grid,
+          particles,
+          weights,
+          arrays,
+          remap,
+          [&](const std::size_t    k,
+              auto                &p,
+              const GridCell<dim> &c,
+              const auto          &weights_here,
+              const auto          &from,
+              auto                &sums) DEAL_II_ALWAYS_INLINE {
+            Tensor<1, dim>          v_grid, dv;
+            Tensor<2, dim>          L, B;
+            const Point<dim>        x_p   = p.get_location();
+            const ArrayView<double> props = p.get_properties();
+            g2p_sweep::gather<parts::motion, parts::move, parts::deformation>(
+              grid,
+              stencil,
+              weights_here,
+              k,
+              p,
+              c,
+              from,
+              affine,
+              v_grid,
+              dv,
+              L,
+              B);
+            if (parts::motion)
+              {
+                const Tensor<1, dim> v = g2p_sweep::update_velocity(
+                  props, f, v_grid, dv, B, flip_fraction, affine);
+                remap.add(weights_here, k, p, c, v, B, sums);
+              }
+            if constexpr (parts::move && reference)
+              g2p_sweep::displace(p, props, x_p, dt * v_grid);
+            else if constexpr (parts::move)
+              g2p_sweep::move_and_record<!parts::keep_reference>(
+                grid, k, p, props, c, x_p, dt * v_grid, leavers, left_cell);
+            if (parts::deformation)
+              g2p_sweep::deform_and_report<reference>(p,
+                                                      props,
+                                                      c,
+                                                      L,
+                                                      dt,
+                                                      adjust_gradient,
+                                                      f_increment,
+                                                      after_deformation);
+            if (parts::then_reference)
+              p.set_reference_location(c.reference_point(x_p));
+          });
+      });
+      return left_cell;
+    }
+  } // namespace g2p_sweep
+
   /**
    * G2P from the nodal velocity field (fields.velocity) and its increment
    * (fields.velocity_increment, for FLIP); @p fields is a NodalFields, or
@@ -619,8 +659,6 @@ namespace dealmpm
    * With @p remap a RemapInSweep (MUSL's motion), the sweep also re-maps
    * the particles' mass and updated momentum to the grid.
    *
-   * APIC needs the stored stencil (its x_p are the stencil's positions).
-   *
    * @return true if motion moved some local particle out of its cell
    * (never with total Lagrangian).
    */
@@ -644,71 +682,25 @@ namespace dealmpm
                    const Increment           &f_increment       = {},
                    Remap                    &&remap             = {})
   {
-    using parts                 = G2PParts<what>;
-    constexpr bool    reference = formulation == Formulation::total_lagrangian;
-    const auto       &arrays    = velocity_arrays(fields);
-    const CoreFields &f         = particles.fields;
-    const bool affine    = f.affine_velocity != numbers::invalid_unsigned_int;
-    bool       left_cell = false;
-    auto      &leavers = particles.leavers; // who leaves a cell, for relocate()
-    if constexpr (parts::move && !reference)
-      leavers.start();
-    AssertThrow(!(affine && stencil.where_used), ExcInternalError());
-    with_weights(grid, stencil, [&](const auto &weights) {
-      g2p_sweep::visit(
+    // APIC's B compiled only into the sweeps that update the velocity,
+    // and run only where the particles carry it (a run-time switch cost
+    // the 3D column's USL sweep 20 instructions per particle-step).
+    const auto sweep = [&](const auto affine) {
+      return g2p_sweep::sweep<what, formulation, decltype(affine)::value>(
         grid,
+        stencil,
+        velocity_arrays(fields),
+        dt,
+        flip_fraction,
         particles,
-        weights,
-        arrays,
-        remap,
-        [&](const std::size_t    k,
-            auto                &p,
-            const GridCell<dim> &c,
-            const auto          &weights_here,
-            const auto          &from,
-            auto                &sums) DEAL_II_ALWAYS_INLINE {
-          Tensor<1, dim>          v_grid, dv;
-          Tensor<2, dim>          L, B;
-          const Point<dim>        x_p   = p.get_location();
-          const ArrayView<double> props = p.get_properties();
-          g2p_sweep::gather<parts::motion, parts::move, parts::deformation>(
-            grid,
-            stencil,
-            weights_here,
-            k,
-            p,
-            c,
-            from,
-            affine,
-            v_grid,
-            dv,
-            L,
-            B);
-          if (parts::motion)
-            {
-              const Tensor<1, dim> v = g2p_sweep::update_velocity(
-                props, f, v_grid, dv, B, flip_fraction, affine);
-              remap.add(
-                weights_here, k, p, c, props[FixedCore<dim>::mass], v, sums);
-            }
-          if constexpr (parts::move && reference)
-            g2p_sweep::displace(p, props, x_p, dt * v_grid);
-          else if constexpr (parts::move)
-            g2p_sweep::move_and_record<!parts::keep_reference>(
-              grid, k, p, props, c, x_p, dt * v_grid, leavers, left_cell);
-          if (parts::deformation)
-            g2p_sweep::deform_and_report<reference>(p,
-                                                    props,
-                                                    c,
-                                                    L,
-                                                    dt,
-                                                    adjust_gradient,
-                                                    f_increment,
-                                                    after_deformation);
-          if (parts::then_reference)
-            p.set_reference_location(c.reference_point(x_p));
-        });
-    });
-    return left_cell;
+        after_deformation,
+        adjust_gradient,
+        f_increment,
+        remap);
+    };
+    if constexpr (G2PParts<what>::motion)
+      if (particles.fields.affine_velocity != numbers::invalid_unsigned_int)
+        return sweep(std::true_type());
+    return sweep(std::false_type());
   }
 } // namespace dealmpm

@@ -3,6 +3,7 @@
 #include <dealmpm/grid/background_grid.h>
 #include <dealmpm/grid/nodal_fields.h>
 #include <dealmpm/particles/particle_set.h>
+#include <dealmpm/transfer/affine_transfer.h>
 #include <dealmpm/transfer/box_q1.h>
 
 #include <type_traits>
@@ -42,23 +43,27 @@ namespace dealmpm
    * sweep's local Sums) and added once at the cell's end, as P2G does (the
    * same numbers); the particles of other cells add into the nodal vectors
    * directly (P2G sums a non-box cell in locals first: equal to
-   * round-off). Not for APIC (its re-map adds the affine part) nor
-   * per-body fields (contact).
+   * round-off). With APIC (@p affine: the particles carry B) each node gets
+   * m N_i (v + C (x_i - x_p)), C = B D^-1 at the step's start (the
+   * particle's position before the sweep moves it; in a box cell
+   * BoxCellSums::add_affine()). Not for per-body fields (contact).
    *
    * Zeroes the fields' mass and momentum when made; finish() sums them
    * over the ranks. The sweep must not read them (G2P reads only the
    * velocity and its increment).
    */
-  template <int dim>
+  template <int dim, bool affine = false>
   struct RemapInSweep
   {
     using Sums = BoxCellSums<dim, true, false>;
-    NodalFields<dim> &fields;
-    double           *mass;
-    double           *momentum[dim];
+    NodalFields<dim>          &fields;
+    const BackgroundGrid<dim> &grid;
+    double                    *mass;
+    double                    *momentum[dim];
 
-    explicit RemapInSweep(NodalFields<dim> &to)
+    RemapInSweep(NodalFields<dim> &to, const BackgroundGrid<dim> &grid)
       : fields(to)
+      , grid(grid)
       , mass(to.mass.begin())
     {
       fields.mass = 0.;
@@ -69,35 +74,49 @@ namespace dealmpm
         }
     }
 
-    /** Add particle @p p of mass @p m and updated velocity @p v with
-     * @p weights (before the sweep moves it): into @p sums with
-     * BoxWeights. */
+    /** Add particle @p p with its updated velocity @p v and (APIC) affine
+     * moment @p B with @p weights (before the sweep moves it): into
+     * @p sums with BoxWeights. */
     template <typename Weights, typename Particle>
     DEAL_II_ALWAYS_INLINE void
     add(const Weights        &weights,
         const std::size_t     k,
         const Particle       &p,
         const GridCell<dim>  &c,
-        const double          m,
         const Tensor<1, dim> &v,
+        const Tensor<2, dim> &B,
         Sums                 &sums) const
     {
+      const double m = p.get_properties()[FixedCore<dim>::mass];
       if constexpr (std::is_same_v<Weights, g2p_sweep::BoxWeights<dim>>)
         {
-          const double no_stress[dim][dim] = {};
-          sums.add(m, v, no_stress, p.get_reference_location());
+          const double     no_stress[dim][dim] = {};
+          const Point<dim> xi                  = p.get_reference_location();
+          if constexpr (affine)
+            {
+              double g[dim][dim];
+              box_affine_unit_gradient(B, xi, c.inverse_jacobian, g);
+              sums.add_affine(m, v, g, no_stress, xi);
+            }
+          else
+            sums.add(m, v, no_stress, xi);
+          return;
         }
-      else
-        weights(k,
-                p,
-                c,
-                [&](const unsigned int n,
-                    const double       N,
-                    const Tensor<1, dim> &) DEAL_II_ALWAYS_INLINE {
-                  const double mN = m * N;
+      const Point<dim> x_p = p.get_location();
+      Tensor<2, dim>   C;
+      if constexpr (affine)
+        C = affine_velocity_gradient(grid, weights, k, p, c, x_p, B);
+      weights(k,
+              p,
+              c,
+              [&](const unsigned int n, const double N, const Tensor<1, dim> &)
+                DEAL_II_ALWAYS_INLINE {
+                  const double         mN = m * N;
+                  const Tensor<1, dim> v_n =
+                    affine ? v + C * (grid.node_positions[n] - x_p) : v;
                   mass[n] += mN;
                   for (unsigned int d = 0; d < dim; ++d)
-                    momentum[d][n] += mN * v[d];
+                    momentum[d][n] += mN * v_n[d];
                 });
     }
 
