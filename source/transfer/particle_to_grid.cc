@@ -215,8 +215,10 @@ namespace dealmpm
           by_cell.for_each(
             cell_index, [&](const auto &p) DEAL_II_ALWAYS_INLINE {
               const typename CellSums<dim, mass_and_momentum, internal_force>::
-                Shares         shares(p);
-              const Point<dim> xi = p.get_reference_location();
+                Shares shares(p);
+              // A reference: a copy cost the 3D column 7 instructions a
+              // particle.
+              const Point<dim> &xi = p.get_reference_location();
               if constexpr (affine)
                 {
                   double g[dim][dim];
