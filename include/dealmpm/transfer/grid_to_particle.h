@@ -143,7 +143,7 @@ namespace dealmpm
     {
       if constexpr (std::is_same_v<Weights, BoxWeights<dim>>)
         {
-          const Point<dim> xi = p.get_reference_location();
+          const Point<dim> &xi = p.get_reference_location();
           from.template interpolate<motion, move, deformation>(xi,
                                                                v_grid,
                                                                dv,

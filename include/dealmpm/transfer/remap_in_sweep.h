@@ -90,8 +90,8 @@ namespace dealmpm
       const double m = p.get_properties()[FixedCore<dim>::mass];
       if constexpr (std::is_same_v<Weights, g2p_sweep::BoxWeights<dim>>)
         {
-          const double     no_stress[dim][dim] = {};
-          const Point<dim> xi                  = p.get_reference_location();
+          const double      no_stress[dim][dim] = {};
+          const Point<dim> &xi                  = p.get_reference_location();
           if constexpr (affine)
             {
               double g[dim][dim];
