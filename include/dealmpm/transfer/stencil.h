@@ -27,9 +27,11 @@ namespace dealmpm
     std::vector<unsigned int>   node;  ///< local index into nodal vectors
     std::vector<double>         N;
     std::vector<Tensor<1, dim>> grad_N;
-    /** APIC only (empty otherwise): each particle's position when the
-     * weights were computed. The affine transfers measure x_i - x_p from
-     * it, also in MUSL's re-map after the particles have moved. */
+    /** APIC with stored weights only (empty otherwise, also with weights
+     * computed where used, which need none: affine_transfer.h): each
+     * particle's position when the weights were computed. The affine
+     * transfers measure x_i - x_p from it, also in MUSL's re-map after the
+     * particles have moved. */
     std::vector<Point<dim>> position;
     /** Made once at the particles' reference positions and kept for the
      * run (total Lagrangian: compute_reference_stencil()). */
