@@ -61,6 +61,18 @@ namespace dealmpm
       return reference_point_by_newton(x);
     }
 
+    /** reference_point() of an axis-aligned box cell (d xi / d x
+     * diagonal, LinearWeights::is_box()): the same numbers without the
+     * products with the zero off-diagonal entries. */
+    Point<dim>
+    reference_point_in_box(const Point<dim> &x) const
+    {
+      Point<dim> xi;
+      for (unsigned int d = 0; d < dim; ++d)
+        xi[d] = (x[d] - vertices[0][d]) * inverse_jacobian[d][d];
+      return xi;
+    }
+
     /** reference_point() of a cell that is not affine. */
     Point<dim>
     reference_point_by_newton(const Point<dim> &x) const;

@@ -248,8 +248,12 @@ namespace dealmpm
     /** Moves the particle from @p x_p by @p dx: displacement, position and
      * reference location in its old cell @p c; sets @p left_cell if that
      * location is outside the cell by more than round-off. Returns whether
-     * it is outside at all (relocate() then looks at it). */
-    template <bool set_reference = true, int dim, typename Particle>
+     * it is outside at all (relocate() then looks at it). @p box: @p c is
+     * an axis-aligned box (GridCell::reference_point_in_box()). */
+    template <bool set_reference = true,
+              bool box           = false,
+              int  dim,
+              typename Particle>
     DEAL_II_ALWAYS_INLINE inline bool
     move(Particle                &p,
          const ArrayView<double> &props,
@@ -258,7 +262,9 @@ namespace dealmpm
          const Tensor<1, dim>    &dx,
          bool                    &left_cell)
     {
-      const Point<dim> xi = c.reference_point(displace(p, props, x_p, dx));
+      const Point<dim> x = displace(p, props, x_p, dx);
+      const Point<dim> xi =
+        box ? c.reference_point_in_box(x) : c.reference_point(x);
       if (set_reference)
         p.set_reference_location(xi);
       // The extreme coordinates first: two comparisons instead of 2 dim.
@@ -279,7 +285,11 @@ namespace dealmpm
 
     /** move(), and the particle's position @p k in the step's order and
      * its old cell in @p leavers if it is outside that cell. */
-    template <bool set_reference, int dim, typename Particle, typename Leavers>
+    template <bool set_reference,
+              bool box,
+              int  dim,
+              typename Particle,
+              typename Leavers>
     DEAL_II_ALWAYS_INLINE inline void
     move_and_record(const BackgroundGrid<dim> &grid,
                     const std::size_t          k,
@@ -291,7 +301,7 @@ namespace dealmpm
                     Leavers                   &leavers,
                     bool                      &left_cell)
     {
-      if (move<set_reference>(p, props, c, x_p, dx, left_cell))
+      if (move<set_reference, box>(p, props, c, x_p, dx, left_cell))
         {
           leavers.position.push_back(k);
           leavers.cell.push_back(index_in_grid(grid, c));
@@ -502,6 +512,10 @@ namespace dealmpm
           const ParticlesByCell<dim, ParticleSet<dim>> by_cell(grid, particles);
           for (std::size_t i = 0; i < grid.cells.size(); ++i)
             {
+              // Cells without particles (the air above a body) would set
+              // up their CellArrays for nothing.
+              if (by_cell.empty(i))
+                continue;
               const GridCell<dim> &c = grid.cells[i];
               if (c.first_weight == numbers::invalid_unsigned_int &&
                   LinearWeights<dim>::is_box(c))
@@ -579,6 +593,9 @@ namespace dealmpm
               const auto          &weights_here,
               const auto          &from,
               auto                &sums) DEAL_II_ALWAYS_INLINE {
+            constexpr bool box =
+              std::is_same_v<std::decay_t<decltype(weights_here)>,
+                             g2p_sweep::BoxWeights<dim>>;
             Tensor<1, dim>          v_grid, dv;
             Tensor<2, dim>          L, B;
             const Point<dim>        x_p   = p.get_location();
@@ -605,7 +622,7 @@ namespace dealmpm
             if constexpr (parts::move && reference)
               g2p_sweep::displace(p, props, x_p, dt * v_grid);
             else if constexpr (parts::move)
-              g2p_sweep::move_and_record<!parts::keep_reference>(
+              g2p_sweep::move_and_record<!parts::keep_reference, box>(
                 grid, k, p, props, c, x_p, dt * v_grid, leavers, left_cell);
             if (parts::deformation)
               g2p_sweep::deform_and_report<reference>(p,
@@ -616,7 +633,9 @@ namespace dealmpm
                                                       adjust_gradient,
                                                       f_increment,
                                                       after_deformation);
-            if (parts::then_reference)
+            if constexpr (parts::then_reference && box)
+              p.set_reference_location(c.reference_point_in_box(x_p));
+            else if constexpr (parts::then_reference)
               p.set_reference_location(c.reference_point(x_p));
           });
       });

@@ -147,10 +147,17 @@ namespace dealmpm
       , particles(particles)
       , dt(dt)
     {
-      for (const auto &m : materials)
+      // The particles' layout may not be made yet (a step state built
+      // before the bodies): then no particle reads the offsets.
+      const bool laid_out =
+        particles.internal_offset.size() == materials.size();
+      for (unsigned int m = 0; m < materials.size(); ++m)
         {
-          resets.push_back(m->resets_deformation());
-          any_resets = any_resets || resets.back();
+          slots.push_back({materials[m].get(),
+                           laid_out ? particles.internal_offset[m] : 0,
+                           laid_out ? particles.n_internal[m] : 0,
+                           materials[m]->resets_deformation()});
+          any_resets = any_resets || slots.back().resets;
         }
       const auto &of_body = particles.material_of_body;
       if (!of_body.empty() &&
@@ -214,19 +221,17 @@ namespace dealmpm
            const Tensor<2, dim>    &F,
            const double             h)
     {
-      const unsigned int m = only_material != numbers::invalid_unsigned_int ?
-                               only_material :
-                               particles.material_of(props);
-      const Model       &material = static_cast<const Model &>(*materials[m]);
+      const unsigned int m    = only_material != numbers::invalid_unsigned_int ?
+                                  only_material :
+                                  particles.material_of(props);
+      const Slot        &slot = slots[m];
+      const Model       &material = static_cast<const Model &>(*slot.material);
+      // &props[0], not props.data(), which tests for an empty view.
+      const ArrayView<double> internal(&props[0] + slot.internal_offset,
+                                       slot.n_internal);
       SymmetricTensor<2, dim> stress =
         read_symmetric<dim>(&props[FixedCore<dim>::stress]);
-      material.update_stress(L,
-                             F,
-                             dt,
-                             stress,
-                             ArrayView<double>(props.data() +
-                                                 particles.internal_offset[m],
-                                               particles.n_internal[m]));
+      material.update_stress(L, F, dt, stress, internal);
       write_symmetric<dim>(&props[FixedCore<dim>::stress], stress);
       if (!check.inspect(p,
                          read_vector<dim>(&props[FixedCore<dim>::velocity]),
@@ -234,14 +239,13 @@ namespace dealmpm
                          stress,
                          material,
                          h))
-        check.describe_state(
-          p.get_id(),
-          m,
-          material,
-          F,
-          ArrayView<const double>(props.data() + particles.internal_offset[m],
-                                  particles.n_internal[m]));
-      if (any_resets && resets[m])
+        check.describe_state(p.get_id(),
+                             m,
+                             material,
+                             F,
+                             ArrayView<const double>(internal.begin(),
+                                                     slot.n_internal));
+      if (any_resets && slot.resets)
         reset_deformation(props, F);
     }
 
@@ -258,7 +262,16 @@ namespace dealmpm
                         isotropic);
     }
 
-    std::vector<bool> resets;
+    /** What the update needs of each material, resolved once a step
+     * rather than through three vectors a particle. */
+    struct Slot
+    {
+      const Material<dim> *material;
+      unsigned int         internal_offset;
+      unsigned int         n_internal;
+      bool                 resets; ///< resets_deformation()
+    };
+    std::vector<Slot> slots;
     bool              any_resets = false;
     /** The material of every body, when they share one (the usual scene):
      * then no particle looks up its body. */
