@@ -147,8 +147,11 @@ namespace dealmpm
       , particles(particles)
       , dt(dt)
     {
-      // The particles' layout may not be made yet (a step state built
-      // before the bodies): then no particle reads the offsets.
+      // A particle set laid out for another list of materials (a unit
+      // test pairing its own materials with a scene's particles) has no
+      // offsets for these: the slots then hold none, and such a stress
+      // update must not update particles. The step state is always made
+      // for the scene's own materials and particles.
       const bool laid_out =
         particles.internal_offset.size() == materials.size();
       for (unsigned int m = 0; m < materials.size(); ++m)
