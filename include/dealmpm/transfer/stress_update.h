@@ -152,8 +152,7 @@ namespace dealmpm
       // offsets for these: the slots then hold none, and such a stress
       // update must not update particles. The step state is always made
       // for the scene's own materials and particles.
-      const bool laid_out =
-        particles.internal_offset.size() == materials.size();
+      laid_out = particles.internal_offset.size() == materials.size();
       for (unsigned int m = 0; m < materials.size(); ++m)
         {
           slots.push_back({materials[m].get(),
@@ -224,6 +223,9 @@ namespace dealmpm
            const Tensor<2, dim>    &F,
            const double             h)
     {
+      Assert(laid_out,
+             ExcMessage("a stress update for particles laid out for other "
+                        "materials"));
       const unsigned int m    = only_material != numbers::invalid_unsigned_int ?
                                   only_material :
                                   particles.material_of(props);
@@ -242,12 +244,7 @@ namespace dealmpm
                          stress,
                          material,
                          h))
-        check.describe_state(p.get_id(),
-                             m,
-                             material,
-                             F,
-                             ArrayView<const double>(internal.begin(),
-                                                     slot.n_internal));
+        check.describe_state(p.get_id(), m, material, F, internal);
       if (any_resets && slot.resets)
         reset_deformation(props, F);
     }
@@ -275,7 +272,9 @@ namespace dealmpm
       bool                 resets; ///< resets_deformation()
     };
     std::vector<Slot> slots;
-    bool              any_resets = false;
+    /** Whether the particles' offsets are for these materials. */
+    bool laid_out   = false;
+    bool any_resets = false;
     /** The material of every body, when they share one (the usual scene):
      * then no particle looks up its body. */
     unsigned int only_material = numbers::invalid_unsigned_int;
