@@ -192,7 +192,7 @@ namespace dealmpm
         if (!(largest > 0))
           {
             for (std::size_t i = 0; i < grid.cells.size(); ++i)
-              levels[i] = grid.cells[i].cell->level();
+              levels[i] = grid.level(grid.cells[i].cell);
             return;
           }
         const double refine  = refine_fraction * refine_fraction * largest;
@@ -200,10 +200,10 @@ namespace dealmpm
         for (std::size_t i = 0; i < grid.cells.size(); ++i)
           {
             const Cell &cell = grid.cells[i].cell;
-            levels[i]        = cell->level();
+            levels[i]        = grid.level(cell);
             if (spread({cell}) > refine)
               levels[i] = context.max_level;
-            else if (cell->level() > 0)
+            else if (levels[i] > 0)
               {
                 std::vector<Cell> family;
                 for (const auto &child : cell->parent()->child_iterators())
@@ -211,7 +211,7 @@ namespace dealmpm
                     family.push_back(child);
                 if (family.size() == cell->parent()->n_children() &&
                     spread(family) < coarsen)
-                  levels[i] = cell->level() - 1;
+                  levels[i] = grid.level(cell) - 1;
               }
           }
       }
@@ -283,7 +283,8 @@ namespace dealmpm
                       "0",
                       Patterns::Integer(0, 20),
                       "Cells are not coarsened below this level (0: the "
-                      "coarse grid, before 'Grid/Global refinements').");
+                      "cells of 'Grid/Cells' or the mesh file, before "
+                      "'Grid/Global refinements').");
     prm.declare_entry("Maximum level",
                       "2",
                       Patterns::Integer(0, 20),
@@ -387,12 +388,12 @@ namespace dealmpm
         const auto &cell = grid.cells[i].cell;
         cell->clear_refine_flag();
         cell->clear_coarsen_flag();
-        if (cell->level() < levels[i])
+        if (grid.level(cell) < levels[i])
           {
             cell->set_refine_flag();
             ++n_refined;
           }
-        else if (cell->level() > levels[i])
+        else if (grid.level(cell) > levels[i])
           cell->set_coarsen_flag();
       }
     n_refined = Utilities::MPI::sum(n_refined, grid.comm);

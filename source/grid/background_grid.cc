@@ -59,7 +59,13 @@ namespace dealmpm
                       repeat_value<dim>("10"),
                       Patterns::List(Patterns::Integer(1), dim, dim),
                       "Rectangle: cells per direction, one positive integer "
-                      "per dimension.");
+                      "per dimension. A grid of more than 1e4 cells is made "
+                      "of fewer coarse cells (the counts divided by a power "
+                      "of two they share) refined back to these, so that "
+                      "each rank holds its share of the grid and not every "
+                      "cell: give large grids counts with a common factor "
+                      "2^k (2048, 1024 rather than 2000, 1000). Levels "
+                      "(adaptivity, output) count from these cells.");
     prm.declare_entry("Mesh file",
                       "",
                       Patterns::FileName(),
@@ -67,39 +73,86 @@ namespace dealmpm
                       "scene file's folder or absolute.");
   }
 
+  namespace
+  {
+    /** The largest k <= @p at_most such that 2^k divides every count. */
+    unsigned int
+    common_power_of_two(const std::vector<unsigned int> &counts,
+                        const unsigned int               at_most)
+    {
+      unsigned int k = at_most;
+      for (const unsigned int n : counts)
+        k = std::min(k, static_cast<unsigned int>(__builtin_ctz(n)));
+      return k;
+    }
+
+    /** The rectangle of the section's entries into @p mesh, of few
+     * coarse cells (read_coarse_mesh()); returns the refinements that
+     * make its Cells. */
+    template <int dim>
+    unsigned int
+    read_rectangle(
+      const SceneReader                                           &reader,
+      Triangulation<dim>                                          &mesh,
+      const std::function<void(double, const BoundingBox<dim> &)> &before,
+      const unsigned int max_refinements)
+    {
+      const Point<dim>          lower = reader.get_point<dim>("Lower corner");
+      const Point<dim>          upper = reader.get_point<dim>("Upper corner");
+      const std::vector<double> cells = reader.get_doubles("Cells");
+      if (cells.size() != dim)
+        reader.fail("Cells", std::to_string(dim) + " positive integers");
+      std::vector<unsigned int> repetitions;
+      double                    n_cells = 1;
+      for (const double c : cells)
+        {
+          if (!(c >= 1 && c == static_cast<unsigned int>(c)))
+            reader.fail("Cells",
+                        "positive integers (at least one cell per direction)");
+          repetitions.push_back(static_cast<unsigned int>(c));
+          n_cells *= c;
+        }
+      for (unsigned int d = 0; d < dim; ++d)
+        if (!(upper[d] > lower[d]))
+          reader.fail("Upper corner",
+                      "each coordinate larger than Lower corner's");
+      // The least k that leaves at most 1e4 coarse cells (a grid of that
+      // many or fewer stays as it was: its own coarse mesh).
+      const unsigned int most =
+        common_power_of_two(repetitions, max_refinements);
+      unsigned int k = 0;
+      while (k < most && n_cells / std::pow(2., dim * k) > 1e4)
+        ++k;
+      double n_coarse = 1;
+      for (unsigned int &r : repetitions)
+        {
+          r >>= k;
+          n_coarse *= r;
+        }
+      if (n_coarse > 2e8)
+        reader.fail("Cells",
+                    "counts that share a power of two (each count divided "
+                    "by the largest 2^k that divides them all gives the "
+                    "coarse cells, which every rank holds): " +
+                      std::to_string(static_cast<long>(n_coarse)) +
+                      " coarse cells (at most 2e8)");
+      before(n_cells, BoundingBox<dim>({lower, upper}));
+      GridGenerator::subdivided_hyper_rectangle(
+        mesh, repetitions, lower, upper, /*colorize=*/true);
+      return k;
+    }
+  } // namespace
+
   template <int dim>
-  void
+  unsigned int
   read_coarse_mesh(
     const SceneReader                                           &reader,
     Triangulation<dim>                                          &mesh,
-    const std::function<void(double, const BoundingBox<dim> &)> &before)
+    const std::function<void(double, const BoundingBox<dim> &)> &before,
+    const unsigned int max_refinements)
   {
     if (reader.get("Type") == "rectangle")
-      {
-        const Point<dim>          lower = reader.get_point<dim>("Lower corner");
-        const Point<dim>          upper = reader.get_point<dim>("Upper corner");
-        const std::vector<double> cells = reader.get_doubles("Cells");
-        if (cells.size() != dim)
-          reader.fail("Cells", std::to_string(dim) + " positive integers");
-        std::vector<unsigned int> repetitions;
-        double                    n_coarse = 1;
-        for (const double c : cells)
-          {
-            if (!(c >= 1 && c == static_cast<unsigned int>(c)))
-              reader.fail(
-                "Cells", "positive integers (at least one cell per direction)");
-            repetitions.push_back(static_cast<unsigned int>(c));
-            n_coarse *= c;
-          }
-        for (unsigned int d = 0; d < dim; ++d)
-          if (!(upper[d] > lower[d]))
-            reader.fail("Upper corner",
-                        "each coordinate larger than Lower corner's");
-        before(n_coarse, BoundingBox<dim>({lower, upper}));
-        GridGenerator::subdivided_hyper_rectangle(
-          mesh, repetitions, lower, upper, /*colorize=*/true);
-        return;
-      }
+      return read_rectangle(reader, mesh, before, max_refinements);
     std::ifstream in(reader.get_file("Mesh file", "a readable Gmsh .msh file"));
     // Read serially first: p4est crashes on simplices instead of saying so.
     Triangulation<dim> serial;
@@ -147,6 +200,7 @@ namespace dealmpm
       }
     before(serial.n_active_cells(), BoundingBox<dim>(serial.get_vertices()));
     mesh.copy_triangulation(serial);
+    return 0;
   }
 
   template <int dim>
@@ -185,30 +239,52 @@ namespace dealmpm
     const SavedGrid                                  *saved)
   {
     SectionScope grid(reader, "Grid");
-    read_coarse_mesh<dim>(
+    base_level = read_coarse_mesh<dim>(
       reader,
       triangulation,
-      [&](const double n_coarse, const BoundingBox<dim> &box) {
-        before_allocating(refined_size(reader, n_coarse, box));
-      });
+      [&](const double n_cells, const BoundingBox<dim> &box) {
+        before_allocating(refined_size(reader, n_cells, box));
+      },
+      max_coarse_refinements(reader));
     coarse_checksum = checksum_of_coarse_grid();
     if (saved != nullptr)
       {
         if (saved->coarse_checksum != coarse_checksum)
-          throw InputError(reader.file_name() +
-                           ": the coarse grid (section 'Grid', its mesh "
-                           "file) differs from the saved run's (" +
-                           saved->file + ")");
+          throw InputError(
+            reader.file_name() +
+            ": the coarse grid (section 'Grid', its mesh file) differs from "
+            "the saved run's (" +
+            saved->file +
+            "; a checkpoint written before 2026-11-29, when a rectangle had "
+            "a coarse cell per cell, cannot be resumed: run it again)");
         // The saved cells and partition; a different number of ranks
         // gets the cells shared by count (the caller repartitions).
         triangulation.load(saved->file);
       }
     else
       {
-        triangulation.refine_global(reader.get_integer("Global refinements"));
+        triangulation.refine_global(base_level +
+                                    reader.get_integer("Global refinements"));
         refine_box(reader);
       }
     setup();
+  }
+
+  template <int dim>
+  unsigned int
+  BackgroundGrid<dim>::max_coarse_refinements(SceneReader &reader) const
+  {
+    // p4est's deepest level is 29 (2D) or 19 (3D); leave the scene's
+    // refinements and 8 levels of adaptivity room below it. 2^10 (2D) or
+    // 2^7 (3D) cells a side already make the coarse mesh of a grid of
+    // millions of cells one of a few cells.
+    const long deepest = dim == 2 ? 29 : 19;
+    long       room    = deepest - 8 - reader.get_integer("Global refinements");
+    {
+      SectionScope local(reader, "Local refinement");
+      room -= reader.get_integer("Levels");
+    }
+    return static_cast<unsigned int>(std::clamp(room, 0L, dim == 2 ? 10L : 7L));
   }
 
   template <int dim>
@@ -241,16 +317,17 @@ namespace dealmpm
   template <int dim>
   GridSize<dim>
   BackgroundGrid<dim>::refined_size(SceneReader            &reader,
-                                    const double            n_coarse,
+                                    const double            n_cells,
                                     const BoundingBox<dim> &box) const
   {
     const long    global_refinements = reader.get_integer("Global refinements");
-    GridSize<dim> size{n_coarse * std::pow(2., dim * global_refinements), box};
-    if (size.n_cells > 2e8)
+    GridSize<dim> size{n_cells * std::pow(2., dim * global_refinements), box};
+    // deal.II (as Debian builds it) numbers cells and nodes in 32 bits.
+    if (size.n_cells > 2e9)
       reader.fail(global_refinements > 0 ? "Global refinements" : "Cells",
                   "fewer cells: the grid would have " +
                     std::to_string(static_cast<long>(size.n_cells)) +
-                    " cells (at most 2e8)");
+                    " cells (at most 2e9: deal.II numbers nodes in 32 bits)");
     // Local refinement: the box's share of the cells, each split
     // 2^(dim levels) times.
     SectionScope local(reader, "Local refinement");
@@ -601,12 +678,14 @@ namespace dealmpm
   declare_mesh_entries<2>(ParameterHandler &);
   template void
   declare_mesh_entries<3>(ParameterHandler &);
-  template void
+  template unsigned int
   read_coarse_mesh(const SceneReader &,
                    Triangulation<2> &,
-                   const std::function<void(double, const BoundingBox<2> &)> &);
-  template void
+                   const std::function<void(double, const BoundingBox<2> &)> &,
+                   unsigned int);
+  template unsigned int
   read_coarse_mesh(const SceneReader &,
                    Triangulation<3> &,
-                   const std::function<void(double, const BoundingBox<3> &)> &);
+                   const std::function<void(double, const BoundingBox<3> &)> &,
+                   unsigned int);
 } // namespace dealmpm

@@ -78,7 +78,7 @@ namespace dealmpm
       for (const auto &cell : grid.triangulation.active_cell_iterators())
         if (cell->is_locally_owned())
           {
-            level[cell->active_cell_index()] = cell->level();
+            level[cell->active_cell_index()] = grid.level(cell);
             rank[cell->active_cell_index()]  = cell->subdomain_id();
           }
     }

@@ -61,7 +61,9 @@ expect 2 "MPM/Shape function.*B-spline needs cells that are axis-aligned boxes" 
 expect 2 "Body 1/Mesh file.*quadrilaterals" "$scene" "${s[@]}" -s "Body 1/Shape=mesh" -s "Body 1/Mesh file=$data/triangles.msh"
 expect 2 "Grid/Boundary conditions.*boundary ids the grid has \(0, 1, 2, 3\), not 4" "$scene" "${s[@]}" \
   -s "Grid/Boundary conditions=0: slip, 4: no-slip"
-expect 2 "Grid/Global refinements.*at most 2e8" "$scene" "${s[@]}" -s "Grid/Global refinements=12"
+expect 2 "Grid/Global refinements.*at most 2e9" "$scene" "${s[@]}" -s "Grid/Cells=1000, 1000" -s "Grid/Global refinements=12"
+# Counts without a common power of two make every cell a coarse cell.
+expect 2 "Grid/Cells.*share a power of two.*400040001 coarse cells \(at most 2e8\)" "$scene" "${s[@]}" -s "Grid/Cells=20001, 20001"
 expect 2 "command line: -s '=1': expected 'Section/Entry=value'" "$scene" -s "=1"
 expect 2 "command line: -s 'Grid/=1'" "$scene" -s "Grid/=1"
 # A scene that sets nothing would run a built-in default: refused.

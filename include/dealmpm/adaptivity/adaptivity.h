@@ -16,7 +16,10 @@ namespace dealmpm
   using namespace dealii;
 
   /** What a refinement criterion sees: the grid, the particles and the
-   * levels the scene allows. */
+   * levels the scene allows. Levels count from the scene's cells
+   * ('Grid/Cells', before 'Global refinements'): a cell's is
+   * grid.level(cell), not cell->level() (a rectangle's coarse mesh is
+   * fewer cells, refined grid.base_level times). */
   template <int dim>
   struct AdaptivityContext
   {

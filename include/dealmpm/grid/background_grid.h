@@ -109,14 +109,24 @@ namespace dealmpm
   /** The coarse mesh those entries describe, into @p mesh: a colorized
    * rectangle, or a Gmsh file of quadrilaterals/hexahedra whose cells are
    * neither inverted nor twisted (one-line failures). @p before sees the
-   * number of cells and the box before they are made. */
+   * number of cells the entries ask for and the box before any is made.
+   *
+   * Returns how many global refinements make the entries' cells of
+   * @p mesh: a rectangle of more than 1e4 cells is made of its Cells
+   * divided by 2^k, the least power of two that divides them all and
+   * leaves at most 1e4 coarse cells (or the largest that divides them
+   * all, k at most @p max_refinements), so that the coarse mesh, which
+   * p4est and deal.II keep whole on every rank, stays small; the caller
+   * refines it k times. 0 for a smaller rectangle and for a Gmsh mesh,
+   * which are their own coarse mesh. */
   template <int dim>
-  void
+  unsigned int
   read_coarse_mesh(
     const SceneReader                                           &reader,
     Triangulation<dim>                                          &mesh,
     const std::function<void(double, const BoundingBox<dim> &)> &before =
-      [](double, const BoundingBox<dim> &) {});
+      [](double, const BoundingBox<dim> &) {},
+    unsigned int max_refinements = 0);
 
   /**
    * The background grid: a distributed triangulation (a subdivided rectangle
@@ -167,6 +177,19 @@ namespace dealmpm
     /** A hash of the coarse grid's vertices and cells (the same on every
      * rank), which a checkpoint records. */
     std::string coarse_checksum;
+    /** The level in the triangulation of the scene's cells ('Grid/Cells',
+     * before 'Global refinements'): a rectangle's coarse mesh is fewer
+     * cells refined this many times (read_coarse_mesh()). */
+    unsigned int base_level = 0;
+
+    /** The level of @p cell counted from the scene's cells, as the scene's
+     * levels are ('Adaptivity/Minimum level', the output's "level"). */
+    template <typename CellIterator>
+    int
+    level(const CellIterator &cell) const
+    {
+      return cell->level() - static_cast<int>(base_level);
+    }
 
     /** How many times setup() ran: data kept per cell elsewhere (the
      * particles' order) records it and is rebuilt when it changed. */
@@ -215,10 +238,14 @@ namespace dealmpm
       const typename DoFHandler<dim>::active_cell_iterator &dof_cell,
       GridCell<dim>                                        &c);
     /** How many cells Global refinements and Local refinement make of
-     * @p n_coarse cells filling @p box; refuses more than 2e8. */
+     * the scene's @p n_cells filling @p box; refuses more than 2e9. */
     GridSize<dim>
     refined_size(SceneReader            &reader,
-                 const double            n_coarse,
+                 const double            n_cells,
                  const BoundingBox<dim> &box) const;
+    /** The most refinements read_coarse_mesh() may leave to make the
+     * scene's cells. */
+    unsigned int
+    max_coarse_refinements(SceneReader &reader) const;
   };
 } // namespace dealmpm
