@@ -1,7 +1,8 @@
-// A rectangle's coarse mesh is its Cells divided by the largest power of
-// two they share, refined back to the scene's cells: the same cells (size,
-// place, boundary ids, levels as the scene counts them), while each rank
-// holds only its share of them. Runs on 1 rank and, through ctest, on 2.
+// A large rectangle's coarse mesh is its Cells divided by a power of two
+// they share (here to at most 1e4 coarse cells), refined back to the
+// scene's cells: the same cells (size, place, boundary ids, levels as the
+// scene counts them), while each rank holds only its share of them. Runs
+// on 1 rank and, through ctest, on 2.
 #include <deal.II/base/mpi.h>
 
 #include <gtest/gtest.h>
@@ -20,8 +21,8 @@ namespace
     const std::string corner    = dim == 2 ? "0.1, 0.1" : "0.1, 0.1, 0.1";
     const std::string dimension = dim == 2 ? "" : "set Dimension = 3\n";
     return test::make_simulation<dim>(
-      dimension + "subsection Grid\n" + grid_entries +
-      "end\nsubsection Body 1\n set Lower corner = " + corner +
+      dimension + "subsection Grid\n set Most coarse cells = 1e4\n" +
+      grid_entries + "end\nsubsection Body 1\n set Lower corner = " + corner +
       "\n set Upper corner = " + (dim == 2 ? "0.2, 0.2" : "0.2, 0.2, 0.2") +
       "\nend\n");
   }
@@ -66,6 +67,13 @@ TEST(GridChange, RectangleIsFewCoarseCellsRefinedToTheScenesCells)
     EXPECT_EQ(grid.triangulation.n_cells(0), 3840u);
     EXPECT_EQ(grid.triangulation.n_global_active_cells(), 61440u);
     expect_uniform_cells(grid, Tensor<1, 2>({0.00625, 0.00625}), 0);
+  }
+  {
+    // The default, at most 1e5 coarse cells: 61,440 cells stay their own
+    // coarse mesh.
+    auto simulation = scene_with_grid<2>(
+      " set Most coarse cells = 1e5\n set Cells = 192, 320\n");
+    EXPECT_EQ(simulation->background_grid().base_level, 0u);
   }
   {
     // At most 1e4 cells: the grid is its own coarse mesh, as before.

@@ -112,13 +112,13 @@ namespace dealmpm
    * number of cells the entries ask for and the box before any is made.
    *
    * Returns how many global refinements make the entries' cells of
-   * @p mesh: a rectangle of more than 1e4 cells is made of its Cells
-   * divided by 2^k, the least power of two that divides them all and
-   * leaves at most 1e4 coarse cells (or the largest that divides them
-   * all, k at most @p max_refinements), so that the coarse mesh, which
-   * p4est and deal.II keep whole on every rank, stays small; the caller
-   * refines it k times. 0 for a smaller rectangle and for a Gmsh mesh,
-   * which are their own coarse mesh. */
+   * @p mesh: a rectangle of more than @p most_coarse_cells cells is made
+   * of its Cells divided by 2^k, the least power of two that divides them
+   * all and leaves at most that many coarse cells (or the largest that
+   * divides them all, k at most @p max_refinements), so that the coarse
+   * mesh, which p4est and deal.II keep whole on every rank, stays small;
+   * the caller refines it k times. 0 for a smaller rectangle and for a
+   * Gmsh mesh, which are their own coarse mesh. */
   template <int dim>
   unsigned int
   read_coarse_mesh(
@@ -126,7 +126,8 @@ namespace dealmpm
     Triangulation<dim>                                          &mesh,
     const std::function<void(double, const BoundingBox<dim> &)> &before =
       [](double, const BoundingBox<dim> &) {},
-    unsigned int max_refinements = 0);
+    unsigned int max_refinements   = 0,
+    double       most_coarse_cells = 1e5);
 
   /**
    * The background grid: a distributed triangulation (a subdivided rectangle
