@@ -1,11 +1,37 @@
+#include <deal.II/base/array_view.h>
 #include <deal.II/base/utilities.h>
 
 #include <dealmpm/core/run_report.h>
 
 #include <iomanip>
+#include <sstream>
+#include <utility>
 
 namespace dealmpm
 {
+  std::string
+  SetupClock::report(const MPI_Comm comm) const
+  {
+    std::vector<double> seconds;
+    for (const auto &stage : stages)
+      seconds.push_back(stage.second);
+    std::vector<double> slowest(seconds.size());
+    Utilities::MPI::max(make_array_view(std::as_const(seconds)),
+                        comm,
+                        make_array_view(slowest));
+    seconds      = slowest;
+    double total = 0;
+    for (const double t : seconds)
+      total += t;
+    std::ostringstream line;
+    line << std::fixed << std::setprecision(total < 10 ? 2 : 1)
+         << "set-up took " << total << " s (slowest rank per stage):";
+    for (unsigned int i = 0; i < stages.size(); ++i)
+      line << (i == 0 ? " " : ", ") << stages[i].first << " " << seconds[i]
+           << " s";
+    return line.str();
+  }
+
   void
   print_run_summary(ConditionalOStream      &pcout,
                     TimerOutput             &timer,

@@ -49,10 +49,14 @@ namespace dealmpm
       saved = find_saved_run(
         reader, resume->empty() ? run_settings.checkpoint.directory : *resume);
     const CheckpointInfo *saved_run = saved ? &*saved : nullptr;
+    setup_clock.lap("scene");
     build_grid(reader, saved_run);
+    setup_clock.lap("grid");
     create_particles(reader, saved_run);
+    setup_clock.lap(saved ? "particles read" : "particles");
     start_adaptivity(reader);
     start_load_balance(saved_run);
+    setup_clock.lap("load balance");
     for (const auto &effect : effects)
       {
         for (const FieldDescription &field : effect->nodal_fields_per_body())
@@ -61,17 +65,21 @@ namespace dealmpm
           nodal.request_body_fields();
       }
     nodal.reinit(grid.partitioner, bodies.size());
+    setup_clock.lap("nodal fields");
     regions.make(reader,
                  shape.n_fem_regions,
                  materials,
                  bodies.size(),
                  grid,
                  run_settings.method.apic);
+    if (!regions.empty())
+      setup_clock.lap("FEM regions");
     if (run_settings.method.total_lagrangian())
       make_reference_stencil(reader);
     choose_stages();
     if (saved)
       restore_saved_run(*saved);
+    setup_clock.lap("stages");
     computing_timer = std::make_unique<TimerOutput>(comm,
                                                     pcout,
                                                     TimerOutput::never,

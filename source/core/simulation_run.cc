@@ -244,6 +244,10 @@ namespace dealmpm
         write_output(0., initial, 0., progress);
         loop.next_output = s.output.interval;
       }
+    setup_clock.lap("first output");
+    const std::string setup_time = setup_clock.report(comm);
+    if (s.output.verbose)
+      pcout << "dealmpm: " << setup_time << std::endl;
 
     double dt = 0;
     while (!run_settings.time.finished(loop.time, loop.step))

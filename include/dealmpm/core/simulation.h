@@ -7,6 +7,7 @@
 #include <dealmpm/adaptivity/load_balance.h>
 #include <dealmpm/base/errors.h>
 #include <dealmpm/base/parameter_file.h>
+#include <dealmpm/core/run_report.h>
 #include <dealmpm/core/run_state.h>
 #include <dealmpm/diagnostics/accuracy_report.h>
 #include <dealmpm/diagnostics/check_settings.h>
@@ -286,6 +287,8 @@ namespace dealmpm
      * costs about a fifth of a step. */
     static constexpr unsigned int energy_check_interval = 50;
 
+    /** First, so that it times the whole construction. */
+    SetupClock                                  setup_clock;
     MPI_Comm                                    comm;
     ConditionalOStream                          pcout;
     std::string                                 scene_file;
