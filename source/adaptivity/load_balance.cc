@@ -13,7 +13,8 @@ namespace dealmpm
       "true",
       Patterns::Bool(),
       "On more than one rank: share the cells so that each rank holds about "
-      "as many particles as the others (at the start and whenever the "
+      "as many particles as the others (at the start, unless the grid's "
+      "refinement shared them by the bodies already, and whenever the "
       "imbalance passes the limit). 'false': cells are shared by count, "
       "which puts a compact body on few ranks.");
     prm.declare_entry(
@@ -109,6 +110,42 @@ namespace dealmpm
       });
   }
 
+  template <int dim>
+  double
+  weight_imbalance(const parallel::distributed::Triangulation<dim> &tria,
+                   const Particles::ParticleHandler<dim>           &handler,
+                   const unsigned int particle_weight)
+  {
+    const double local =
+      tria.n_locally_owned_active_cells() +
+      double(particle_weight) * handler.n_locally_owned_particles();
+    const double mean =
+      Utilities::MPI::sum(local, tria.get_communicator()) /
+      Utilities::MPI::n_mpi_processes(tria.get_communicator());
+    return Utilities::MPI::max(local, tria.get_communicator()) / mean;
+  }
+
+  template <int dim>
+  boost::signals2::connection
+  connect_expected_weights(
+    parallel::distributed::Triangulation<dim>             &tria,
+    const std::function<unsigned int(const Point<dim> &)> &expected_particles,
+    const unsigned int                                     particle_weight)
+  {
+    using CellStatus = typename Triangulation<dim>::CellStatus;
+    return tria.signals.weight.connect(
+      [expected_particles,
+       particle_weight](const typename Triangulation<dim>::cell_iterator &cell,
+                        const CellStatus status) -> unsigned int {
+        // A cell to be coarsened does not occur in a refinement; a cell to
+        // be refined is asked once per child, which do not exist yet.
+        const unsigned int n = status == CellStatus::CELL_COARSEN ?
+                                 0 :
+                                 expected_particles(cell->center());
+        return 1 + particle_weight * n;
+      });
+  }
+
   template ParticleBalance
   particle_balance(const Particles::ParticleHandler<2> &, const MPI_Comm);
   template ParticleBalance
@@ -121,4 +158,22 @@ namespace dealmpm
   connect_particle_weights(parallel::distributed::Triangulation<3> &,
                            const Particles::ParticleHandler<3> &,
                            const unsigned int);
+  template boost::signals2::connection
+  connect_expected_weights(
+    parallel::distributed::Triangulation<2> &,
+    const std::function<unsigned int(const Point<2> &)> &,
+    const unsigned int);
+  template boost::signals2::connection
+  connect_expected_weights(
+    parallel::distributed::Triangulation<3> &,
+    const std::function<unsigned int(const Point<3> &)> &,
+    const unsigned int);
+  template double
+  weight_imbalance(const parallel::distributed::Triangulation<2> &,
+                   const Particles::ParticleHandler<2> &,
+                   const unsigned int);
+  template double
+  weight_imbalance(const parallel::distributed::Triangulation<3> &,
+                   const Particles::ParticleHandler<3> &,
+                   const unsigned int);
 } // namespace dealmpm

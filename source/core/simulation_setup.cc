@@ -100,10 +100,15 @@ namespace dealmpm
       connect_particle_weights(grid.triangulation,
                                particles->handler,
                                run_settings.load_balance.particle_weight);
-    // The cells were shared by count (a compact body sat on few ranks), or
-    // a saved run's were shared among another number of ranks.
-    if (saved == nullptr ||
-        saved->n_ranks != Utilities::MPI::n_mpi_processes(comm))
+    // A saved run's cells were shared among another number of ranks; a
+    // new run's by the bodies' expected particles if the grid was refined
+    // (build_grid), else by count (a compact body sat on few ranks).
+    if (saved != nullptr ?
+          saved->n_ranks != Utilities::MPI::n_mpi_processes(comm) :
+          weight_imbalance(grid.triangulation,
+                           particles->handler,
+                           run_settings.load_balance.particle_weight) >
+            start_imbalance_tolerance)
       repartition();
   }
 
@@ -190,12 +195,29 @@ namespace dealmpm
   }
 
   template <int dim>
+  unsigned int
+  Simulation<dim>::expected_particles(const Point<dim> &p) const
+  {
+    // The last body there: a later body's particles replace earlier ones.
+    for (auto body = bodies.rbegin(); body != bodies.rend(); ++body)
+      if (body->shape->contains(p))
+        return Utilities::fixed_power<dim>(body->particles_per_direction);
+    return 0;
+  }
+
+  template <int dim>
   void
   Simulation<dim>::build_grid(SceneReader &reader, const CheckpointInfo *saved)
   {
     SavedGrid saved_grid;
     if (saved != nullptr)
       saved_grid = {resumed_checkpoint + "/grid", saved->coarse_grid};
+    boost::signals2::scoped_connection expected_weights;
+    if (saved == nullptr && run_settings.load_balance.enabled)
+      expected_weights = connect_expected_weights<dim>(
+        grid.triangulation,
+        [this](const Point<dim> &p) { return expected_particles(p); },
+        run_settings.load_balance.particle_weight);
     grid.create(
       reader,
       [&](const GridSize<dim> &size) {
@@ -363,6 +385,8 @@ namespace dealmpm
   template bool Simulation<dim>::weights_where_used() const;                 \
   template void Simulation<dim>::read_scene(SceneReader &,                   \
                                             const SceneShape &);             \
+  template unsigned int Simulation<dim>::expected_particles(                 \
+    const Point<dim> &) const;                                               \
   template void Simulation<dim>::build_grid(SceneReader &,                   \
                                             const CheckpointInfo *);         \
   template void Simulation<dim>::create_particles(SceneReader &,             \

@@ -22,7 +22,9 @@
 #   by count) holds at most 1.2 times the mean particles per rank on 2 and
 #   3 ranks; a block sliding through the grid, repartitioned whenever
 #   the imbalance passes 1.05, on 1, 2 and 3 ranks (nothing lost or
-#   duplicated: n_particles and lost_particles are compared);
+#   duplicated: n_particles and lost_particles are compared); a grid
+#   refined from few coarse cells shared by the bodies' particles from
+#   its refinement on, without the start's repartition;
 # - an FEM region bonded to an MPM body, and one in contact with one
 #   (the pile pushed into sand), on 1, 2 and 3 ranks.
 # Every run must have particles on every rank.
@@ -97,6 +99,21 @@ compare_ranks sliding "$dir/../tests/data/sliding_block.prm" -s "Load balance/Ch
 n=$(grep -o "[0-9]* repartition(s)" "$work/sliding3.log" | cut -d' ' -f1)
 echo "sliding: ${n:-0} repartitions on 3 ranks"
 [ "${n:-0}" -ge 3 ] || { echo "sliding: the partition did not follow the block"; exit 1; }
+# A grid refined from few coarse cells: its refinement shares the cells by
+# the particles the bodies will make, so the start needs no repartition
+# (the block at rest, the limit out of reach: any repartition is the
+# start's), yet no rank
+# holds more than 1.2 times the mean particles (cells shared by count put
+# all 3,840 on one rank).
+ranks=(1 2 3)
+compare_ranks refined_start "$dir/../tests/data/sliding_block.prm" -s "Grid/Cells=160, 40" \
+  -s "Grid/Most coarse cells=100" -s "Load balance/Imbalance limit=100" -s "Time/End time=0.1" \
+  -s "Body 1/Velocity=0, 0"
+for n in 2 3; do
+  ! grep -q "repartition(s)" "$work/refined_start$n.log" \
+    || { echo "refined_start: repartitioned at the start on $n ranks"; exit 1; }
+  balanced "$work/refined_start$n/statistics.csv" 1.2
+done
 # Adaptivity: the block sliding through the grid refined around it (a
 # buffer of one cell, particles split) and coarsened behind it every 5
 # steps, with the repartitions that come with each change; the disks

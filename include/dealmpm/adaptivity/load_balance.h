@@ -7,6 +7,7 @@
 #include <dealmpm/base/scene_reader.h>
 
 #include <boost/signals2/connection.hpp>
+#include <functional>
 
 namespace dealmpm
 {
@@ -70,4 +71,32 @@ namespace dealmpm
   connect_particle_weights(parallel::distributed::Triangulation<dim> &tria,
                            const Particles::ParticleHandler<dim>     &handler,
                            const unsigned int particle_weight);
+
+  /**
+   * Connect the cell weights 1 + w n for the particles n that the bodies
+   * will put in a cell, @p expected_particles at its centre (for a cell to
+   * be refined, at its parent's), while the grid is refined at the start:
+   * the refinement's own partition then shares out particles that are not
+   * made yet, and the start needs no repartition of the filled grid (which
+   * costs about as much as building the grid again).
+   */
+  template <int dim>
+  boost::signals2::connection
+  connect_expected_weights(
+    parallel::distributed::Triangulation<dim>             &tria,
+    const std::function<unsigned int(const Point<dim> &)> &expected_particles,
+    const unsigned int                                     particle_weight);
+
+  /** The most loaded rank's cell weights (1 + w n for n particles) over
+   * the mean, what a repartition evens out (collective). */
+  template <int dim>
+  double
+  weight_imbalance(const parallel::distributed::Triangulation<dim> &tria,
+                   const Particles::ParticleHandler<dim>           &handler,
+                   const unsigned int particle_weight);
+
+  /** The weight imbalance below which the start keeps the cells where
+   * the grid's refinement put them: a repartition costs about a grid
+   * build, which 5 % of a run's time pays back only in long runs. */
+  constexpr double start_imbalance_tolerance = 1.05;
 } // namespace dealmpm

@@ -214,6 +214,10 @@ namespace dealmpm
      * and the boundary conditions. */
     void
     build_grid(SceneReader &reader, const CheckpointInfo *saved);
+    /** The particles per cell the bodies put at @p p (0 outside them): the
+     * cells' weights while build_grid() refines. */
+    unsigned int
+    expected_particles(const Point<dim> &p) const;
     /** The particle set: filled from the bodies, or loaded from the
      * @p saved run's checkpoint (after the grid was). */
     void
@@ -233,8 +237,10 @@ namespace dealmpm
      * bodies that start apart. */
     void
     make_reference_stencil(SceneReader &reader);
-    /** Connect the cells' particle weights and share the cells by them
-     * (unless a checkpoint on as many ranks shared them already). */
+    /** Connect the cells' particle weights and share the cells by them,
+     * unless they are shared well already: by a checkpoint on as many
+     * ranks, or by the bodies' expected particles in the grid's
+     * refinement (to within start_imbalance_tolerance). */
     void
     start_load_balance(const CheckpointInfo *saved);
     /** The step's stages for the scene's method, and the first stable
