@@ -39,10 +39,13 @@ namespace dealmpm
                     const unsigned long long n_active_cells,
                     const MPI_Comm           comm)
   {
-    timer.print_summary();
-    pcout << "dealmpm: " << loop.accuracy.report() << std::endl;
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
-    const double       rate =
+    if (n_ranks == 1)
+      timer.print_summary();
+    else
+      timer.print_wall_time_statistics(comm);
+    pcout << "dealmpm: " << loop.accuracy.report() << std::endl;
+    const double rate =
       loop.stepping_time > 0 ? loop.particle_steps / loop.stepping_time : 0;
     pcout << "dealmpm: " << loop.step << " steps to t = " << loop.time << ", "
           << std::setprecision(4) << rate / 1e6 << " M particle-steps/s on "

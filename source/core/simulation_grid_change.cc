@@ -156,8 +156,9 @@ namespace dealmpm
                                      *particles,
                                      run_settings.method.total_lagrangian());
     max_signal_rate =
-      std::max(Utilities::MPI::max(particle_check.max_signal_rate, comm),
-               regions.signal_rate());
+      Utilities::MPI::max(std::max(particle_check.max_signal_rate,
+                                   regions.local_signal_rate()),
+                          comm);
   }
 
   template void

@@ -107,11 +107,11 @@ namespace dealmpm
 
   template <int dim>
   double
-  FemRegions<dim>::signal_rate() const
+  FemRegions<dim>::local_signal_rate() const
   {
     double rate = 0;
     for (const FemRegion<dim> &region : regions)
-      rate = std::max(rate, region.solid->signal_rate());
+      rate = std::max(rate, region.solid->local_signal_rate());
     return rate;
   }
 

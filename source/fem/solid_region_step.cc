@@ -15,13 +15,13 @@ namespace dealmpm
   double
   SolidRegion<dim>::stable_time_step(const double cfl) const
   {
-    const double rate = signal_rate();
+    const double rate = Utilities::MPI::max(local_signal_rate(), comm);
     return rate > 0 ? cfl / rate : std::numeric_limits<double>::max();
   }
 
   template <int dim>
   double
-  SolidRegion<dim>::signal_rate() const
+  SolidRegion<dim>::local_signal_rate() const
   {
     double             rate = 0;
     const unsigned int n_q  = QGauss<dim>(fe.degree + 1).size();
@@ -43,7 +43,7 @@ namespace dealmpm
                           c * fe.degree /
                             (stretch * cell->minimum_vertex_distance()));
         }
-    return Utilities::MPI::max(rate, comm);
+    return rate;
   }
 
   template <int dim>
@@ -255,7 +255,7 @@ namespace dealmpm
 
 #define DEALMPM_INSTANTIATE(dim)                                            \
   template double SolidRegion<dim>::stable_time_step(const double) const;   \
-  template double SolidRegion<dim>::signal_rate() const;                    \
+  template double SolidRegion<dim>::local_signal_rate() const;              \
   template void   SolidRegion<dim>::compute_forces(const double,            \
                                                  const double,            \
                                                  const BodyForce<dim> &); \

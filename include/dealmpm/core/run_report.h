@@ -26,9 +26,8 @@ namespace dealmpm
              nullptr;
   }
 
-  /** The wall time of each set-up stage on this rank. A TimerOutput
-   * section would do, but its scope's end is collective: a rank that
-   * throws an input error while the others go on would hang them. */
+  /** The wall time of each set-up stage on this rank, taken while the
+   * stages are built and the step's timer is not. */
   class SetupClock
   {
   public:
@@ -66,7 +65,8 @@ namespace dealmpm
                     "/");
   }
 
-  /** The timer's table and the closing line of a run: steps,
+  /** The timer's table (on several ranks each section's least, mean and
+   * most time over the ranks) and the closing line of a run: steps,
    * particle-steps per second per core, peak memory, and the counts of what
    * happened to the grid and the particles on the way (collective). */
   void

@@ -323,8 +323,8 @@ namespace dealmpm
     double                               mass_threshold = 0;
     /** At the start, for USL's stable nodal mass (stable_nodal_mass()). */
     double mean_particle_mass = 0;
-    /** Made last in the constructor: a TimerOutput destroyed while an
-     * input error propagates prints a warning about MPI. */
+    /** This rank's step sections (no collectives), made last in the
+     * constructor (the set-up is setup_clock's). */
     std::unique_ptr<TimerOutput> computing_timer;
 
     RunState loop; ///< time, step, outputs, monitor: what a resume needs

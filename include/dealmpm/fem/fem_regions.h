@@ -90,10 +90,10 @@ namespace dealmpm
            const ParticleSet<dim>    &particles,
            const Stencil<dim>        &stencil);
 
-    /** The largest wave speed over node spacing, 0 without regions.
-     * Collective. */
+    /** The largest wave speed over node spacing of this rank's cells, 0
+     * without regions (not collective). */
     double
-    signal_rate() const;
+    local_signal_rate() const;
 
     /** Each region's totals and columns for the statistics
      * (collective). */

@@ -121,10 +121,11 @@ namespace dealmpm
     double
     stable_time_step(const double cfl) const;
 
-    /** The largest wave speed over node spacing (1/s), the inverse of the
-     * stable step; the deformed spacing. Collective. */
+    /** The largest wave speed over node spacing (1/s) of this rank's
+     * cells, the inverse of the stable step; the deformed spacing. Not
+     * collective: the step reduces it with the particles' rate. */
     double
-    signal_rate() const;
+    local_signal_rate() const;
 
     /** f = f_int(u) + tractions + m b at the start of a step of size dt
      * from @p time (the internal force's stress is advanced over the last
