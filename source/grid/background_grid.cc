@@ -2,9 +2,6 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/mapping_cartesian.h>
 #include <deal.II/fe/mapping_q1.h>
-#include <deal.II/grid/grid_generator.h>
-#include <deal.II/grid/grid_in.h>
-#include <deal.II/grid/grid_tools.h>
 
 #include <dealmpm/base/errors.h>
 #include <dealmpm/grid/background_grid.h>
@@ -12,12 +9,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <filesystem>
-#include <fstream>
 #include <iomanip>
-#include <limits>
-#include <map>
 #include <sstream>
+#include <utility>
 
 namespace dealmpm
 {
@@ -319,6 +313,39 @@ namespace dealmpm
       }
   }
 
+  namespace
+  {
+    /** Whether every rank's cells are all boxes, and the box around all
+     * ranks' cells, from this rank's (@p any_cell: it has one), in one
+     * reduction: the min of (boxes, lower corner, -upper corner). */
+    template <int dim>
+    std::pair<bool, BoundingBox<dim>>
+    reduce_extent(const bool        all_boxes,
+                  const bool        any_cell,
+                  const Point<dim> &lower,
+                  const Point<dim> &upper,
+                  const MPI_Comm    comm)
+    {
+      double extremes[2 * dim + 1];
+      extremes[0] = all_boxes ? 1 : 0;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          extremes[1 + d]       = any_cell ? lower[d] : 1e300;
+          extremes[1 + dim + d] = any_cell ? -upper[d] : 1e300;
+        }
+      Utilities::MPI::min(ArrayView<const double>(extremes, 2 * dim + 1),
+                          comm,
+                          ArrayView<double>(extremes, 2 * dim + 1));
+      Point<dim> low, high;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          low[d]  = extremes[1 + d];
+          high[d] = -extremes[1 + dim + d];
+        }
+      return {extremes[0] == 1, BoundingBox<dim>({low, high})};
+    }
+  } // namespace
+
   template <int dim>
   void
   BackgroundGrid<dim>::setup()
@@ -355,6 +382,7 @@ namespace dealmpm
           }
 
     cells.clear();
+    cells.reserve(triangulation.n_locally_owned_active_cells());
     ghost_cells.clear();
     cell_nodes.clear();
     cell_node_weights.clear();
@@ -383,8 +411,10 @@ namespace dealmpm
     // The mapping is made once: the particle handler keeps a reference to
     // it. Refining boxes gives boxes, so it stays right when the grid
     // changes.
+    const auto [boxes, box] =
+      reduce_extent(all_boxes, !first, lower, upper, comm);
     const bool was_cartesian = cartesian;
-    cartesian = Utilities::MPI::min(all_boxes ? 1 : 0, comm) == 1;
+    cartesian                = boxes;
     if (!mapping)
       mapping = cartesian ? std::unique_ptr<Mapping<dim>>(
                               std::make_unique<MappingCartesian<dim>>()) :
@@ -393,12 +423,7 @@ namespace dealmpm
       AssertThrow(cartesian || !was_cartesian,
                   ExcMessage("a grid of boxes changed into one that is not"));
 
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        lower[d] = Utilities::MPI::min(first ? 1e300 : lower[d], comm);
-        upper[d] = Utilities::MPI::max(first ? -1e300 : upper[d], comm);
-      }
-    bounding_box = BoundingBox<dim>({lower, upper});
+    bounding_box = box;
   }
 
   namespace
