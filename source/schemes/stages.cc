@@ -157,7 +157,8 @@ namespace dealmpm
         if (s.method.apic)
           record_positions(s.grid, s.particles, s.stencil);
       }
-      stop_on_failed_stencil(s);
+      if (s.kernel.stencil_can_fail())
+        stop_on_failed_stencil(s);
     }
 
     template <int dim>

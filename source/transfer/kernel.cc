@@ -32,6 +32,12 @@ namespace dealmpm
       {
         return false;
       }
+      /** Its weights exist wherever the particle is in the grid. */
+      bool
+      stencil_can_fail() const override
+      {
+        return false;
+      }
     };
 
     /** GIMP and CPDI keep each particle's initial domain half-lengths. */
@@ -72,6 +78,13 @@ namespace dealmpm
       {
         compute_gimp_stencil(
           grid, particles, follow_deformation, stencil, &lattice);
+      }
+
+      /** Its weights exist wherever the particle is in the grid. */
+      bool
+      stencil_can_fail() const override
+      {
+        return false;
       }
 
     private:
@@ -139,6 +152,13 @@ namespace dealmpm
                       Stencil<dim>              &stencil) const override
       {
         compute_bspline_stencil(grid, spline, particles, stencil);
+      }
+
+      /** Its weights exist wherever the particle is in the grid. */
+      bool
+      stencil_can_fail() const override
+      {
+        return false;
       }
 
     private:

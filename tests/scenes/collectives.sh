@@ -2,8 +2,11 @@
 # What a step sends between ranks, counted on rank 0 of 2 by the MPI
 # wrapper tests/tools/mpi_count.cc (LD_PRELOAD): the difference between
 # runs of 40 and 20 steps of the 2D elastic column, per step, so that
-# set-up and output cancel. USL and MUSL; the imbalance check (one
-# reduction every 'Check interval' steps) is moved out of reach.
+# set-up and output cancel. USL and MUSL with linear shape functions
+# (weights computed where used), USL with cpGIMP and the B-spline (a
+# stored stencil, which cannot fail: no check of it across ranks); the
+# imbalance check (one reduction every 'Check interval' steps) is moved
+# out of reach.
 # - Collectives (reductions, barriers, ...): at most 2 per step, the
 #   step's own reduction (time step, smallest J, failed particles,
 #   particles that left their cell) and the run's agreement on stop
@@ -12,7 +15,8 @@
 #   barriers per step before 2026-11-29).
 # - Point-to-point sends: printed, and held at today's counts, 10 for USL
 #   (5 vectors compressed after P2G, 5 ghost updates) and 14 for MUSL (its
-#   second P2G); one compress and one ghost update per P2G is the goal.
+#   second P2G), 9 with a stored stencil; one compress and one ghost
+#   update per P2G is the goal.
 set -euo pipefail
 dealmpm=$1 mpirun=$2 counter=$3 scene=$4
 work=$(mktemp -d)
@@ -30,11 +34,11 @@ count() { # steps overrides... -> "collectives point_to_point" of rank 0
   awk '{ print $2, $4 }' "$work/count"
 }
 
-for limits in USL:10 MUSL:14; do
-  scheme=${limits%:*} sends=${limits#*:}
-  read -r c20 p20 < <(count 20 -s "MPM/Stress update=$scheme")
-  read -r c40 p40 < <(count 40 -s "MPM/Stress update=$scheme")
-  awk -v s=$scheme -v c=$((c40 - c20)) -v p=$((p40 - p20)) -v sends=$sends 'BEGIN {
+for limits in USL:linear:10 MUSL:linear:14 USL:cpGIMP:9 "USL:quadratic B-spline:9"; do
+  IFS=: read -r scheme kernel sends <<< "$limits"
+  read -r c20 p20 < <(count 20 -s "MPM/Stress update=$scheme" -s "MPM/Shape function=$kernel")
+  read -r c40 p40 < <(count 40 -s "MPM/Stress update=$scheme" -s "MPM/Shape function=$kernel")
+  awk -v s="$scheme, $kernel" -v c=$((c40 - c20)) -v p=$((p40 - p20)) -v sends=$sends 'BEGIN {
     printf "%s: %.2f collectives and %.2f sends per step on rank 0 of 2\n", s, c / 20, p / 20
     if (c / 20 > 2) { print "  more than 2 collectives per step"; exit 1 }
     if (p / 20 > sends) { print "  more than " sends " sends per step"; exit 1 } }'

@@ -54,6 +54,15 @@ namespace dealmpm
       return true;
     }
 
+    /** Whether compute_stencil() can fail for a particle (Stencil::failed):
+     * then each step's stencil costs a reduction, so that all ranks stop
+     * together. A shape function that never fails says so and saves it. */
+    virtual bool
+    stencil_can_fail() const
+    {
+      return true;
+    }
+
     /** Per-particle fields it stores (GIMP and CPDI: the particle domain's
      * initial half-lengths, "domain_half_length"). */
     virtual std::vector<FieldDescription>
@@ -127,6 +136,12 @@ namespace dealmpm
     gradient_shrinks_with_weight() const
     {
       return shape_function->gradient_shrinks_with_weight();
+    }
+
+    bool
+    stencil_can_fail() const
+    {
+      return shape_function->stencil_can_fail();
     }
 
   private:
