@@ -1,4 +1,5 @@
 #include <dealmpm/effects/absorbing_boundary.h>
+#include <dealmpm/grid/nodal_exchange.h>
 
 
 namespace dealmpm
@@ -44,11 +45,10 @@ namespace dealmpm
             fields.velocity_increment[d].local_element(i) += v_new[d] - v[d];
           }
       }
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        fields.velocity[d].update_ghost_values();
-        fields.velocity_increment[d].update_ghost_values();
-      }
+    NodalExchange()
+      .add(fields.velocity)
+      .add(fields.velocity_increment)
+      .copy_owners_to_ghosts();
   }
 
   template class AbsorbingBoundary<2>;

@@ -2,6 +2,7 @@
 
 #include <dealmpm/effects/boundary_friction.h>
 #include <dealmpm/effects/coulomb_friction.h>
+#include <dealmpm/grid/nodal_exchange.h>
 
 #include <algorithm>
 #include <array>
@@ -101,11 +102,10 @@ namespace dealmpm
             fields.velocity_increment[d].local_element(i) += change[d];
           }
       }
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        fields.velocity[d].update_ghost_values();
-        fields.velocity_increment[d].update_ghost_values();
-      }
+    NodalExchange()
+      .add(fields.velocity)
+      .add(fields.velocity_increment)
+      .copy_owners_to_ghosts();
   }
 
   template class BoundaryFriction<2>;

@@ -1,5 +1,6 @@
 #include <dealmpm/effects/frictional_contact.h>
 #include <dealmpm/grid/grid_update.h>
+#include <dealmpm/grid/nodal_exchange.h>
 #include <dealmpm/transfer/stencil_order.h>
 
 #include <algorithm>
@@ -143,12 +144,10 @@ namespace dealmpm
     const auto [taken, by_friction] = correct(set, threshold);
     work += taken;
     friction_part += by_friction;
+    NodalExchange ghosts;
     for (NodalFields<dim> &body : set.body)
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          body.velocity[d].update_ghost_values();
-          body.velocity_increment[d].update_ghost_values();
-        }
+      ghosts.add(body.velocity).add(body.velocity_increment);
+    ghosts.copy_owners_to_ghosts();
   }
 
   template <int dim>
@@ -171,9 +170,10 @@ namespace dealmpm
           }
         conditions->project(body.velocity);
       }
+    NodalExchange ghosts;
     for (NodalFields<dim> &body : set.body)
-      for (unsigned int d = 0; d < dim; ++d)
-        body.velocity[d].update_ghost_values();
+      ghosts.add(body.velocity);
+    ghosts.copy_owners_to_ghosts();
   }
 
   namespace

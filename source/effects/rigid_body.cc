@@ -3,6 +3,7 @@
 #include <dealmpm/effects/coulomb_friction.h>
 #include <dealmpm/effects/expressions.h>
 #include <dealmpm/effects/rigid_body.h>
+#include <dealmpm/grid/nodal_exchange.h>
 #include <dealmpm/transfer/stencil_order.h>
 
 #include <algorithm>
@@ -142,12 +143,11 @@ namespace dealmpm
               fields.velocity_increment[d].local_element(i) += change[d];
           }
       }
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        fields.velocity[d].update_ghost_values();
-        if (count_work)
-          fields.velocity_increment[d].update_ghost_values();
-      }
+    NodalExchange ghosts;
+    ghosts.add(fields.velocity);
+    if (count_work)
+      ghosts.add(fields.velocity_increment);
+    ghosts.copy_owners_to_ghosts();
     return given;
   }
 

@@ -4,6 +4,7 @@
 #include <dealmpm/base/run_messages.h>
 #include <dealmpm/effects/expressions.h>
 #include <dealmpm/effects/traction.h>
+#include <dealmpm/grid/nodal_exchange.h>
 #include <dealmpm/particles/surface_area.h>
 #include <dealmpm/transfer/stencil_order.h>
 
@@ -273,11 +274,9 @@ namespace dealmpm
               }
           });
       }
+    NodalExchange().add(nodal_load).sum_ghosts_into_owners();
     for (unsigned int d = 0; d < dim; ++d)
-      {
-        nodal_load[d].compress(VectorOperation::add);
-        fields.force[d].add(1., nodal_load[d]);
-      }
+      fields.force[d].add(1., nodal_load[d]);
     double total = 0;
     for (unsigned int i = 0; i < nodal_load[0].locally_owned_size(); ++i)
       {

@@ -1,30 +1,54 @@
 #include <dealmpm/grid/grid_update.h>
+#include <dealmpm/grid/nodal_exchange.h>
 
 #include <algorithm>
 
 namespace dealmpm
 {
+  namespace
+  {
+    /** increment_weight = min(1, m / @p stable_mass) on the owned nodes
+     * (sized on first use); its ghosts are left to the caller. */
+    template <int dim>
+    void
+    set_owned_increment_weights(NodalFields<dim> &fields,
+                                const double      stable_mass)
+    {
+      if (fields.increment_weight.size() != fields.mass.size())
+        fields.increment_weight.reinit(fields.mass);
+      const unsigned int n_owned = fields.mass.locally_owned_size();
+      const double      *mass    = fields.mass.begin();
+      double            *w       = fields.increment_weight.begin();
+      for (unsigned int i = 0; i < n_owned; ++i)
+        w[i] = std::min(1., mass[i] / stable_mass);
+    }
+
+    /** Whether a node, owned or ghost, is light: 0 < w < 1 (empty nodes,
+     * w = 0, are in no particle's stencil). Most steps of most scenes have
+     * none: then G2P is left without weights. When there are some, G2P
+     * looks at each cell's weights as it reads the cell's nodes (no pass
+     * over the grid here). */
+    template <int dim>
+    void
+    find_light_nodes(NodalFields<dim> &fields)
+    {
+      const double      *w = fields.increment_weight.begin();
+      const unsigned int n_local =
+        fields.increment_weight.locally_owned_size() +
+        fields.increment_weight.get_partitioner()->n_ghost_indices();
+      fields.has_light_nodes = std::any_of(w, w + n_local, [](const double x) {
+        return x > 0 && x < 1;
+      });
+    }
+  } // namespace
+
   template <int dim>
   void
   set_increment_weights(NodalFields<dim> &fields, const double stable_mass)
   {
-    if (fields.increment_weight.size() != fields.mass.size())
-      fields.increment_weight.reinit(fields.mass);
-    const unsigned int n_owned = fields.mass.locally_owned_size();
-    const double      *mass    = fields.mass.begin();
-    double            *w       = fields.increment_weight.begin();
-    for (unsigned int i = 0; i < n_owned; ++i)
-      w[i] = std::min(1., mass[i] / stable_mass);
+    set_owned_increment_weights(fields, stable_mass);
     fields.increment_weight.update_ghost_values();
-    // Light nodes have 0 < w < 1 (empty nodes, w = 0, are in no particle's
-    // stencil). Most steps of most scenes have none: then G2P is left
-    // without weights. When there are some, G2P looks at each cell's
-    // weights as it reads the cell's nodes (no pass over the grid here).
-    const unsigned int n_local =
-      n_owned + fields.increment_weight.get_partitioner()->n_ghost_indices();
-    fields.has_light_nodes = std::any_of(w, w + n_local, [](const double x) {
-      return x > 0 && x < 1;
-    });
+    find_light_nodes(fields);
   }
 
   template <int dim>
@@ -37,10 +61,6 @@ namespace dealmpm
   {
     const unsigned int n_owned = fields.mass.locally_owned_size();
     const double      *mass    = fields.mass.begin();
-    if (stable_mass > 0)
-      set_increment_weights(fields, stable_mass);
-    else
-      fields.has_light_nodes = false; // no stale weights in G2P
     for (unsigned int d = 0; d < dim; ++d)
       {
         const double *p  = fields.momentum[d].begin();
@@ -56,14 +76,24 @@ namespace dealmpm
           else
             v[i] = dv[i] = 0.;
       }
-
     boundary_conditions.project_with_increment(fields.velocity,
                                                fields.velocity_increment);
-    for (unsigned int d = 0; d < dim; ++d)
+
+    // One message per neighbour for the ghosts of v*, the increment and
+    // the weights.
+    NodalExchange ghosts;
+    ghosts.add(fields.velocity);
+    ghosts.add(fields.velocity_increment);
+    if (stable_mass > 0)
       {
-        fields.velocity[d].update_ghost_values();
-        fields.velocity_increment[d].update_ghost_values();
+        set_owned_increment_weights(fields, stable_mass);
+        ghosts.add(fields.increment_weight);
       }
+    ghosts.copy_owners_to_ghosts();
+    if (stable_mass > 0)
+      find_light_nodes(fields);
+    else
+      fields.has_light_nodes = false; // no stale weights in G2P
   }
 
   template <int dim>
@@ -82,8 +112,9 @@ namespace dealmpm
           v[i] = mass[i] > mass_threshold ? p[i] / mass[i] : 0.;
       }
     boundary_conditions.project(fields.velocity);
-    for (unsigned int d = 0; d < dim; ++d)
-      fields.velocity[d].update_ghost_values();
+    NodalExchange ghosts;
+    ghosts.add(fields.velocity);
+    ghosts.copy_owners_to_ghosts();
   }
 
 #define DEALMPM_INSTANTIATE(dim)                                         \

@@ -1,3 +1,4 @@
+#include <dealmpm/grid/nodal_exchange.h>
 #include <dealmpm/transfer/affine_transfer.h>
 #include <dealmpm/transfer/box_q1.h>
 #include <dealmpm/transfer/particle_to_grid.h>
@@ -413,22 +414,21 @@ namespace dealmpm
           fields.force[d] = 0.;
     }
 
-    /** Sum what P2G added over the ranks. */
+    /** Add to @p exchange what P2G added into @p fields. */
     template <int dim>
     void
-    compress(NodalFields<dim> &fields,
+    add_sums(NodalExchange    &exchange,
+             NodalFields<dim> &fields,
              const bool        mass_and_momentum,
              const bool        internal_force)
     {
       if (mass_and_momentum)
         {
-          fields.mass.compress(VectorOperation::add);
-          for (unsigned int d = 0; d < dim; ++d)
-            fields.momentum[d].compress(VectorOperation::add);
+          exchange.add(fields.mass);
+          exchange.add(fields.momentum);
         }
       if (internal_force)
-        for (unsigned int d = 0; d < dim; ++d)
-          fields.force[d].compress(VectorOperation::add);
+        exchange.add(fields.force);
     }
 
     /** The kernel for the quantities asked for, into @p targets. */
@@ -508,7 +508,9 @@ namespace dealmpm
              internal_force,
              formulation,
              predictor_offset);
-    compress(fields, mass_and_momentum, internal_force);
+    NodalExchange sums;
+    add_sums(sums, fields, mass_and_momentum, internal_force);
+    sums.sum_ghosts_into_owners();
   }
 
   template <int dim>
@@ -537,17 +539,19 @@ namespace dealmpm
              internal_force,
              formulation,
              predictor_offset);
-    zero(set.core, mass_and_momentum, internal_force);
+    NodalExchange sums;
     for (unsigned int b = 0; b < set.body.size(); ++b)
       {
-        NodalFields<dim> &body = set.body[b];
-        compress(body, mass_and_momentum, internal_force);
+        add_sums(sums, set.body[b], mass_and_momentum, internal_force);
         if (mass_and_momentum)
-          {
-            for (NodalVector &v : set.mass_gradient[b])
-              v.compress(VectorOperation::add);
-            set.core.mass += body.mass;
-          }
+          sums.add(set.mass_gradient[b]);
+      }
+    sums.sum_ghosts_into_owners();
+    zero(set.core, mass_and_momentum, internal_force);
+    for (const NodalFields<dim> &body : set.body)
+      {
+        if (mass_and_momentum)
+          set.core.mass += body.mass;
         for (unsigned int d = 0; d < dim; ++d)
           {
             if (mass_and_momentum)

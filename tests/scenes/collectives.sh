@@ -13,10 +13,12 @@
 #   signals and checkpoints. The MPI-aware step timer alone cost a barrier
 #   and three reductions per section and step (28 reductions and 8
 #   barriers per step before 2026-11-29).
-# - Point-to-point sends: printed, and held at today's counts, 10 for USL
-#   (5 vectors compressed after P2G, 5 ghost updates) and 14 for MUSL (its
-#   second P2G), 9 with a stored stencil; one compress and one ghost
-#   update per P2G is the goal.
+# - Point-to-point sends: one message per neighbour for the sums of a P2G
+#   (mass, momentum, force together) and one for the ghosts of the grid
+#   update (v*, increment, light-node weights together): 2 per step for
+#   USL, 4 for MUSL (its second P2G and its velocity from momentum), with
+#   one neighbour. Before NodalExchange (2026-11-29) each vector was a
+#   message of its own: 10 for USL, 14 for MUSL, 9 with a stored stencil.
 set -euo pipefail
 dealmpm=$1 mpirun=$2 counter=$3 scene=$4
 work=$(mktemp -d)
@@ -34,7 +36,7 @@ count() { # steps overrides... -> "collectives point_to_point" of rank 0
   awk '{ print $2, $4 }' "$work/count"
 }
 
-for limits in USL:linear:10 MUSL:linear:14 USL:cpGIMP:9 "USL:quadratic B-spline:9"; do
+for limits in USL:linear:2 MUSL:linear:4 USL:cpGIMP:2 "USL:quadratic B-spline:2"; do
   IFS=: read -r scheme kernel sends <<< "$limits"
   read -r c20 p20 < <(count 20 -s "MPM/Stress update=$scheme" -s "MPM/Shape function=$kernel")
   read -r c40 p40 < <(count 40 -s "MPM/Stress update=$scheme" -s "MPM/Shape function=$kernel")

@@ -5,6 +5,7 @@
 #include <dealmpm/base/registry.h>
 #include <dealmpm/grid/background_grid.h>
 #include <dealmpm/grid/boundary_conditions.h>
+#include <dealmpm/grid/nodal_exchange.h>
 #include <dealmpm/grid/nodal_field_set.h>
 #include <dealmpm/materials/material_sections.h>
 #include <dealmpm/particles/body.h>
@@ -365,8 +366,7 @@ namespace dealmpm
             for (unsigned int d = 0; d < dim; ++d)
               force[d][state.stencil.node[e]] += state.stencil.N[e] * mb[d];
         });
-    for (unsigned int d = 0; d < dim; ++d)
-      fields.force[d].compress(VectorOperation::add);
+    NodalExchange().add(fields.force).sum_ghosts_into_owners();
     return power;
   }
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <dealmpm/grid/background_grid.h>
+#include <dealmpm/grid/nodal_exchange.h>
 #include <dealmpm/grid/nodal_fields.h>
 #include <dealmpm/particles/particle_set.h>
 #include <dealmpm/transfer/affine_transfer.h>
@@ -133,9 +134,10 @@ namespace dealmpm
     void
     finish()
     {
-      fields.mass.compress(VectorOperation::add);
-      for (unsigned int d = 0; d < dim; ++d)
-        fields.momentum[d].compress(VectorOperation::add);
+      NodalExchange()
+        .add(fields.mass)
+        .add(fields.momentum)
+        .sum_ghosts_into_owners();
     }
   };
 } // namespace dealmpm
