@@ -9,6 +9,8 @@ mode=${1:-run}
 case "$mode" in run|test) ;; *) echo "usage: ./build.sh [run|test]" >&2; exit 1 ;; esac
 
 packages="cmake g++ binutils make libdeal.ii-dev libeigen3-dev libgtest-dev openmpi-bin libopenmpi-dev ccache python3 python3-matplotlib clang-format"
+# The tests open the HDF5/XDMF output in ParaView's pvpython.
+if [ "$mode" = test ]; then packages="$packages python3-paraview"; fi
 missing=""
 for p in $packages; do
   # No "| grep -q": under pipefail its early exit can fail the pipeline.

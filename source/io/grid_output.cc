@@ -9,6 +9,10 @@
 #include <dealmpm/io/grid_output.h>
 #include <dealmpm/io/output_file.h>
 
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <iomanip>
 #include <sstream>
 
 namespace dealmpm
@@ -88,13 +92,65 @@ namespace dealmpm
   /** This rank's piece <base>.<rank>.vtu and, on rank 0, the record
    * <base>.pvtu that lists every rank's piece; returns the record's
    * name. */
+  namespace
+  {
+    /** <directory>/<base>.h5 of all ranks, through a temporary file
+     * renamed over it; returns its XDMF Grid element at @p time. */
+    template <int dim>
+    std::string
+    write_hdf5(const DataOut<dim> &data_out,
+               const std::string  &directory,
+               const std::string  &base,
+               const MPI_Comm      comm,
+               const double        time)
+    {
+      // Duplicate vertices are kept: cell data (a region's stress) stays
+      // constant in each cell, as in the .vtu files.
+      DataOutBase::DataOutFilter filter(
+        DataOutBase::DataOutFilterFlags(false, true));
+      data_out.write_filtered_data(filter);
+      const std::string name = base + ".h5", path = directory + "/" + name;
+      std::string       problem;
+      try
+        {
+          data_out.write_hdf5_parallel(filter, path + ".tmp", comm);
+        }
+      catch (const std::exception &e)
+        {
+          problem = "output file " + path + " cannot be written";
+        }
+      if (problem.empty() && Utilities::MPI::this_mpi_process(comm) == 0 &&
+          std::rename((path + ".tmp").c_str(), path.c_str()) != 0)
+        problem = "output file " + path + ": " + std::strerror(errno);
+      agree_on_output_error(problem, "", comm);
+      std::string grid =
+        data_out.create_xdmf_entry(filter, name, time, comm)
+          .get_xdmf_content(3, ReferenceCells::get_hypercube<dim>());
+      // deal.II writes the time with 6 digits: not enough to tell apart
+      // outputs a step apart, nor to match the particles' series.
+      const std::size_t begin = grid.find("<Time Value=\"");
+      if (begin != std::string::npos)
+        {
+          const std::size_t  value = begin + 13;
+          std::ostringstream precise;
+          precise << std::setprecision(17) << time;
+          grid.replace(value, grid.find('"', value) - value, precise.str());
+        }
+      return grid;
+    }
+  } // namespace
+
   template <int dim>
   std::string
   write_pieces(const DataOut<dim> &data_out,
                const std::string  &directory,
                const std::string  &base,
-               const MPI_Comm      comm)
+               const MPI_Comm      comm,
+               const OutputFormat  format,
+               const double        time)
   {
+    if (format == OutputFormat::hdf5)
+      return write_hdf5(data_out, directory, base, comm, time);
     const auto piece = [&](const unsigned int r) {
       return base + "." + Utilities::int_to_string(r) + ".vtu";
     };
@@ -123,7 +179,9 @@ namespace dealmpm
   write_grid_output(const BackgroundGrid<dim> &grid,
                     const NodalFields<dim>    &fields,
                     const std::string         &directory,
-                    const unsigned int         counter)
+                    const unsigned int         counter,
+                    const OutputFormat         format,
+                    const double               time)
   {
     // Everything collective (ghost exchanges) comes before the files, so
     // that a rank that cannot write still takes part in all of it.
@@ -153,18 +211,24 @@ namespace dealmpm
     return write_pieces(data_out,
                         directory,
                         "grid_" + Utilities::int_to_string(counter, 5),
-                        grid.comm);
+                        grid.comm,
+                        format,
+                        time);
   }
 
 #define DEALMPM_INSTANTIATE(dim)                                      \
   template std::string write_grid_output(const BackgroundGrid<dim> &, \
                                          const NodalFields<dim> &,    \
                                          const std::string &,         \
-                                         unsigned int);               \
+                                         unsigned int,                \
+                                         OutputFormat,                \
+                                         double);                     \
   template std::string write_pieces(const DataOut<dim> &,             \
                                     const std::string &,              \
                                     const std::string &,              \
-                                    MPI_Comm);
+                                    MPI_Comm,                         \
+                                    OutputFormat,                     \
+                                    double);
   DEALMPM_INSTANTIATE(2)
   DEALMPM_INSTANTIATE(3)
 #undef DEALMPM_INSTANTIATE

@@ -12,8 +12,8 @@ namespace dealmpm
   is_run_output_file(const std::string &file_name)
   {
     static const std::regex pattern(
-      "(((particles|grid|fem_region_[0-9]+)_[0-9]+(\\.[0-9]+)?\\.(vtu|pvtu))|particles_[0-9]+"
-      "\\.csv|statistics\\.csv|.+\\.pvd)(\\.tmp)?");
+      "(((particles|grid|fem_region_[0-9]+)_[0-9]+(\\.[0-9]+)?\\.(vtu|pvtu|h5))|"
+      "particles_[0-9]+\\.csv|statistics\\.csv|.+\\.(pvd|xdmf))(\\.tmp)?");
     return std::regex_match(file_name, pattern);
   }
 
@@ -29,13 +29,16 @@ namespace dealmpm
         std::error_code   type_error;
         const std::string name = entry.path().filename().string();
         if (entry.is_regular_file(type_error) && is_run_output_file(name))
-          (name.find(".pvd") != std::string::npos ? series : others)
+          (name.find(".pvd") != std::string::npos ||
+               name.find(".xdmf") != std::string::npos ?
+             series :
+             others)
             .push_back(entry.path());
       }
     if (error)
       throw OutputError("cannot list " + directory + ": " + error.message());
-    // The .pvd files go first: a run killed while removing must not leave
-    // a series that lists removed files.
+    // The series (.pvd, .xdmf) go first: a run killed while removing must not
+    // leave a series that lists removed files.
     series.insert(series.end(), others.begin(), others.end());
     for (const fs::path &file : series)
       if (!fs::remove(file, error) && error)

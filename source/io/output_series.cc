@@ -1,20 +1,37 @@
 #include <dealmpm/io/output_file.h>
-#include <dealmpm/io/pvd_series.h>
+#include <dealmpm/io/output_series.h>
 
 #include <iomanip>
 #include <sstream>
 
 namespace dealmpm
 {
-  void
-  PvdSeries::add_and_write(const double       time,
-                           const std::string &file,
-                           const std::string &pvd_path)
+  namespace
   {
-    entries.emplace_back(time, file);
+    /** An XDMF temporal series of the Grid elements @p grids. */
+    std::string
+    xdmf_series(const std::vector<std::string> &grids)
+    {
+      std::string text = "<?xml version=\"1.0\" ?>\n"
+                         "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
+                         "<Xdmf Version=\"2.0\">\n <Domain>\n"
+                         "  <Grid Name=\"series\" GridType=\"Collection\" "
+                         "CollectionType=\"Temporal\">\n";
+      for (const std::string &g : grids)
+        text += g;
+      return text + "  </Grid>\n </Domain>\n</Xdmf>\n";
+    }
+  } // namespace
+
+  void
+  OutputSeries::add_and_write(const double       time,
+                              const std::string &entry,
+                              const std::string &path)
+  {
+    entries.emplace_back(time, entry);
     try
       {
-        write(pvd_path);
+        write(path);
       }
     catch (...)
       {
@@ -24,8 +41,18 @@ namespace dealmpm
   }
 
   void
-  PvdSeries::write(const std::string &pvd_path) const
+  OutputSeries::write(const std::string &path) const
   {
+    if (path.size() > 5 && path.substr(path.size() - 5) == ".xdmf")
+      {
+        std::vector<std::string> grids;
+        for (const auto &entry : entries)
+          grids.push_back(entry.second);
+        OutputFile out(path);
+        out.write(xdmf_series(grids));
+        out.commit();
+        return;
+      }
     std::ostringstream xml;
     // Enough digits to tell apart the times of outputs a step apart.
     xml << std::setprecision(12)
@@ -36,7 +63,7 @@ namespace dealmpm
       xml << "    <DataSet timestep=\"" << t
           << "\" group=\"\" part=\"0\" file=\"" << name << "\"/>\n";
     xml << "  </Collection>\n</VTKFile>\n";
-    OutputFile out(pvd_path);
+    OutputFile out(path);
     out.write(xml.str());
     out.commit();
   }

@@ -12,22 +12,33 @@ namespace dealmpm
       Patterns::DirectoryName(),
       "Folder for all output (created; relative to the working directory). "
       "The files of an earlier run in it (particles_*, grid_*, "
-      "statistics.csv, *.pvd) are removed first; other files stay.");
+      "statistics.csv, *.pvd, *.xdmf) are removed first; other files stay.");
     prm.declare_entry(
       "Interval",
       "0.1",
       Patterns::Double(),
       "Simulated time between outputs (s); 0: only the first and last step.");
+    prm.declare_entry(
+      "Format",
+      "vtu",
+      Patterns::Selection("vtu|hdf5"),
+      "How particle, grid and FEM region files are written. vtu: a .vtu "
+      "piece per rank and a .pvtu per output, listed in .pvd series. hdf5: "
+      "one .h5 file per output written by all ranks together (parallel "
+      "HDF5), listed in .xdmf series (particles.xdmf, grid.xdmf, "
+      "fem_region_N.xdmf) that ParaView opens with its XDMF reader; for "
+      "runs on many ranks, where a file per rank and output would be "
+      "hundreds of thousands of files.");
     prm.declare_entry("Write particles",
                       "true",
                       Patterns::Bool(),
-                      "Particle .vtu/.pvtu files and particles.pvd.");
+                      "Particle files (see Format) and their series.");
     prm.declare_entry(
       "Write grid",
       "false",
       Patterns::Bool(),
-      "Grid .vtu/.pvtu files (nodal mass and velocity, level, rank) and "
-      "grid.pvd (under total Lagrangian the grid is the reference one, "
+      "Grid files (nodal mass and velocity, level, rank; see Format) and "
+      "their series (under total Lagrangian the grid is the reference one, "
       "while the particles are shown where they are).");
     prm.declare_entry(
       "Particle CSV",
@@ -49,7 +60,9 @@ namespace dealmpm
     s.directory = reader.get("Directory");
     if (s.directory.empty())
       reader.fail("Directory", "a folder name");
-    s.interval           = reader.get_nonnegative("Interval");
+    s.interval = reader.get_nonnegative("Interval");
+    s.format =
+      reader.get("Format") == "hdf5" ? OutputFormat::hdf5 : OutputFormat::vtu;
     s.write_particles    = reader.get_bool("Write particles");
     s.write_grid         = reader.get_bool("Write grid");
     s.write_particle_csv = reader.get_bool("Particle CSV");

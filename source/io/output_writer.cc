@@ -64,25 +64,26 @@ namespace dealmpm
     /** Adds the step's files at @p time to the @p record's series and
      * rewrites those (rank 0). */
     void
-    add_to_series(OutputRecord      &record,
-                  const StepFiles   &files,
-                  const double       time,
-                  const std::string &dir)
+    add_to_series(OutputRecord         &record,
+                  const StepFiles      &files,
+                  const double          time,
+                  const OutputSettings &settings)
     {
+      const std::string dir = settings.directory + "/";
+      const std::string ext = settings.series_extension();
       if (!files.particles.empty())
         record.particle_series.add_and_write(time,
                                              files.particles,
-                                             dir + "/particles.pvd");
+                                             dir + "particles" + ext);
       if (!files.grid.empty())
-        record.grid_series.add_and_write(time, files.grid, dir + "/grid.pvd");
+        record.grid_series.add_and_write(time, files.grid, dir + "grid" + ext);
       record.region_series.resize(files.regions.size());
       for (unsigned int r = 0; r < files.regions.size(); ++r)
         if (!files.regions[r].empty())
           record.region_series[r].add_and_write(time,
                                                 files.regions[r],
-                                                dir + "/fem_region_" +
-                                                  std::to_string(r + 1) +
-                                                  ".pvd");
+                                                dir + "fem_region_" +
+                                                  std::to_string(r + 1) + ext);
     }
 
     /** Writes the files of output @p counter that the @p settings ask for,
@@ -93,20 +94,25 @@ namespace dealmpm
                 const typename OutputWriter<dim>::Scene &scene,
                 ParticleOutput<dim>                     &particle_output,
                 const unsigned int                       counter,
+                const double                             time,
                 const MPI_Comm                           comm,
                 Attempts                                &attempt)
     {
-      const std::string &dir = settings.directory;
+      const std::string &dir    = settings.directory;
+      const OutputFormat format = settings.format;
       StepFiles          files;
       if (settings.write_particles)
         attempt([&] {
           particle_output.build_patches(scene.particles, scene.materials);
-          files.particles = particle_output.write(dir, counter, comm);
+          files.particles =
+            format == OutputFormat::hdf5 ?
+              particle_output.write_hdf5(dir, counter, time, comm) :
+              particle_output.write(dir, counter, comm);
         });
       if (settings.write_grid)
         attempt([&] {
-          files.grid =
-            write_grid_output(scene.grid, scene.fields, dir, counter);
+          files.grid = write_grid_output(
+            scene.grid, scene.fields, dir, counter, format, time);
         });
       files.regions.resize(scene.regions.size());
       for (unsigned int r = 0; r < scene.regions.size(); ++r)
@@ -115,7 +121,9 @@ namespace dealmpm
             write_region_output(*scene.regions[r].solid,
                                 dir,
                                 "fem_region_" + std::to_string(r + 1) + "_" +
-                                  Utilities::int_to_string(counter, 5));
+                                  Utilities::int_to_string(counter, 5),
+                                format,
+                                time);
         });
       if (settings.write_particle_csv)
         attempt([&] {
@@ -169,15 +177,16 @@ namespace dealmpm
               else
                 {
                   // The series first: none may list a removed file.
+                  const std::string ext = settings.series_extension();
                   if (!resumed->particle_series.empty())
-                    resumed->particle_series.write(dir + "/particles.pvd");
+                    resumed->particle_series.write(dir + "/particles" + ext);
                   if (!resumed->grid_series.empty())
-                    resumed->grid_series.write(dir + "/grid.pvd");
+                    resumed->grid_series.write(dir + "/grid" + ext);
                   for (unsigned int r = 0; r < resumed->region_series.size();
                        ++r)
                     if (!resumed->region_series[r].empty())
                       resumed->region_series[r].write(
-                        dir + "/fem_region_" + std::to_string(r + 1) + ".pvd");
+                        dir + "/fem_region_" + std::to_string(r + 1) + ext);
                   n_removed       = remove_later_output(dir, resumed->counter);
                   statistics_file = std::make_unique<StatisticsFile>(
                     dir + "/statistics.csv", dim, first, step);
@@ -220,12 +229,12 @@ namespace dealmpm
     // without its files and row.
     Attempts        attempt;
     const StepFiles files = write_files<dim>(
-      settings, scene, particle_output, record.counter, comm, attempt);
+      settings, scene, particle_output, record.counter, time, comm, attempt);
     agree_on_output_error(attempt.problem, context, comm);
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       attempt([&] {
         write_row(*statistics_file);
-        add_to_series(record, files, time, dir);
+        add_to_series(record, files, time, settings);
       });
     agree_on_output_error(attempt.problem, context, comm);
     ++record.counter;

@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
+#include <dealmpm/io/hdf5_points.h>
 #include <dealmpm/io/particle_output.h>
 
 namespace dealmpm
@@ -163,6 +164,19 @@ namespace dealmpm
         cloud.write_pvtu(directory + "/" + base + ".pvtu", pieces);
       }
     return base + ".pvtu";
+  }
+
+  template <int dim>
+  std::string
+  ParticleOutput<dim>::write_hdf5(const std::string &directory,
+                                  const unsigned int counter,
+                                  const double       time,
+                                  const MPI_Comm     comm) const
+  {
+    const std::string name =
+      "particles_" + Utilities::int_to_string(counter, 5) + ".h5";
+    return Hdf5PointCloud::write(
+      cloud, directory + "/" + name, name, time, comm);
   }
 
   template class ParticleOutput<2>;

@@ -15,7 +15,9 @@ namespace dealmpm
   std::string
   write_region_output(const SolidRegion<dim> &region,
                       const std::string      &directory,
-                      const std::string      &base)
+                      const std::string      &base,
+                      const OutputFormat      format,
+                      const double            time)
   {
     using Vector_ = LinearAlgebra::distributed::Vector<double>;
     Vector_ u(region.get_displacement()), v(region.get_velocity());
@@ -86,15 +88,20 @@ namespace dealmpm
                                                   region.get_dof_handler(),
                                                   u);
     data_out.build_patches(deformed, region.degree());
-    return write_pieces(data_out, directory, base, region.get_communicator());
+    return write_pieces(
+      data_out, directory, base, region.get_communicator(), format, time);
   }
 
   template std::string
   write_region_output(const SolidRegion<2> &,
                       const std::string &,
-                      const std::string &);
+                      const std::string &,
+                      OutputFormat,
+                      double);
   template std::string
   write_region_output(const SolidRegion<3> &,
                       const std::string &,
-                      const std::string &);
+                      const std::string &,
+                      OutputFormat,
+                      double);
 } // namespace dealmpm

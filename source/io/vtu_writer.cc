@@ -50,39 +50,13 @@ namespace dealmpm
              "\" header_type=\"UInt64\">\n";
     }
 
-    /** Names come from material models, user code among them. */
-    std::string
-    escaped(const std::string &text)
-    {
-      std::string out;
-      for (const char c : text)
-        switch (c)
-          {
-            case '&':
-              out += "&amp;";
-              break;
-            case '<':
-              out += "&lt;";
-              break;
-            case '>':
-              out += "&gt;";
-              break;
-            case '"':
-              out += "&quot;";
-              break;
-            default:
-              out += c;
-          }
-      return out;
-    }
-
     std::string
     array_attributes(const std::string &name,
                      const VtuType      type,
                      const unsigned int n_components)
     {
       return std::string("type=\"") + type_name(type) + "\" Name=\"" +
-             escaped(name) + "\" NumberOfComponents=\"" +
+             xml_escaped(name) + "\" NumberOfComponents=\"" +
              std::to_string(n_components) + "\"";
     }
 
@@ -120,6 +94,32 @@ namespace dealmpm
       return std::vector<To>(values.begin(), values.end());
     }
   } // namespace
+
+  /** Names come from material models, user code among them. */
+  std::string
+  xml_escaped(const std::string &text)
+  {
+    std::string out;
+    for (const char c : text)
+      switch (c)
+        {
+          case '&':
+            out += "&amp;";
+            break;
+          case '<':
+            out += "&lt;";
+            break;
+          case '>':
+            out += "&gt;";
+            break;
+          case '"':
+            out += "&quot;";
+            break;
+          default:
+            out += c;
+        }
+    return out;
+  }
 
   unsigned int
   VtuPointCloud::add_array(const std::string &name,
@@ -227,7 +227,7 @@ namespace dealmpm
            array_attributes("Points", VtuType::Float64, 3) +
            "/>\n    </PPoints>\n";
     for (const std::string &piece : pieces)
-      xml += "    <Piece Source=\"" + escaped(piece) + "\"/>\n";
+      xml += "    <Piece Source=\"" + xml_escaped(piece) + "\"/>\n";
     xml += "  </PUnstructuredGrid>\n</VTKFile>\n";
     OutputFile file(path);
     file.write(xml);

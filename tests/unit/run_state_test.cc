@@ -52,7 +52,7 @@ TEST(RunState, WrittenAndReadBackWhole)
   EXPECT_EQ(read.output.last_time, state.output.last_time);
   EXPECT_EQ(read.output.last_step, state.output.last_step);
   EXPECT_EQ(read.output.particle_series, state.output.particle_series);
-  EXPECT_FALSE(read.output.particle_series == PvdSeries());
+  EXPECT_FALSE(read.output.particle_series == OutputSeries());
   EXPECT_EQ(read.effect_states, state.effect_states);
   const AccuracyReport &a = read.accuracy.report(),
                        &b = state.accuracy.report();

@@ -7,8 +7,9 @@ namespace dealmpm
   /**
    * Whether @p file_name is one of the files a run writes into its output
    * folder: particles_NNNNN.pvtu, particles_NNNNN.R.vtu, particles_NNNNN.csv,
-   * grid_NNNNN.pvtu, grid_NNNNN.R.vtu, statistics.csv, *.pvd, and the
-   * temporary files (".tmp") a killed run may have left of these.
+   * grid_NNNNN.pvtu, grid_NNNNN.R.vtu, the .h5 files of the same names,
+   * statistics.csv, *.pvd, *.xdmf, and the temporary files (".tmp") a killed
+   * run may have left of these.
    */
   bool
   is_run_output_file(const std::string &file_name);

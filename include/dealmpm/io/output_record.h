@@ -1,6 +1,6 @@
 #pragma once
 
-#include <dealmpm/io/pvd_series.h>
+#include <dealmpm/io/output_series.h>
 
 #include <vector>
 
@@ -17,10 +17,10 @@ namespace dealmpm
     unsigned int counter   = 0;
     double       last_time = 0;
     unsigned int last_step = 0;
-    PvdSeries    particle_series;
-    PvdSeries    grid_series;
+    OutputSeries particle_series;
+    OutputSeries grid_series;
     /** One per FEM region. */
-    std::vector<PvdSeries> region_series;
+    std::vector<OutputSeries> region_series;
 
     template <class Archive>
     void

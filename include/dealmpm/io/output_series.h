@@ -7,25 +7,29 @@
 namespace dealmpm
 {
   /**
-   * A .pvd time series (what ParaView opens), rewritten whole at each output
+   * A time series that ParaView opens, rewritten whole at each output
    * through a temporary file renamed over it: whenever a run stops, even by
    * SIGKILL, the series on disk is complete and lists only files that exist
    * (the caller adds an entry only after its files are written).
+   *
+   * The path's extension says the kind: a .pvd file lists each output's
+   * file (an entry is its name), an .xdmf file holds each output's XDMF
+   * Grid element (an entry is the element, which names its HDF5 file).
    */
-  class PvdSeries
+  class OutputSeries
   {
   public:
-    /** Add (time, file) and write the series to @p pvd_path; throws
+    /** Add (time, entry) and write the series to @p path; throws
      * OutputError and forgets the entry when it cannot be written. */
     void
     add_and_write(const double       time,
-                  const std::string &file,
-                  const std::string &pvd_path);
+                  const std::string &entry,
+                  const std::string &path);
 
     /** Write the series as it is (a resumed run's, from its checkpoint);
      * throws OutputError. */
     void
-    write(const std::string &pvd_path) const;
+    write(const std::string &path) const;
 
     bool
     empty() const
@@ -34,7 +38,7 @@ namespace dealmpm
     }
 
     bool
-    operator==(const PvdSeries &other) const
+    operator==(const OutputSeries &other) const
     {
       return entries == other.entries;
     }

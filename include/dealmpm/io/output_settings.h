@@ -10,17 +10,32 @@ namespace dealmpm
 {
   using namespace dealii;
 
+  /** How particle, grid and FEM region files are written. */
+  enum class OutputFormat
+  {
+    vtu, ///< a .vtu piece per rank, a .pvtu per output, .pvd series
+    hdf5 ///< one .h5 per output for all ranks, .xdmf series
+  };
+
   /** The "Output" section: where and how often a run writes, and its
    * progress line. */
   struct OutputSettings
   {
-    std::string directory          = "output";
-    double      interval           = 0.1;
-    bool        write_particles    = true;
-    bool        write_grid         = false;
-    bool        write_particle_csv = false;
-    double      progress_interval  = 5;
-    bool        verbose = true; ///< not from the scene: tests run quietly
+    std::string  directory          = "output";
+    double       interval           = 0.1;
+    bool         write_particles    = true;
+    bool         write_grid         = false;
+    bool         write_particle_csv = false;
+    OutputFormat format             = OutputFormat::vtu;
+    double       progress_interval  = 5;
+    bool         verbose = true; ///< not from the scene: tests run quietly
+
+    /** The series files' extension: ".pvd" or ".xdmf". */
+    std::string
+    series_extension() const
+    {
+      return format == OutputFormat::hdf5 ? ".xdmf" : ".pvd";
+    }
 
     /** Declare the section's entries. */
     static void

@@ -12,7 +12,8 @@ namespace dealmpm
 {
   /**
    * Particle fields as VTU point data, one .vtu per rank and a .pvtu per
-   * output step: id (Int64), body and material (Int32), velocity and
+   * output step, or as HDF5 datasets of all ranks in one file per output
+   * step (Hdf5PointCloud): id (Int64), body and material (Int32), velocity and
    * displacement (3-component vectors, z = 0 in 2D), stress (the full 3 x 3
    * Cauchy tensor, 9 components, with the plane-strain sigma_zz in 2D, so
    * that pressure and von Mises stress computed from it are right), J,
@@ -36,6 +37,15 @@ namespace dealmpm
     write(const std::string &directory,
           const unsigned int counter,
           const MPI_Comm     comm) const;
+
+    /** Write <directory>/particles_NNNNN.h5 with all ranks (collective);
+     * return its XDMF Grid element at @p time. Throws OutputError on every
+     * rank. */
+    std::string
+    write_hdf5(const std::string &directory,
+               const unsigned int counter,
+               const double       time,
+               const MPI_Comm     comm) const;
 
   private:
     VtuPointCloud cloud;

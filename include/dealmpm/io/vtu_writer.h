@@ -6,6 +6,11 @@
 
 namespace dealmpm
 {
+  /** @p text with XML's special characters escaped (array names come
+   * from material models, user code among them). */
+  std::string
+  xml_escaped(const std::string &text);
+
   /** The type of a VTU data array, as VTK names it. */
   enum class VtuType
   {

@@ -1,0 +1,55 @@
+# pvpython: read the .pvd series of one folder and the .xdmf series of
+# another and compare them output by output (see hdf5_output.sh). Prints
+# one line per series; exits 1 on the first difference.
+import sys
+import numpy as np
+from paraview import servermanager
+from paraview.simple import MergeBlocks, PVDReader, XDMFReader
+from vtkmodules.numpy_interface import dataset_adapter as dsa
+
+vtu_folder, h5_folder, names = sys.argv[1], sys.argv[2], sys.argv[3:]
+
+
+def outputs(reader):
+    """Each output step's points and point arrays (numpy)."""
+    merged = MergeBlocks(Input=reader)
+    for t in reader.TimestepValues:
+        merged.UpdatePipeline(t)
+        data = dsa.WrapDataObject(servermanager.Fetch(merged))
+        arrays = {k: np.array(data.PointData[k]) for k in data.PointData.keys()}
+        yield t, np.array(data.Points), arrays
+
+
+def stop(text):
+    print(text)
+    sys.exit(1)
+
+
+for name in names:
+    pvd = PVDReader(FileName="%s/%s.pvd" % (vtu_folder, name))
+    xdmf = XDMFReader(FileNames=["%s/%s.xdmf" % (h5_folder, name)])
+    times_v, times_h = list(pvd.TimestepValues), list(xdmf.TimestepValues)
+    if len(times_v) != len(times_h) or not np.allclose(times_v, times_h, rtol=1e-12):
+        stop("%s: times %s (vtu) and %s (hdf5)" % (name, times_v, times_h))
+    for (t, pv, av), (_, ph, ah) in zip(outputs(pvd), outputs(xdmf)):
+        if pv.shape != ph.shape:
+            stop("%s at t = %g: %s points (vtu), %s (hdf5)" % (name, t, pv.shape, ph.shape))
+        if name == "particles":
+            # The same particles with the same values, bit for bit.
+            ov, oh = np.argsort(av["id"]), np.argsort(ah["id"])
+            if ah["id"].dtype != np.int64:
+                stop("particle ids are %s, not Int64" % ah["id"].dtype)
+            if not np.array_equal(pv[ov], ph[oh]):
+                stop("particles at t = %g: positions differ" % t)
+            for k in av:
+                if k not in ah or not np.array_equal(av[k][ov], ah[k][oh]):
+                    stop("particles at t = %g: array %s differs or is missing" % (t, k))
+        else:
+            # deal.II's .vtu stores Float32; the .h5 doubles.
+            for k in av:
+                if k not in ah:
+                    stop("%s: array %s missing" % (name, k))
+                scale = max(np.abs(av[k]).max(), 1e-300)
+                if np.abs(av[k] - ah[k]).max() > 1e-6 * scale:
+                    stop("%s at t = %g: %s differs by %g" % (name, t, k, np.abs(av[k] - ah[k]).max()))
+    print("%s: %d outputs of %d points equal in vtu and hdf5" % (name, len(times_v), pv.shape[0]))

@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# Output/Format = hdf5: one .h5 file per output for all ranks (no file per
+# rank), and .xdmf series that ParaView opens without a warning. Each scene
+# runs twice on the same ranks, with vtu and with hdf5 output, and
+# ParaView (pvpython) reads both series: every output must hold the same
+# data, the particles entry by entry (matched by id, types kept: ids are
+# Int64), the grid's and the FEM regions' nodal fields to their VTU
+# rounding (deal.II's .vtu stores Float32). Scenes: the colliding disks
+# with the grid on 2 ranks, the dropped cube in 3D on 2 ranks with a rank
+# that holds no particle, the bonded bar (an FEM region) on 3 ranks.
+here=$(cd "$(dirname "$0")" && pwd)
+source "$here/check_lib.sh"
+mpirun=$3 prm=$(dirname "$scene")
+command -v pvpython > /dev/null || { echo "FAIL: pvpython missing (./build.sh test installs python3-paraview)"; exit 1; }
+
+run() { # ranks scene folder format overrides...
+  local ranks=$1 file=$2 out=$3 format=$4; shift 4
+  timeout 600 "$mpirun" "${mpirun_flags[@]}" -np "$ranks" "$dealmpm" "$file" \
+    -s "Output/Directory=$out" -s "Output/Format=$format" -s "Output/Progress interval=0" \
+    "$@" > "$out.log" 2>&1 || fail "$out: exit code $? ($(tail -1 "$out.log"))"
+}
+
+compare() { # folder_vtu folder_hdf5 series...
+  local vtu=$1 h5=$2; shift 2
+  for s in "$@"; do
+    [ -s "$h5/$s.xdmf" ] || fail "$h5/$s.xdmf missing"
+  done
+  if ls "$h5"/*.vtu "$h5"/*.pvtu > /dev/null 2>&1; then fail "$h5 has .vtu files"; fi
+  local n_outputs; n_outputs=$(grep -c DataSet "$vtu/particles.pvd")
+  [ "$(ls "$h5"/particles_*.h5 | wc -l)" = "$n_outputs" ] || fail "$h5: not one particles .h5 per output"
+  timeout 300 pvpython "$here/hdf5_compare.py" "$vtu" "$h5" "$@" > "$h5.compare" 2>&1 \
+    || fail "$h5: $(cat "$h5.compare")"
+  grep -qi "warning\|error" "$h5.compare" && fail "$h5: ParaView says: $(grep -i 'warning\|error' "$h5.compare" | head -3)"
+  cat "$h5.compare"
+}
+
+short=(-s "Time/End time=0.02" -s "Output/Interval=0.01")
+for format in vtu hdf5; do
+  run 2 "$prm/colliding_disks.prm" "disks_$format" "$format" "${short[@]}" -s "Output/Write grid=true"
+  run 2 "$prm/cube_drop_3d.prm" "cube_$format" "$format" "${short[@]}" -s "Load balance/Enabled=false"
+  run 3 "$prm/bonded_bar.prm" "bar_$format" "$format" "${short[@]}"
+done
+grep -q "2 rank(s) (0 to" cube_hdf5.log || fail "expected a rank without particles: $(grep 'rank(s)' cube_hdf5.log)"
+compare disks_vtu disks_hdf5 particles grid
+compare cube_vtu cube_hdf5 particles
+compare bar_vtu bar_hdf5 particles fem_region_1
+
+# A vtu run in the hdf5 run's folder removes its files and series.
+run 1 "$prm/colliding_disks.prm" disks_hdf5 vtu -s "Time/End time=0.01" -s "Output/Interval=0.01"
+if ls disks_hdf5/*.h5 disks_hdf5/*.xdmf > /dev/null 2>&1; then fail "an earlier run's .h5/.xdmf files stayed"; fi
+finish "HDF5 output"
