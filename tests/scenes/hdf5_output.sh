@@ -7,7 +7,8 @@
 # Int64), the grid's and the FEM regions' nodal fields to their VTU
 # rounding (deal.II's .vtu stores Float32). Scenes: the colliding disks
 # with the grid on 2 ranks, the dropped cube in 3D on 2 ranks with a rank
-# that holds no particle, the bonded bar (an FEM region) on 3 ranks.
+# that holds no particle, the bonded bar (an FEM region) on 3 ranks; and
+# a run resumed from a checkpoint.
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/check_lib.sh"
 mpirun=$3 prm=$(dirname "$scene")
@@ -44,6 +45,17 @@ grep -q "2 rank(s) (0 to" cube_hdf5.log || fail "expected a rank without particl
 compare disks_vtu disks_hdf5 particles grid
 compare cube_vtu cube_hdf5 particles
 compare bar_vtu bar_hdf5 particles fem_region_1
+
+# A resumed run continues the .xdmf series: from a checkpoint before the
+# last output, it removes what the interrupted run wrote after it and ends
+# with the uninterrupted run's series.
+resume=(-s "Time/End time=0.05" -s "Output/Interval=0.01" -s "Checkpoint/Steps between checkpoints=2")
+run 1 "$prm/colliding_disks.prm" resumed hdf5 "${resume[@]}"
+cp resumed/particles.xdmf uninterrupted.xdmf
+run 1 "$prm/colliding_disks.prm" resumed hdf5 "${resume[@]}" --resume
+grep -q "removed [1-9][0-9]* files the interrupted run wrote" resumed.log || fail "resume removed nothing: $(grep 'output in' resumed.log)"
+cmp -s uninterrupted.xdmf resumed/particles.xdmf || fail "the resumed run's particles.xdmf differs"
+[ "$(ls resumed/particles_*.h5 | wc -l)" = "$(grep -c '<Time ' uninterrupted.xdmf)" ] || fail "resumed: not one .h5 per output"
 
 # A vtu run in the hdf5 run's folder removes its files and series.
 run 1 "$prm/colliding_disks.prm" disks_hdf5 vtu -s "Time/End time=0.01" -s "Output/Interval=0.01"
