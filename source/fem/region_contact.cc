@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <dealmpm/fem/region_contact.h>
+#include <dealmpm/grid/nodal_exchange.h>
 #include <dealmpm/transfer/stencil_order.h>
 
 #include <algorithm>
@@ -186,19 +187,11 @@ namespace dealmpm
               position[d].local_element(i) += w * m * points.value(p.point, d);
             }
         }
-    mass.compress(VectorOperation::add);
-    mu.compress(VectorOperation::add);
+    NodalExchange sums;
+    sums.add(mass).add(mu).add(momentum).add(normal).add(position);
+    sums.sum_ghosts_into_owners();
     // The gaps are measured from the particles, which reach ghost nodes.
-    mass.update_ghost_values();
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        momentum[d].compress(VectorOperation::add);
-        for (NodalVector *v : {&normal[d], &position[d]})
-          {
-            v->compress(VectorOperation::add);
-            v->update_ghost_values();
-          }
-      }
+    NodalExchange().add(mass).add(normal).add(position).copy_owners_to_ghosts();
   }
 
   template <int dim>
@@ -285,14 +278,10 @@ namespace dealmpm
     for (unsigned int b = 0; b < mpm_fields.size(); ++b)
       for (unsigned int i = 0; i < n_owned; ++i)
         correct(*mpm_fields[b], i, gap[b].local_element(i), mass_threshold, dt);
-    for (unsigned int d = 0; d < dim; ++d)
-      for (NodalFields<dim> *fields : mpm_fields)
-        {
-          fields->velocity[d].update_ghost_values();
-          fields->velocity_increment[d].update_ghost_values();
-        }
-    for (unsigned int d = 0; d < dim; ++d)
-      change[d].update_ghost_values();
+    NodalExchange ghosts;
+    for (NodalFields<dim> *fields : mpm_fields)
+      ghosts.add(fields->velocity).add(fields->velocity_increment);
+    ghosts.add(change).copy_owners_to_ghosts();
   }
 
   template <int dim>

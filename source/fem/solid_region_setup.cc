@@ -40,8 +40,12 @@ namespace dealmpm
     const IndexSet owned = dof_handler.locally_owned_dofs();
     const IndexSet relevant =
       DoFTools::extract_locally_relevant_dofs(dof_handler);
+    // One partitioner for all: each of its own would cost a consensus
+    // among the ranks to set up.
+    const auto partitioner =
+      std::make_shared<Utilities::MPI::Partitioner>(owned, relevant, comm);
     for (auto *v : {&displacement, &velocity, &mass, &force, &traction_force})
-      v->reinit(owned, relevant, comm);
+      v->reinit(partitioner);
   }
 
   template <int dim>

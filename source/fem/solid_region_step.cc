@@ -4,6 +4,7 @@
 #include <dealmpm/base/errors.h>
 #include <dealmpm/base/smallest_stretch.h>
 #include <dealmpm/fem/solid_region.h>
+#include <dealmpm/grid/nodal_exchange.h>
 
 #include <algorithm>
 #include <limits>
@@ -86,8 +87,7 @@ namespace dealmpm
   void
   SolidRegion<dim>::internal_force(const double dt)
   {
-    displacement.update_ghost_values();
-    velocity.update_ghost_values();
+    NodalExchange().add(displacement).add(velocity).copy_owners_to_ghosts();
     force                  = 0;
     const ReferenceData &r = reference;
     std::vector<double>  local(r.n_dofs);

@@ -29,6 +29,15 @@ namespace dealmpm
       "fem_region_N.xdmf) that ParaView opens with its XDMF reader; for "
       "runs on many ranks, where a file per rank and output would be "
       "hundreds of thousands of files.");
+    prm.declare_entry(
+      "Compression",
+      "none",
+      Patterns::Selection("none|zlib"),
+      "Particle .vtu files (Format = vtu): none, raw binary, the fastest to "
+      "write; zlib, smaller files at the cost of compressing them (the 2D "
+      "column of 1.2 M particles: 4.8 times smaller, written in 1.9 times "
+      "the time; fields that vary more compress less). deal.II always "
+      "compresses the grid's and FEM regions' .vtu files.");
     prm.declare_entry("Write particles",
                       "true",
                       Patterns::Bool(),
@@ -63,6 +72,7 @@ namespace dealmpm
     s.interval = reader.get_nonnegative("Interval");
     s.format =
       reader.get("Format") == "hdf5" ? OutputFormat::hdf5 : OutputFormat::vtu;
+    s.compress_particles = reader.get("Compression") == "zlib";
     s.write_particles    = reader.get_bool("Write particles");
     s.write_grid         = reader.get_bool("Write grid");
     s.write_particle_csv = reader.get_bool("Particle CSV");

@@ -107,7 +107,10 @@ namespace dealmpm
           files.particles =
             format == OutputFormat::hdf5 ?
               particle_output.write_hdf5(dir, counter, time, comm) :
-              particle_output.write(dir, counter, comm);
+              particle_output.write(dir,
+                                    counter,
+                                    comm,
+                                    settings.compress_particles);
         });
       if (settings.write_grid)
         attempt([&] {

@@ -147,7 +147,8 @@ namespace dealmpm
   std::string
   ParticleOutput<dim>::write(const std::string &directory,
                              const unsigned int counter,
-                             const MPI_Comm     comm) const
+                             const MPI_Comm     comm,
+                             const bool         zlib) const
   {
     const std::string base =
       "particles_" + Utilities::int_to_string(counter, 5);
@@ -155,7 +156,8 @@ namespace dealmpm
       return base + "." + Utilities::int_to_string(rank) + ".vtu";
     };
     cloud.write_vtu(directory + "/" +
-                    piece(Utilities::MPI::this_mpi_process(comm)));
+                      piece(Utilities::MPI::this_mpi_process(comm)),
+                    zlib);
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       {
         std::vector<std::string> pieces;

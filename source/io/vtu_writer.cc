@@ -1,8 +1,11 @@
+#include <dealmpm/base/errors.h>
 #include <dealmpm/io/output_file.h>
 #include <dealmpm/io/vtu_writer.h>
 
+#include <cstring>
 #include <numeric>
 #include <stdexcept>
+#include <zlib.h>
 
 namespace dealmpm
 {
@@ -40,14 +43,15 @@ namespace dealmpm
     /** The header both file kinds share; the byte order is the machine's,
      * since the data are its memory as is. */
     std::string
-    file_header(const char *type)
+    file_header(const char *type, const bool zlib = false)
     {
       const std::uint16_t one           = 1;
       const bool          little_endian = *reinterpret_cast<const char *>(&one);
       return std::string("<?xml version=\"1.0\"?>\n<VTKFile type=\"") + type +
              "\" version=\"1.0\" byte_order=\"" +
              (little_endian ? "LittleEndian" : "BigEndian") +
-             "\" header_type=\"UInt64\">\n";
+             "\" header_type=\"UInt64\"" +
+             (zlib ? " compressor=\"vtkZLibDataCompressor\"" : "") + ">\n";
     }
 
     std::string
@@ -60,32 +64,56 @@ namespace dealmpm
              std::to_string(n_components) + "\"";
     }
 
-    /** Appended blocks: a UInt64 byte count, then the bytes. */
-    class AppendedBlocks
+    /** The appended blocks' offset attributes, from each block's size in
+     * the file (its header included). */
+    class AppendedOffsets
     {
     public:
-      /** Reserve a block and return the offset attribute for it. */
+      /** Reserve a block of @p n_bytes in the file; returns its
+       * attribute. */
       std::string
       add(const std::size_t n_bytes)
       {
         const std::string attribute =
           " format=\"appended\" offset=\"" + std::to_string(offset) + "\"";
-        offset += sizeof(std::uint64_t) + n_bytes;
+        offset += n_bytes;
         return attribute;
-      }
-
-      template <typename T>
-      static void
-      write(OutputFile &file, const std::vector<T> &values)
-      {
-        const std::uint64_t n_bytes = values.size() * sizeof(T);
-        file.write(&n_bytes, sizeof(n_bytes));
-        file.write(values.data(), n_bytes);
       }
 
     private:
       std::size_t offset = 0;
     };
+
+    /** A raw block: a UInt64 byte count, then the bytes. */
+    void
+    write_raw(OutputFile &file, const void *data, const std::uint64_t n_bytes)
+    {
+      file.write(&n_bytes, sizeof(n_bytes));
+      file.write(data, n_bytes);
+    }
+
+    /** A zlib block as VTK reads it: the UInt64 header (number of blocks,
+     * their uncompressed size, the last one's, each one's compressed size)
+     * and the compressed bytes; one block (none for no bytes). */
+    std::string
+    compressed_block(const void *data, const std::uint64_t n_bytes)
+    {
+      if (n_bytes == 0)
+        return std::string(3 * sizeof(std::uint64_t), '\0');
+      uLongf      size = compressBound(n_bytes);
+      std::string block(4 * sizeof(std::uint64_t) + size, '\0');
+      if (compress2(reinterpret_cast<Bytef *>(
+                      &block[4 * sizeof(std::uint64_t)]),
+                    &size,
+                    static_cast<const Bytef *>(data),
+                    n_bytes,
+                    Z_BEST_SPEED) != Z_OK)
+        throw OutputError("zlib could not compress a particle array");
+      const std::uint64_t header[4] = {1, n_bytes, n_bytes, size};
+      std::memcpy(&block[0], header, sizeof(header));
+      block.resize(sizeof(header) + size);
+      return block;
+    }
 
     template <typename To, typename From>
     std::vector<To>
@@ -147,8 +175,42 @@ namespace dealmpm
         }
   }
 
+  template <typename Block>
   void
-  VtuPointCloud::write_vtu(const std::string &path) const
+  VtuPointCloud::for_each_block(const Block &block) const
+  {
+    const auto bytes = [&](const auto &values) {
+      block(values.data(), values.size() * sizeof(values[0]));
+    };
+    for (const VtuArray &a : arrays)
+      switch (a.type)
+        {
+          case VtuType::Int32:
+            bytes(converted<std::int32_t>(a.integers));
+            break;
+          case VtuType::Int64:
+            bytes(a.integers);
+            break;
+          case VtuType::Float32:
+            bytes(converted<float>(a.reals));
+            break;
+          case VtuType::Float64:
+            bytes(a.reals);
+            break;
+        }
+    bytes(points);
+    // Cell i is the vertex of point i: connectivity i, end offset i + 1,
+    // type VTK_VERTEX (1).
+    std::vector<std::int64_t> indices(n_points());
+    std::iota(indices.begin(), indices.end(), std::int64_t(0));
+    bytes(indices);
+    std::iota(indices.begin(), indices.end(), std::int64_t(1));
+    bytes(indices);
+    bytes(std::vector<std::uint8_t>(n_points(), 1));
+  }
+
+  void
+  VtuPointCloud::write_vtu(const std::string &path, const bool zlib) const
   {
     const std::size_t n = n_points();
     for (const VtuArray &a : arrays)
@@ -161,57 +223,67 @@ namespace dealmpm
                                  "component");
       }
 
-    AppendedBlocks blocks;
-    std::string    xml = file_header("UnstructuredGrid");
-    xml += "  <UnstructuredGrid>\n    <Piece NumberOfPoints=\"" +
-           std::to_string(n) + "\" NumberOfCells=\"" + std::to_string(n) +
-           "\">\n      <PointData>\n";
-    for (const VtuArray &a : arrays)
-      xml += "        <DataArray " +
-             array_attributes(a.name, a.type, a.n_components) +
-             blocks.add(n * a.n_components * type_size(a.type)) + "/>\n";
-    xml += "      </PointData>\n      <Points>\n        <DataArray " +
-           array_attributes("Points", VtuType::Float64, 3) +
-           blocks.add(3 * n * sizeof(double)) +
-           "/>\n      </Points>\n      <Cells>\n";
-    xml += "        <DataArray type=\"Int64\" Name=\"connectivity\"" +
-           blocks.add(n * sizeof(std::int64_t)) + "/>\n";
-    xml += "        <DataArray type=\"Int64\" Name=\"offsets\"" +
-           blocks.add(n * sizeof(std::int64_t)) + "/>\n";
-    xml += "        <DataArray type=\"UInt8\" Name=\"types\"" +
-           blocks.add(n * sizeof(std::uint8_t)) + "/>\n";
-    xml += "      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n"
-           "  <AppendedData encoding=\"raw\">\n_";
+    // Each block's size in the file: raw, known from the counts; zlib,
+    // known once compressed (the compressed blocks are kept until written).
+    std::vector<std::string> compressed;
+    std::vector<std::size_t> file_bytes;
+    if (zlib)
+      for_each_block([&](const void *data, const std::size_t n_bytes) {
+        compressed.push_back(compressed_block(data, n_bytes));
+        file_bytes.push_back(compressed.back().size());
+      });
+    else
+      {
+        for (const VtuArray &a : arrays)
+          file_bytes.push_back(n * a.n_components * type_size(a.type));
+        for (const std::size_t per_point : {3 * sizeof(double),
+                                            sizeof(std::int64_t),
+                                            sizeof(std::int64_t),
+                                            sizeof(std::uint8_t)})
+          file_bytes.push_back(n * per_point);
+        for (std::size_t &b : file_bytes)
+          b += sizeof(std::uint64_t);
+      }
 
     OutputFile file(path);
-    file.write(xml);
-    for (const VtuArray &a : arrays)
-      switch (a.type)
-        {
-          case VtuType::Int32:
-            AppendedBlocks::write(file, converted<std::int32_t>(a.integers));
-            break;
-          case VtuType::Int64:
-            AppendedBlocks::write(file, a.integers);
-            break;
-          case VtuType::Float32:
-            AppendedBlocks::write(file, converted<float>(a.reals));
-            break;
-          case VtuType::Float64:
-            AppendedBlocks::write(file, a.reals);
-            break;
-        }
-    AppendedBlocks::write(file, points);
-    // Cell i is the vertex of point i: connectivity i, end offset i + 1,
-    // type VTK_VERTEX (1).
-    std::vector<std::int64_t> indices(n);
-    std::iota(indices.begin(), indices.end(), std::int64_t(0));
-    AppendedBlocks::write(file, indices);
-    std::iota(indices.begin(), indices.end(), std::int64_t(1));
-    AppendedBlocks::write(file, indices);
-    AppendedBlocks::write(file, std::vector<std::uint8_t>(n, 1));
+    file.write(header_xml(file_bytes, zlib));
+    if (zlib)
+      for (const std::string &block : compressed)
+        file.write(block);
+    else
+      for_each_block([&](const void *data, const std::size_t n_bytes) {
+        write_raw(file, data, n_bytes);
+      });
     file.write("\n  </AppendedData>\n</VTKFile>\n");
     file.commit();
+  }
+
+  std::string
+  VtuPointCloud::header_xml(const std::vector<std::size_t> &file_bytes,
+                            const bool                      zlib) const
+  {
+    const std::string n    = std::to_string(n_points());
+    std::size_t       next = 0;
+    AppendedOffsets   blocks;
+    const auto  offset = [&] { return blocks.add(file_bytes.at(next++)); };
+    std::string xml    = file_header("UnstructuredGrid", zlib);
+    xml += "  <UnstructuredGrid>\n    <Piece NumberOfPoints=\"" + n +
+           "\" NumberOfCells=\"" + n + "\">\n      <PointData>\n";
+    for (const VtuArray &a : arrays)
+      xml += "        <DataArray " +
+             array_attributes(a.name, a.type, a.n_components) + offset() +
+             "/>\n";
+    xml += "      </PointData>\n      <Points>\n        <DataArray " +
+           array_attributes("Points", VtuType::Float64, 3) + offset() +
+           "/>\n      </Points>\n      <Cells>\n";
+    xml += "        <DataArray type=\"Int64\" Name=\"connectivity\"" +
+           offset() + "/>\n";
+    xml +=
+      "        <DataArray type=\"Int64\" Name=\"offsets\"" + offset() + "/>\n";
+    xml +=
+      "        <DataArray type=\"UInt8\" Name=\"types\"" + offset() + "/>\n";
+    return xml + "      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n"
+                 "  <AppendedData encoding=\"raw\">\n_";
   }
 
   void

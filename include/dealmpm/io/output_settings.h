@@ -27,6 +27,7 @@ namespace dealmpm
     bool         write_grid         = false;
     bool         write_particle_csv = false;
     OutputFormat format             = OutputFormat::vtu;
+    bool         compress_particles = false; ///< zlib in particle .vtu files
     double       progress_interval  = 5;
     bool         verbose = true; ///< not from the scene: tests run quietly
 

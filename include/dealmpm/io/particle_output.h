@@ -31,12 +31,14 @@ namespace dealmpm
                   const std::vector<std::unique_ptr<Material<dim>>> &materials);
 
     /** Write <directory>/particles_NNNNN.{rank}.vtu and (rank 0)
-     * particles_NNNNN.pvtu; return the .pvtu file name (relative to
-     * directory). Throws OutputError on this rank's failure only. */
+     * particles_NNNNN.pvtu, the arrays compressed if @p zlib; return the
+     * .pvtu file name (relative to directory). Throws OutputError on this
+     * rank's failure only. */
     std::string
     write(const std::string &directory,
           const unsigned int counter,
-          const MPI_Comm     comm) const;
+          const MPI_Comm     comm,
+          const bool         zlib = false) const;
 
     /** Write <directory>/particles_NNNNN.h5 with all ranks (collective);
      * return its XDMF Grid element at @p time. Throws OutputError on every

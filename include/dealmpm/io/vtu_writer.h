@@ -40,8 +40,9 @@ namespace dealmpm
    * writer stores every field as Float32, which cannot tell particle ids
    * past 2^24 apart. Points are Float64 (x, y, z; z = 0 in 2D), each point
    * is a VTK_VERTEX cell so that ParaView draws it, and the point data keep
-   * their types. The data are binary in one raw appended block with UInt64
-   * byte counts, array by array (no per-value formatting). A piece without
+   * their types. The data are binary in one appended block with UInt64
+   * byte counts, array by array (no per-value formatting), raw or, on
+   * request, zlib-compressed. A piece without
    * points declares the same arrays with their component counts, so that
    * readers accept it. Files are written through OutputFile (atomic; errors
    * throw OutputError).
@@ -65,8 +66,10 @@ namespace dealmpm
       return points.size() / 3;
     }
 
+    /** Write this piece to @p path, each array compressed with zlib if
+     * @p zlib (VTK's vtkZLibDataCompressor, one block per array). */
     void
-    write_vtu(const std::string &path) const;
+    write_vtu(const std::string &path, const bool zlib = false) const;
 
     /** The record that lists @p pieces (names relative to it) with this
      * cloud's arrays. */
@@ -78,5 +81,18 @@ namespace dealmpm
     std::vector<double> points;
 
     std::vector<VtuArray> arrays;
+
+  private:
+    /** Call @p block(data, n_bytes) for each appended block in file order:
+     * the arrays, the points, the cells' connectivity, offsets and
+     * types. */
+    template <typename Block>
+    void
+    for_each_block(const Block &block) const;
+
+    /** The file up to its appended data, from the blocks' sizes in it. */
+    std::string
+    header_xml(const std::vector<std::size_t> &file_bytes,
+               const bool                      zlib) const;
   };
 } // namespace dealmpm

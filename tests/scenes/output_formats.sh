@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# Output/Compression = zlib: particle .vtu files that ParaView reads as the
+# same data as the raw ones, and smaller.
 # Output/Format = hdf5: one .h5 file per output for all ranks (no file per
 # rank), and .xdmf series that ParaView opens without a warning. Each scene
 # runs twice on the same ranks, with vtu and with hdf5 output, and
@@ -29,7 +31,7 @@ compare() { # folder_vtu folder_hdf5 series...
   if ls "$h5"/*.vtu "$h5"/*.pvtu > /dev/null 2>&1; then fail "$h5 has .vtu files"; fi
   local n_outputs; n_outputs=$(grep -c DataSet "$vtu/particles.pvd")
   [ "$(ls "$h5"/particles_*.h5 | wc -l)" = "$n_outputs" ] || fail "$h5: not one particles .h5 per output"
-  timeout 300 pvpython "$here/hdf5_compare.py" "$vtu" "$h5" "$@" > "$h5.compare" 2>&1 \
+  timeout 300 pvpython "$here/same_series.py" "$vtu" "$h5" "$@" > "$h5.compare" 2>&1 \
     || fail "$h5: $(cat "$h5.compare")"
   grep -qi "warning\|error" "$h5.compare" && fail "$h5: ParaView says: $(grep -i 'warning\|error' "$h5.compare" | head -3)"
   cat "$h5.compare"
@@ -46,6 +48,14 @@ compare disks_vtu disks_hdf5 particles grid
 compare cube_vtu cube_hdf5 particles
 compare bar_vtu bar_hdf5 particles fem_region_1
 
+run 2 "$prm/colliding_disks.prm" disks_zlib vtu "${short[@]}" -s "Output/Compression=zlib"
+timeout 300 pvpython "$here/same_series.py" disks_vtu disks_zlib particles > zlib.compare 2>&1 \
+  || fail "zlib: $(cat zlib.compare)"
+cat zlib.compare
+grep -q 'compressor="vtkZLibDataCompressor"' disks_zlib/particles_00002.1.vtu || fail "zlib: not compressed"
+raw=$(du -b disks_vtu/particles_00002.1.vtu | cut -f1) packed=$(du -b disks_zlib/particles_00002.1.vtu | cut -f1)
+[ "$packed" -lt "$raw" ] || fail "zlib: $packed bytes, not fewer than the raw $raw"
+
 # A resumed run continues the .xdmf series: from a checkpoint before the
 # last output, it removes what the interrupted run wrote after it and ends
 # with the uninterrupted run's series.
@@ -60,4 +70,4 @@ cmp -s uninterrupted.xdmf resumed/particles.xdmf || fail "the resumed run's part
 # A vtu run in the hdf5 run's folder removes its files and series.
 run 1 "$prm/colliding_disks.prm" disks_hdf5 vtu -s "Time/End time=0.01" -s "Output/Interval=0.01"
 if ls disks_hdf5/*.h5 disks_hdf5/*.xdmf > /dev/null 2>&1; then fail "an earlier run's .h5/.xdmf files stayed"; fi
-finish "HDF5 output"
+finish "output format"
