@@ -42,34 +42,27 @@ namespace dealmpm
     {
       std::vector<MPI_Request> requests;
       requests.reserve(recv_targets.size() + send_targets.size());
-      std::size_t offset = 0;
-      for (const auto &[rank, count] : recv_targets)
-        {
-          requests.emplace_back();
-          const int ierr = MPI_Irecv(received.data() + offset,
-                                     n_vectors * count,
-                                     MPI_DOUBLE,
-                                     rank,
-                                     tag,
-                                     comm,
-                                     &requests.back());
-          AssertThrowMPI(ierr);
-          offset += std::size_t(n_vectors) * count;
-        }
-      offset = 0;
-      for (const auto &[rank, count] : send_targets)
-        {
-          requests.emplace_back();
-          const int ierr = MPI_Isend(sent.data() + offset,
-                                     n_vectors * count,
-                                     MPI_DOUBLE,
-                                     rank,
-                                     tag,
-                                     comm,
-                                     &requests.back());
-          AssertThrowMPI(ierr);
-          offset += std::size_t(n_vectors) * count;
-        }
+      // Post one message per target, each its block of @p buffer.
+      const auto post = [&](const auto &targets, double *buffer, auto start) {
+        for (const auto &[rank, count] : targets)
+          {
+            requests.emplace_back();
+            const int ierr =
+              start(buffer, n_vectors * count, rank, &requests.back());
+            AssertThrowMPI(ierr);
+            buffer += std::size_t(n_vectors) * count;
+          }
+      };
+      post(recv_targets,
+           received.data(),
+           [&](double *data, int n, int rank, MPI_Request *request) {
+             return MPI_Irecv(data, n, MPI_DOUBLE, rank, tag, comm, request);
+           });
+      post(send_targets,
+           sent.data(),
+           [&](double *data, int n, int rank, MPI_Request *request) {
+             return MPI_Isend(data, n, MPI_DOUBLE, rank, tag, comm, request);
+           });
       const int ierr =
         MPI_Waitall(requests.size(), requests.data(), MPI_STATUSES_IGNORE);
       AssertThrowMPI(ierr);

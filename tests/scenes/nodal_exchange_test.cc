@@ -59,36 +59,39 @@ namespace
   }
 } // namespace
 
+namespace
+{
+  /** What @p ours does to three vectors at once must equal what
+   * @p theirs (deal.II) does to each. */
+  template <typename Ours, typename Theirs>
+  void
+  expect_as_deal_ii(const Ours &ours, const Theirs &theirs)
+  {
+    const auto               simulation = grid_of_several_ranks();
+    std::vector<NodalVector> expected   = filled(simulation->background_grid());
+    std::vector<NodalVector> actual     = filled(simulation->background_grid());
+    NodalExchange            exchange;
+    for (NodalVector &v : actual)
+      exchange.add(v);
+    ours(exchange);
+    for (unsigned int k = 0; k < expected.size(); ++k)
+      {
+        theirs(expected[k]);
+        expect_equal(expected[k], actual[k]);
+      }
+  }
+} // namespace
+
 TEST(NodalExchange, SumsGhostsIntoOwnersAsCompressDoes)
 {
-  const auto               simulation = grid_of_several_ranks();
-  std::vector<NodalVector> expected   = filled(simulation->background_grid());
-  std::vector<NodalVector> actual     = filled(simulation->background_grid());
-  NodalExchange            exchange;
-  for (NodalVector &v : actual)
-    exchange.add(v);
-  exchange.sum_ghosts_into_owners();
-  for (unsigned int k = 0; k < expected.size(); ++k)
-    {
-      expected[k].compress(VectorOperation::add);
-      expect_equal(expected[k], actual[k]);
-    }
+  expect_as_deal_ii([](NodalExchange &e) { e.sum_ghosts_into_owners(); },
+                    [](NodalVector &v) { v.compress(VectorOperation::add); });
 }
 
 TEST(NodalExchange, CopiesOwnersToGhostsAsUpdateGhostValuesDoes)
 {
-  const auto               simulation = grid_of_several_ranks();
-  std::vector<NodalVector> expected   = filled(simulation->background_grid());
-  std::vector<NodalVector> actual     = filled(simulation->background_grid());
-  NodalExchange            exchange;
-  for (NodalVector &v : actual)
-    exchange.add(v);
-  exchange.copy_owners_to_ghosts();
-  for (unsigned int k = 0; k < expected.size(); ++k)
-    {
-      expected[k].update_ghost_values();
-      expect_equal(expected[k], actual[k]);
-    }
+  expect_as_deal_ii([](NodalExchange &e) { e.copy_owners_to_ghosts(); },
+                    [](NodalVector &v) { v.update_ghost_values(); });
 }
 
 TEST(NodalExchange, RefusesVectorsOfAnotherGrid)

@@ -8,8 +8,9 @@
 # data, the particles entry by entry (matched by id, types kept: ids are
 # Int64), the grid's and the FEM regions' nodal fields to their VTU
 # rounding (deal.II's .vtu stores Float32). Scenes: the colliding disks
-# with the grid on 2 ranks, the dropped cube in 3D on 2 ranks with a rank
-# that holds no particle, the bonded bar (an FEM region) on 3 ranks; and
+# with the grid adapted every step on 2 ranks, the dropped cube in 3D on 2
+# ranks with a rank that holds no particle, the bonded bar (an FEM region)
+# on 3 ranks; and
 # a run resumed from a checkpoint.
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/check_lib.sh"
@@ -38,8 +39,9 @@ compare() { # folder_vtu folder_hdf5 series...
 }
 
 short=(-s "Time/End time=0.02" -s "Output/Interval=0.01")
+adaptive=(-s "Adaptivity/Criteria=particles" -s "Adaptivity/Steps between adaptations=1")
 for format in vtu hdf5; do
-  run 2 "$prm/colliding_disks.prm" "disks_$format" "$format" "${short[@]}" -s "Output/Write grid=true"
+  run 2 "$prm/colliding_disks.prm" "disks_$format" "$format" "${short[@]}" "${adaptive[@]}" -s "Output/Write grid=true"
   run 2 "$prm/cube_drop_3d.prm" "cube_$format" "$format" "${short[@]}" -s "Load balance/Enabled=false"
   run 3 "$prm/bonded_bar.prm" "bar_$format" "$format" "${short[@]}"
 done
@@ -48,7 +50,7 @@ compare disks_vtu disks_hdf5 particles grid
 compare cube_vtu cube_hdf5 particles
 compare bar_vtu bar_hdf5 particles fem_region_1
 
-run 2 "$prm/colliding_disks.prm" disks_zlib vtu "${short[@]}" -s "Output/Compression=zlib"
+run 2 "$prm/colliding_disks.prm" disks_zlib vtu "${short[@]}" "${adaptive[@]}" -s "Output/Compression=zlib"
 timeout 300 pvpython "$here/same_series.py" disks_vtu disks_zlib particles > zlib.compare 2>&1 \
   || fail "zlib: $(cat zlib.compare)"
 cat zlib.compare
