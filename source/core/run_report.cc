@@ -32,6 +32,28 @@ namespace dealmpm
     return line.str();
   }
 
+  namespace
+  {
+    /** What an output cost: the timer's "output" section per call, on the
+     * slowest rank. */
+    void
+    print_output_time(ConditionalOStream &pcout,
+                      const TimerOutput  &timer,
+                      const MPI_Comm      comm)
+    {
+      const auto calls = timer.get_summary_data(TimerOutput::n_calls);
+      const auto found = calls.find("output");
+      if (found == calls.end() || found->second == 0)
+        return;
+      const double seconds = Utilities::MPI::max(
+        timer.get_summary_data(TimerOutput::total_wall_time).at("output"),
+        comm);
+      pcout << "dealmpm: " << found->second << " output(s), "
+            << std::setprecision(3) << seconds / found->second
+            << " s each (slowest rank)" << std::endl;
+    }
+  } // namespace
+
   void
   print_run_summary(ConditionalOStream      &pcout,
                     TimerOutput             &timer,
@@ -45,6 +67,7 @@ namespace dealmpm
     else
       timer.print_wall_time_statistics(comm);
     pcout << "dealmpm: " << loop.accuracy.report() << std::endl;
+    print_output_time(pcout, timer, comm);
     const double rate =
       loop.stepping_time > 0 ? loop.particle_steps / loop.stepping_time : 0;
     pcout << "dealmpm: " << loop.step << " steps to t = " << loop.time << ", "

@@ -146,6 +146,31 @@ namespace dealmpm
     , comm(comm)
   {}
 
+  namespace
+  {
+    /** A resumed run goes on with its series, so it must write them as the
+     * saved run did: throws InputError naming @p scene_file's entry when
+     * the @p resumed record's series are of the other format. */
+    void
+    check_resumed_format(const OutputRecord   &resumed,
+                         const OutputSettings &settings,
+                         const std::string    &scene_file)
+    {
+      std::vector<const OutputSeries *> series = {&resumed.particle_series,
+                                                  &resumed.grid_series};
+      for (const OutputSeries &s : resumed.region_series)
+        series.push_back(&s);
+      const bool hdf5 = settings.format == OutputFormat::hdf5;
+      for (const OutputSeries *s : series)
+        if (!s->empty() && s->holds_xdmf() != hdf5)
+          throw InputError(
+            scene_file + ": entry 'Output/Format' = '" +
+            (hdf5 ? "hdf5" : "vtu") + "': the saved run wrote " +
+            (hdf5 ? "vtu (.pvd series)" : "hdf5 (.xdmf series)") +
+            "; resume it with Format = " + (hdf5 ? "vtu" : "hdf5"));
+    }
+  } // namespace
+
   template <int dim>
   unsigned int
   OutputWriter<dim>::open(const std::string  &scene_file,
@@ -157,6 +182,8 @@ namespace dealmpm
     // throws alone would leave the others waiting. The broadcast also keeps
     // the others from writing before rank 0 has removed the earlier run's
     // files.
+    if (resumed != nullptr)
+      check_resumed_format(*resumed, settings, scene_file);
     const std::string &dir = settings.directory;
     std::string        problem, output_problem;
     unsigned int       n_removed = 0;

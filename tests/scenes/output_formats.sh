@@ -45,6 +45,11 @@ for format in vtu hdf5; do
   run 2 "$prm/cube_drop_3d.prm" "cube_$format" "$format" "${short[@]}" -s "Load balance/Enabled=false"
   run 3 "$prm/bonded_bar.prm" "bar_$format" "$format" "${short[@]}"
 done
+# The time an output takes, in the run's summary.
+for f in vtu hdf5; do
+  grep -Eq "^dealmpm: 3 output\(s\), [0-9.e+-]+ s each \(slowest rank\)" "disks_$f.log" \
+    || fail "disks_$f: no line with the time per output"
+done
 grep -q "2 rank(s) (0 to" cube_hdf5.log || fail "expected a rank without particles: $(grep 'rank(s)' cube_hdf5.log)"
 compare disks_vtu disks_hdf5 particles grid
 compare cube_vtu cube_hdf5 particles
@@ -68,6 +73,13 @@ run 1 "$prm/colliding_disks.prm" resumed hdf5 "${resume[@]}" --resume
 grep -q "removed [1-9][0-9]* files the interrupted run wrote" resumed.log || fail "resume removed nothing: $(grep 'output in' resumed.log)"
 cmp -s uninterrupted.xdmf resumed/particles.xdmf || fail "the resumed run's particles.xdmf differs"
 [ "$(ls resumed/particles_*.h5 | wc -l)" = "$(grep -c '<Time ' uninterrupted.xdmf)" ] || fail "resumed: not one .h5 per output"
+# ... but not in the other format: its series could not go on.
+if "$dealmpm" "$prm/colliding_disks.prm" -s "Output/Directory=resumed" -s "Output/Format=vtu" \
+     "${resume[@]}" --resume > other_format.log 2>&1; then
+  fail "a resume in the other format ran"
+fi
+grep -q "entry 'Output/Format' = 'vtu': the saved run wrote hdf5" other_format.log \
+  || fail "a resume in the other format: $(tail -1 other_format.log)"
 
 # A vtu run in the hdf5 run's folder removes its files and series.
 run 1 "$prm/colliding_disks.prm" disks_hdf5 vtu -s "Time/End time=0.01" -s "Output/Interval=0.01"

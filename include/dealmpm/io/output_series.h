@@ -37,6 +37,15 @@ namespace dealmpm
       return entries.empty();
     }
 
+    /** Whether the entries are XDMF Grid elements (an .xdmf series), not
+     * file names (a .pvd series). */
+    bool
+    holds_xdmf() const
+    {
+      return !entries.empty() &&
+             entries.front().second.find("<Grid") != std::string::npos;
+    }
+
     bool
     operator==(const OutputSeries &other) const
     {
