@@ -87,47 +87,87 @@ namespace dealmpm
     return *this;
   }
 
+  namespace
+  {
+    /** Call @p f(v, i, k) for entry i (a local index) of each vector v at
+     * place k of the packed buffer, target by target: each target's
+     * block holds its @p count entries of vector 0, then of vector 1, ...
+     * @p local(j) is the local index of the j-th entry over all targets. */
+    template <typename Local, typename F>
+    void
+    for_each_packed(
+      const std::vector<NodalVector *>                         &vectors,
+      const std::vector<std::pair<unsigned int, unsigned int>> &targets,
+      const Local                                              &local,
+      const F                                                  &f)
+    {
+      std::size_t k = 0, next = 0;
+      for (const auto &[rank, count] : targets)
+        {
+          for (NodalVector *v : vectors)
+            for (unsigned int i = 0; i < count; ++i)
+              f(*v, local(next + i), k++);
+          next += count;
+        }
+    }
+  } // namespace
+
+  namespace
+  {
+    /** The entries of all @p vectors from one side to the other in one
+     * message per neighbour: from ghosts to their owners (@p from_ghosts)
+     * or from owners to the ranks that hold them as ghosts; each received
+     * value x lands as @p unpack(entry, x). */
+    template <typename Unpack>
+    void
+    send_and_unpack(const std::vector<NodalVector *> &vectors,
+                    const bool                        from_ghosts,
+                    const int                         tag,
+                    const Unpack                     &unpack)
+    {
+      const Utilities::MPI::Partitioner &p = *vectors[0]->get_partitioner();
+      const unsigned int                 n_owned = p.locally_owned_size();
+      const std::vector<unsigned int>    owned   = import_list(p);
+      const auto  ghost  = [&](const unsigned int j) { return n_owned + j; };
+      const auto  import = [&](const unsigned int j) { return owned[j]; };
+      const auto &ghosts = p.ghost_targets(), &imports = p.import_targets();
+      const std::size_t n_ghost  = vectors.size() * p.n_ghost_indices(),
+                        n_import = vectors.size() * owned.size();
+      std::vector<double> sent(from_ghosts ? n_ghost : n_import),
+        received(from_ghosts ? n_import : n_ghost);
+      const auto pack = [&](NodalVector &v, unsigned int i, std::size_t k) {
+        sent[k] = v.local_element(i);
+      };
+      const auto take = [&](NodalVector &v, unsigned int i, std::size_t k) {
+        unpack(v.local_element(i), received[k]);
+      };
+      if (from_ghosts)
+        for_each_packed(vectors, ghosts, ghost, pack);
+      else
+        for_each_packed(vectors, imports, import, pack);
+      exchange(from_ghosts ? imports : ghosts,
+               from_ghosts ? ghosts : imports,
+               vectors.size(),
+               received,
+               sent,
+               tag,
+               p.get_mpi_communicator());
+      if (from_ghosts)
+        for_each_packed(vectors, imports, import, take);
+      else
+        for_each_packed(vectors, ghosts, ghost, take);
+    }
+  } // namespace
+
   void
   NodalExchange::sum_ghosts_into_owners()
   {
     if (vectors.empty())
       return;
-    const Utilities::MPI::Partitioner &partitioner =
-      *vectors[0]->get_partitioner();
-    const unsigned int n_owned = partitioner.locally_owned_size();
-    const unsigned int n_ghost = partitioner.n_ghost_indices();
-    const unsigned int K       = vectors.size();
-    if (partitioner.n_mpi_processes() > 1)
-      {
-        // Pack each neighbour's ghosts, vector after vector.
-        std::vector<double> sent(std::size_t(K) * n_ghost);
-        std::size_t         out = 0, first = n_owned;
-        for (const auto &[rank, count] : partitioner.ghost_targets())
-          {
-            for (const NodalVector *v : vectors)
-              for (unsigned int i = 0; i < count; ++i)
-                sent[out++] = v->local_element(first + i);
-            first += count;
-          }
-        std::vector<double> received(std::size_t(K) *
-                                     partitioner.n_import_indices());
-        exchange(partitioner.import_targets(),
-                 partitioner.ghost_targets(),
-                 K,
-                 received,
-                 sent,
-                 sum_tag,
-                 partitioner.get_mpi_communicator());
-        const std::vector<unsigned int> owned = import_list(partitioner);
-        std::size_t                     in = 0, next = 0;
-        for (const auto &[rank, count] : partitioner.import_targets())
-          {
-            for (NodalVector *v : vectors)
-              for (unsigned int i = 0; i < count; ++i)
-                v->local_element(owned[next + i]) += received[in++];
-            next += count;
-          }
-      }
+    if (vectors[0]->get_partitioner()->n_mpi_processes() > 1)
+      send_and_unpack(vectors, true, sum_tag, [](double &to, const double x) {
+        to += x;
+      });
     for (NodalVector *v : vectors)
       v->zero_out_ghost_values();
   }
@@ -137,39 +177,10 @@ namespace dealmpm
   {
     if (vectors.empty())
       return;
-    const Utilities::MPI::Partitioner &partitioner =
-      *vectors[0]->get_partitioner();
-    if (partitioner.n_mpi_processes() > 1)
-      {
-        const unsigned int  K     = vectors.size();
-        const auto          owned = import_list(partitioner);
-        std::vector<double> sent(std::size_t(K) * owned.size());
-        std::size_t         out = 0, next = 0;
-        for (const auto &[rank, count] : partitioner.import_targets())
-          {
-            for (const NodalVector *v : vectors)
-              for (unsigned int i = 0; i < count; ++i)
-                sent[out++] = v->local_element(owned[next + i]);
-            next += count;
-          }
-        std::vector<double> received(std::size_t(K) *
-                                     partitioner.n_ghost_indices());
-        exchange(partitioner.ghost_targets(),
-                 partitioner.import_targets(),
-                 K,
-                 received,
-                 sent,
-                 copy_tag,
-                 partitioner.get_mpi_communicator());
-        std::size_t in = 0, first = partitioner.locally_owned_size();
-        for (const auto &[rank, count] : partitioner.ghost_targets())
-          {
-            for (NodalVector *v : vectors)
-              for (unsigned int i = 0; i < count; ++i)
-                v->local_element(first + i) = received[in++];
-            first += count;
-          }
-      }
+    if (vectors[0]->get_partitioner()->n_mpi_processes() > 1)
+      send_and_unpack(vectors, false, copy_tag, [](double &to, const double x) {
+        to = x;
+      });
     for (NodalVector *v : vectors)
       v->set_ghost_state(true);
   }

@@ -8,17 +8,17 @@ namespace dealmpm
 {
   namespace
   {
-    /** An XDMF temporal series of the Grid elements @p grids. */
+    /** An XDMF temporal series of @p entries' Grid elements. */
     std::string
-    xdmf_series(const std::vector<std::string> &grids)
+    xdmf_series(const std::vector<std::pair<double, std::string>> &entries)
     {
       std::string text = "<?xml version=\"1.0\" ?>\n"
                          "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
                          "<Xdmf Version=\"2.0\">\n <Domain>\n"
                          "  <Grid Name=\"series\" GridType=\"Collection\" "
                          "CollectionType=\"Temporal\">\n";
-      for (const std::string &g : grids)
-        text += g;
+      for (const auto &entry : entries)
+        text += entry.second;
       return text + "  </Grid>\n </Domain>\n</Xdmf>\n";
     }
   } // namespace
@@ -45,11 +45,8 @@ namespace dealmpm
   {
     if (path.size() > 5 && path.substr(path.size() - 5) == ".xdmf")
       {
-        std::vector<std::string> grids;
-        for (const auto &entry : entries)
-          grids.push_back(entry.second);
         OutputFile out(path);
-        out.write(xdmf_series(grids));
+        out.write(xdmf_series(entries));
         out.commit();
         return;
       }
