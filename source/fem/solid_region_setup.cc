@@ -30,6 +30,7 @@ namespace dealmpm
       make_traction_force();
     make_quadrature_state();
     make_reference_data();
+    update_signal_rate();
   }
 
   template <int dim>
@@ -227,11 +228,15 @@ namespace dealmpm
     r                = ReferenceData();
     r.n_dofs         = fe.n_dofs_per_cell();
     r.n_scalar       = r.n_dofs / dim;
-    for (unsigned int i = 0; i < r.n_dofs; ++i)
-      {
-        r.component.push_back(fe.system_to_component_index(i).first);
-        r.scalar.push_back(fe.system_to_component_index(i).second);
-      }
+    // A cell's dofs node by node (scalar shape function s, then its
+    // components): the force loop reads a node's dim values together.
+    for (unsigned int s = 0; s < r.n_scalar; ++s)
+      for (unsigned int a = 0; a < dim; ++a)
+        {
+          r.component.push_back(a);
+          r.scalar.push_back(s);
+          r.fe_index.push_back(fe.component_to_system_index(a, s));
+        }
     QGauss<dim>       gauss(fe.degree + 1);
     QGauss<dim - 1>   face_gauss(fe.degree + 1);
     FEValues<dim>     values(mapping,
@@ -252,9 +257,10 @@ namespace dealmpm
       if (cell->is_locally_owned())
         {
           cell->get_dof_indices(dofs);
-          for (const types::global_dof_index dof : dofs)
-            r.local_dofs.push_back(partitioner.global_to_local(dof));
+          for (const unsigned int i : r.fe_index)
+            r.local_dofs.push_back(partitioner.global_to_local(dofs[i]));
           r.centre.push_back(cell->center());
+          r.min_vertex_distance.push_back(cell->minimum_vertex_distance());
           values.reinit(cell);
           add_cell_reference(values);
           for (const unsigned int f : cell->face_indices())
@@ -275,14 +281,19 @@ namespace dealmpm
   {
     ReferenceData &r = reference;
     for (unsigned int q = 0; q < r.n_q; ++q)
-      {
-        r.JxW.push_back(values.JxW(q));
-        const std::size_t first = r.grad.size();
-        r.grad.resize(first + r.n_scalar);
-        for (unsigned int i = 0; i < r.n_dofs; ++i)
-          r.grad[first + r.scalar[i]] =
-            values.shape_grad_component(i, q, r.component[i]);
-      }
+      r.JxW.push_back(values.JxW(q));
+    const unsigned int n     = r.n_scalar;
+    const std::size_t  first = r.grad.size();
+    r.grad.resize(first + dim * n * r.n_q);
+    for (unsigned int s = 0; s < n; ++s)
+      for (unsigned int q = 0; q < r.n_q; ++q)
+        {
+          // The x component's dof of node s (i = s * dim).
+          const Tensor<1, dim> dN =
+            values.shape_grad_component(r.fe_index[s * dim], q, 0);
+          for (unsigned int b = 0; b < dim; ++b)
+            r.grad[first + (b * n + s) * r.n_q + q] = dN[b];
+        }
   }
 
   template <int dim>
@@ -304,10 +315,11 @@ namespace dealmpm
         r.face_value.resize(first + r.n_scalar);
         for (unsigned int i = 0; i < r.n_dofs; ++i)
           {
+            const unsigned int j = r.fe_index[i];
             r.face_grad[first + r.scalar[i]] =
-              face_values.shape_grad_component(i, q, r.component[i]);
+              face_values.shape_grad_component(j, q, r.component[i]);
             r.face_value[first + r.scalar[i]] =
-              face_values.shape_value_component(i, q, r.component[i]);
+              face_values.shape_value_component(j, q, r.component[i]);
           }
       }
   }

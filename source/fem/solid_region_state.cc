@@ -219,6 +219,7 @@ namespace dealmpm
                 internal[k * n_internal + j] = read_hex(in);
             }
         }
+    update_signal_rate();
   }
 
 #define DEALMPM_INSTANTIATE(dim)                             \

@@ -20,31 +20,48 @@ namespace dealmpm
     return rate > 0 ? cfl / rate : std::numeric_limits<double>::max();
   }
 
-  template <int dim>
-  double
-  SolidRegion<dim>::local_signal_rate() const
+  namespace
   {
-    double             rate = 0;
-    const unsigned int n_q  = QGauss<dim>(fe.degree + 1).size();
-    std::size_t        k    = 0;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          double c = 0;
-          for (unsigned int q = 0; q < n_q; ++q, ++k)
-            c = std::max(c, material.wave_speed(deformation[k]));
-          // The smallest node spacing of the cell (Gauss-Lobatto points of
-          // degree k are closer than h / k near the vertices; the factor
-          // for k = 1, 2 is 1), in the current configuration's scale.
-          double stretch = 1;
-          for (unsigned int q = 0; q < n_q; ++q)
-            stretch =
-              std::min(stretch, smallest_stretch(deformation[k - n_q + q]));
-          rate = std::max(rate,
-                          c * fe.degree /
-                            (stretch * cell->minimum_vertex_distance()));
-        }
-    return rate;
+    /** What a cell's quadrature points say about the stable step: the
+     * largest wave speed and the smallest stretch. */
+    template <int dim>
+    struct CellSignal
+    {
+      double wave_speed = 0, stretch = 1;
+
+      void
+      add(const Material<dim> &material, const Tensor<2, dim> &F)
+      {
+        wave_speed = std::max(wave_speed, material.wave_speed(F));
+        stretch    = std::min(stretch, smallest_stretch(F));
+      }
+
+      /** Over the smallest node spacing: Gauss-Lobatto points of degree k
+       * are closer than h / k near the vertices (the factor for k = 1, 2 is
+       * 1), in the current configuration's scale. */
+      double
+      rate(const unsigned int degree, const double min_vertex_distance) const
+      {
+        return wave_speed * degree / (stretch * min_vertex_distance);
+      }
+    };
+  } // namespace
+
+  template <int dim>
+  void
+  SolidRegion<dim>::update_signal_rate()
+  {
+    const ReferenceData &r = reference;
+    signal_rate            = 0;
+    for (std::size_t c = 0, k = 0; c < r.centre.size(); ++c)
+      {
+        CellSignal<dim> signal;
+        for (unsigned int q = 0; q < r.n_q; ++q, ++k)
+          signal.add(material, deformation[k]);
+        signal_rate =
+          std::max(signal_rate,
+                   signal.rate(fe.degree, r.min_vertex_distance[c]));
+      }
   }
 
   template <int dim>
@@ -69,18 +86,14 @@ namespace dealmpm
 
   template <int dim>
   void
-  SolidRegion<dim>::check_orientation(const double       J,
-                                      const unsigned int cell) const
+  SolidRegion<dim>::report_inverted(const double       J,
+                                    const unsigned int cell) const
   {
-    if (!(J > 0))
-      {
-        std::ostringstream message;
-        message << "an FEM region's cell at reference position ("
-                << reference.centre[cell] << ") turned inside out (J = " << J
-                << "); a smaller time step or a finer mesh there "
-                   "may help";
-        throw RunError(message.str());
-      }
+    std::ostringstream message;
+    message << "an FEM region's cell at reference position ("
+            << reference.centre[cell] << ") turned inside out (J = " << J
+            << "); a smaller time step or a finer mesh there may help";
+    throw RunError(message.str());
   }
 
   template <int dim>
@@ -90,38 +103,140 @@ namespace dealmpm
     NodalExchange().add(displacement).add(velocity).copy_owners_to_ghosts();
     force                  = 0;
     const ReferenceData &r = reference;
-    std::vector<double>  local(r.n_dofs);
-    const std::size_t    n_cells = r.centre.size();
-    for (std::size_t c = 0, k = 0; c < n_cells; ++c)
-      {
-        std::fill(local.begin(), local.end(), 0.);
-        for (unsigned int q = 0; q < r.n_q; ++q, ++k)
-          {
-            const Tensor<1, dim> *grad = &r.grad[k * r.n_scalar];
-            const Tensor<2, dim>  F    = unit_symmetric_tensor<dim>() +
-                                     reference_gradient(displacement, c, grad);
-            const double J = determinant(F);
-            check_orientation(J, c);
-            // The half step that made F: F - F_old = dt grad_X v.
-            if (dt > 0)
-              material.update_stress(
-                reference_gradient(velocity, c, grad) * invert(F),
-                F,
-                dt,
-                stress[k],
-                ArrayView<double>(internal.data() + k * n_internal,
-                                  n_internal));
-            deformation[k] = F;
-            const Tensor<2, dim> P =
-              J * Tensor<2, dim>(stress[k]) * transpose(invert(F));
-            for (unsigned int i = 0; i < r.n_dofs; ++i)
-              local[i] -= (P[r.component[i]] * grad[r.scalar[i]]) * r.JxW[k];
-          }
-        const unsigned int *dofs = &r.local_dofs[c * r.n_dofs];
-        for (unsigned int i = 0; i < r.n_dofs; ++i)
-          force.local_element(dofs[i]) += local[i];
-      }
+    signal_rate            = 0;
+    for (std::size_t c = 0; c < r.centre.size(); ++c)
+      signal_rate =
+        std::max(signal_rate,
+                 fe.degree == 1 ? cell_force<Utilities::pow(2, dim)>(c, dt) :
+                                  cell_force<Utilities::pow(3, dim)>(c, dt));
     force.compress(VectorOperation::add);
+  }
+
+  namespace
+  {
+    /** A cell's arrays in the force loop with n nodes and n quadrature
+     * points, the last index the one the compiler vectorizes over (the
+     * point, or the node). Each sum keeps the order of the plain loops
+     * (no fused multiply-adds in this library): the same numbers. */
+    template <int dim, int n>
+    struct CellArrays
+    {
+      /** Nodal displacement and velocity [component][node]. */
+      double u[dim][n], v[dim][n];
+      /** Their reference gradients at the points [a][b][point]. */
+      double grad_u[dim][dim][n], grad_v[dim][dim][n];
+      /** The first Piola-Kirchhoff stress at the points. */
+      double P[dim][dim][n];
+      /** Each point's share of each node's force [a][node][point]. */
+      double share[dim][n][n];
+
+      /** grad_u, grad_v from the cell's shape gradients grad[b][node][q]. */
+      void
+      interpolate_gradients(const double *grad)
+      {
+        for (unsigned int a = 0; a < dim; ++a)
+          for (unsigned int b = 0; b < dim; ++b)
+            {
+              double *gu = grad_u[a][b], *gv = grad_v[a][b];
+              for (unsigned int q = 0; q < n; ++q)
+                gu[q] = gv[q] = 0;
+              for (unsigned int s = 0; s < n; ++s)
+                {
+                  const double *dN = grad + (b * n + s) * n;
+                  for (unsigned int q = 0; q < n; ++q)
+                    {
+                      gu[q] += u[a][s] * dN[q];
+                      gv[q] += v[a][s] * dN[q];
+                    }
+                }
+            }
+      }
+
+      /** share[a][s][q] = (P[a] . grad N_s)(q) JxW(q). */
+      void
+      make_shares(const double *grad, const double *JxW)
+      {
+        for (unsigned int a = 0; a < dim; ++a)
+          for (unsigned int s = 0; s < n; ++s)
+            for (unsigned int q = 0; q < n; ++q)
+              {
+                double dot = P[a][0][q] * grad[s * n + q];
+                for (unsigned int b = 1; b < dim; ++b)
+                  dot += P[a][b][q] * grad[(b * n + s) * n + q];
+                share[a][s][q] = dot * JxW[q];
+              }
+      }
+    };
+  } // namespace
+
+  template <int dim>
+  template <int n>
+  double
+  SolidRegion<dim>::cell_force(const unsigned int c, const double dt)
+  {
+    const ReferenceData &r    = reference;
+    const unsigned int  *dofs = &r.local_dofs[c * r.n_dofs];
+    const double        *grad = &r.grad[c * dim * n * n];
+    CellArrays<dim, n>   cell;
+    for (unsigned int s = 0; s < n; ++s)
+      for (unsigned int a = 0; a < dim; ++a)
+        {
+          cell.u[a][s] = displacement.local_element(dofs[s * dim + a]);
+          cell.v[a][s] = velocity.local_element(dofs[s * dim + a]);
+        }
+    cell.interpolate_gradients(grad);
+    // The rate of the F made here is the next step's (the same F as
+    // update_signal_rate() would read back).
+    CellSignal<dim> signal;
+    for (unsigned int q = 0; q < n; ++q)
+      {
+        const std::size_t k = c * n + q;
+        Tensor<2, dim>    F, grad_v; // F = grad_X u + I
+        for (unsigned int a = 0; a < dim; ++a)
+          for (unsigned int b = 0; b < dim; ++b)
+            {
+              F[a][b]      = cell.grad_u[a][b][q] + (a == b ? 1. : 0.);
+              grad_v[a][b] = cell.grad_v[a][b][q];
+            }
+        const Tensor<2, dim> P = point_stress(c, k, F, grad_v, dt);
+        for (unsigned int a = 0; a < dim; ++a)
+          for (unsigned int b = 0; b < dim; ++b)
+            cell.P[a][b][q] = P[a][b];
+        signal.add(material, F);
+      }
+    cell.make_shares(grad, &r.JxW[c * n]);
+    for (unsigned int s = 0; s < n; ++s)
+      for (unsigned int a = 0; a < dim; ++a)
+        {
+          double f = 0;
+          for (unsigned int q = 0; q < n; ++q)
+            f -= cell.share[a][s][q];
+          force.local_element(dofs[s * dim + a]) += f;
+        }
+    return signal.rate(fe.degree, r.min_vertex_distance[c]);
+  }
+
+  template <int dim>
+  Tensor<2, dim>
+  SolidRegion<dim>::point_stress(const unsigned int    cell,
+                                 const std::size_t     k,
+                                 const Tensor<2, dim> &F,
+                                 const Tensor<2, dim> &grad_v,
+                                 const double          dt)
+  {
+    const double J = determinant(F);
+    check_orientation(J, cell);
+    const Tensor<2, dim> F_inverse = invert(F);
+    // The half step that made F: F - F_old = dt grad_X v.
+    if (dt > 0)
+      material.update_stress(grad_v * F_inverse,
+                             F,
+                             dt,
+                             stress[k],
+                             ArrayView<double>(internal.data() + k * n_internal,
+                                               n_internal));
+    deformation[k] = F;
+    return J * Tensor<2, dim>(stress[k]) * transpose(F_inverse);
   }
 
   template <int dim>
@@ -255,11 +370,11 @@ namespace dealmpm
 
 #define DEALMPM_INSTANTIATE(dim)                                            \
   template double SolidRegion<dim>::stable_time_step(const double) const;   \
-  template double SolidRegion<dim>::local_signal_rate() const;              \
   template void   SolidRegion<dim>::compute_forces(const double,            \
                                                  const double,            \
                                                  const BodyForce<dim> &); \
   template void   SolidRegion<dim>::advance(const double, const double);    \
+  template void   SolidRegion<dim>::update_signal_rate();                   \
   template void   SolidRegion<dim>::step(const double,                      \
                                        const double,                      \
                                        const BodyForce<dim> &);           \

@@ -123,9 +123,13 @@ namespace dealmpm
 
     /** The largest wave speed over node spacing (1/s) of this rank's
      * cells, the inverse of the stable step; the deformed spacing. Not
-     * collective: the step reduces it with the particles' rate. */
+     * collective: the step reduces it with the particles' rate. Kept up to
+     * date with the quadrature points' F (the force loop computes it). */
     double
-    local_signal_rate() const;
+    local_signal_rate() const
+    {
+      return signal_rate;
+    }
 
     /** f = f_int(u) + tractions + m b at the start of a step of size dt
      * from @p time (the internal force's stress is advanced over the last
@@ -362,16 +366,20 @@ namespace dealmpm
     struct ReferenceData
     {
       unsigned int n_dofs = 0, n_scalar = 0, n_q = 0, n_face_q = 0;
-      /** Per dof of a cell: its component and scalar shape function. */
-      std::vector<unsigned int> component, scalar;
+      /** Per dof of a cell, node by node (i = s * dim + component): its
+       * component, its scalar shape function s and its index in the FE. */
+      std::vector<unsigned int> component, scalar, fe_index;
       /** Per cell: the local indices of its dofs (cell-major) and its
        * centre (for messages). */
       std::vector<unsigned int> local_dofs;
       std::vector<Point<dim>>   centre;
-      /** Per cell and quadrature point: JxW and the reference gradients
-       * of the scalar shape functions. */
-      std::vector<double>         JxW;
-      std::vector<Tensor<1, dim>> grad;
+      /** Per cell: its smallest vertex distance (the time step's length). */
+      std::vector<double> min_vertex_distance;
+      /** Per cell and quadrature point: JxW. Per cell, the reference
+       * gradients of the scalar shape functions at the points, as
+       * [direction][shape function][point] (the force loop's order). */
+      std::vector<double> JxW;
+      std::vector<double> grad;
       /** Per boundary face: its cell, its boundary id; per face
        * quadrature point the reference normal times JxW and the scalar
        * shape functions' values and reference gradients. */
@@ -416,12 +424,37 @@ namespace dealmpm
                        const types::boundary_id      id);
 
     /** The step: f = -int grad N : P (F) with the stress advanced over
-     * dt. */
+     * dt; the signal rate of the new F. */
     void
     internal_force(const double dt);
+    /** The force loop on owned cell @p cell, for FE_Q(k) with n nodes
+     * and n quadrature points: F, the stress advanced over @p dt, the
+     * nodal forces added to force; returns the cell's signal rate. */
+    template <int n>
+    double
+    cell_force(const unsigned int cell, const double dt);
+    /** At quadrature point @p k of cell @p cell with deformation gradient
+     * @p F = I + grad_X u and @p grad_v = grad_X v: the stress advanced
+     * over @p dt (from the half step that made F), F kept; returns the
+     * first Piola-Kirchhoff stress. */
+    Tensor<2, dim>
+    point_stress(const unsigned int    cell,
+                 const std::size_t     k,
+                 const Tensor<2, dim> &F,
+                 const Tensor<2, dim> &grad_v,
+                 const double          dt);
+    /** The rate of local_signal_rate() from the quadrature points' F. */
+    void
+    update_signal_rate();
     /** RunError unless J > 0 at owned cell @p cell. */
     void
-    check_orientation(const double J, const unsigned int cell) const;
+    check_orientation(const double J, const unsigned int cell) const
+    {
+      if (!(J > 0))
+        report_inverted(J, cell);
+    }
+    [[noreturn]] void
+    report_inverted(const double J, const unsigned int cell) const;
     /** The velocity a node takes in the step from @p time by @p dt. */
     Tensor<1, dim>
     new_velocity(const unsigned int k,
@@ -506,8 +539,9 @@ namespace dealmpm
     std::vector<Tensor<2, dim>>          deformation;
     std::vector<double>                  internal;
     unsigned int                         n_internal = 0;
-    double last_dt = 0; ///< the step that made the current displacement
-    double work    = 0;
+    double last_dt     = 0; ///< the step that made the current displacement
+    double signal_rate = 0; ///< local_signal_rate() of the current F
+    double work        = 0;
     /** This rank's part of support_force(), and of its impulse since the
      * row started (over row_time). */
     Tensor<1, dim> support_reaction, row_impulse;
