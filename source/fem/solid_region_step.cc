@@ -7,6 +7,7 @@
 #include <dealmpm/grid/nodal_exchange.h>
 
 #include <algorithm>
+#include <array>
 #include <limits>
 #include <sstream>
 
@@ -130,41 +131,50 @@ namespace dealmpm
       /** Each point's share of each node's force [a][node][point]. */
       double share[dim][n][n];
 
-      /** grad_u, grad_v from the cell's shape gradients grad[b][node][q]. */
+      /** grad_u, grad_v from the cell's shape gradients grad[b][node][q].
+       * The sums in local arrays, which alias nothing: the compiler keeps
+       * them in vector registers. */
       void
-      interpolate_gradients(const double *grad)
+      interpolate_gradients(const double *__restrict grad)
       {
         for (unsigned int a = 0; a < dim; ++a)
           for (unsigned int b = 0; b < dim; ++b)
             {
-              double *gu = grad_u[a][b], *gv = grad_v[a][b];
-              for (unsigned int q = 0; q < n; ++q)
-                gu[q] = gv[q] = 0;
+              double gu[n] = {}, gv[n] = {};
               for (unsigned int s = 0; s < n; ++s)
                 {
+                  const double  us = u[a][s], vs = v[a][s];
                   const double *dN = grad + (b * n + s) * n;
                   for (unsigned int q = 0; q < n; ++q)
                     {
-                      gu[q] += u[a][s] * dN[q];
-                      gv[q] += v[a][s] * dN[q];
+                      gu[q] += us * dN[q];
+                      gv[q] += vs * dN[q];
                     }
+                }
+              for (unsigned int q = 0; q < n; ++q)
+                {
+                  grad_u[a][b][q] = gu[q];
+                  grad_v[a][b][q] = gv[q];
                 }
             }
       }
 
       /** share[a][s][q] = (P[a] . grad N_s)(q) JxW(q). */
       void
-      make_shares(const double *grad, const double *JxW)
+      make_shares(const double *__restrict grad, const double *__restrict JxW)
       {
         for (unsigned int a = 0; a < dim; ++a)
           for (unsigned int s = 0; s < n; ++s)
-            for (unsigned int q = 0; q < n; ++q)
-              {
-                double dot = P[a][0][q] * grad[s * n + q];
-                for (unsigned int b = 1; b < dim; ++b)
-                  dot += P[a][b][q] * grad[(b * n + s) * n + q];
-                share[a][s][q] = dot * JxW[q];
-              }
+            {
+              double dot[n];
+              for (unsigned int q = 0; q < n; ++q)
+                dot[q] = P[a][0][q] * grad[s * n + q];
+              for (unsigned int b = 1; b < dim; ++b)
+                for (unsigned int q = 0; q < n; ++q)
+                  dot[q] += P[a][b][q] * grad[(b * n + s) * n + q];
+              for (unsigned int q = 0; q < n; ++q)
+                share[a][s][q] = dot[q] * JxW[q];
+            }
       }
     };
   } // namespace
@@ -185,26 +195,47 @@ namespace dealmpm
           cell.v[a][s] = velocity.local_element(dofs[s * dim + a]);
         }
     cell.interpolate_gradients(grad);
+    // Every point's F and L first: the material then updates the cell's
+    // points in one call.
+    std::array<Tensor<2, dim>, n> F, F_inverse, L;
+    std::array<double, n>         J;
+    for (unsigned int q = 0; q < n; ++q)
+      {
+        Tensor<2, dim> grad_v;
+        for (unsigned int a = 0; a < dim; ++a)
+          for (unsigned int b = 0; b < dim; ++b)
+            {
+              F[q][a][b]   = cell.grad_u[a][b][q] + (a == b ? 1. : 0.);
+              grad_v[a][b] = cell.grad_v[a][b][q];
+            }
+        J[q] = determinant(F[q]);
+        check_orientation(J[q], c);
+        F_inverse[q] = invert(F[q]);
+        // The half step that made F: F - F_old = dt grad_X v.
+        L[q] = grad_v * F_inverse[q];
+      }
+    const std::size_t k = std::size_t(c) * n; // the cell's first point
+    if (dt > 0)
+      material.update_stresses(
+        ArrayView<const Tensor<2, dim>>(L.data(), n),
+        ArrayView<const Tensor<2, dim>>(F.data(), n),
+        dt,
+        ArrayView<SymmetricTensor<2, dim>>(&stress[k], n),
+        ArrayView<double>(internal.data() + k * n_internal, n * n_internal));
     // The rate of the F made here is the next step's (the same F as
     // update_signal_rate() would read back).
     CellSignal<dim> signal;
     for (unsigned int q = 0; q < n; ++q)
       {
-        const std::size_t k = c * n + q;
-        Tensor<2, dim>    F, grad_v; // F = grad_X u + I
-        for (unsigned int a = 0; a < dim; ++a)
-          for (unsigned int b = 0; b < dim; ++b)
-            {
-              F[a][b]      = cell.grad_u[a][b][q] + (a == b ? 1. : 0.);
-              grad_v[a][b] = cell.grad_v[a][b][q];
-            }
-        const Tensor<2, dim> P = point_stress(c, k, F, grad_v, dt);
+        deformation[k + q] = F[q];
+        const Tensor<2, dim> P =
+          J[q] * Tensor<2, dim>(stress[k + q]) * transpose(F_inverse[q]);
         for (unsigned int a = 0; a < dim; ++a)
           for (unsigned int b = 0; b < dim; ++b)
             cell.P[a][b][q] = P[a][b];
-        signal.add(material, F);
+        signal.add(material, F[q]);
       }
-    cell.make_shares(grad, &r.JxW[c * n]);
+    cell.make_shares(grad, &r.JxW[k]);
     for (unsigned int s = 0; s < n; ++s)
       for (unsigned int a = 0; a < dim; ++a)
         {
@@ -214,29 +245,6 @@ namespace dealmpm
           force.local_element(dofs[s * dim + a]) += f;
         }
     return signal.rate(fe.degree, r.min_vertex_distance[c]);
-  }
-
-  template <int dim>
-  Tensor<2, dim>
-  SolidRegion<dim>::point_stress(const unsigned int    cell,
-                                 const std::size_t     k,
-                                 const Tensor<2, dim> &F,
-                                 const Tensor<2, dim> &grad_v,
-                                 const double          dt)
-  {
-    const double J = determinant(F);
-    check_orientation(J, cell);
-    const Tensor<2, dim> F_inverse = invert(F);
-    // The half step that made F: F - F_old = dt grad_X v.
-    if (dt > 0)
-      material.update_stress(grad_v * F_inverse,
-                             F,
-                             dt,
-                             stress[k],
-                             ArrayView<double>(internal.data() + k * n_internal,
-                                               n_internal));
-    deformation[k] = F;
-    return J * Tensor<2, dim>(stress[k]) * transpose(F_inverse);
   }
 
   template <int dim>

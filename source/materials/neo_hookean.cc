@@ -10,6 +10,34 @@ namespace dealmpm
     : lame(lame)
   {}
 
+  namespace
+  {
+    /** sigma = mu / J (B - I) + lambda ln(J) / J I, entry by entry in
+     * scalars (the tensor expression's numbers; GCC's partial
+     * vectorization of that expression stalled on its own stores). */
+    template <int dim>
+    inline SymmetricTensor<2, dim>
+    neo_hookean_stress(const LameParameters &lame, const Tensor<2, dim> &F)
+    {
+      const double J = determinant(F);
+      // A non-positive J makes log() NaN; the step's finiteness check
+      // then stops the run and names the particle (an FEM region checks J
+      // before).
+      const double            shear = lame.mu / J;
+      const double            bulk  = lame.lambda * std::log(J) / J;
+      SymmetricTensor<2, dim> stress;
+      for (unsigned int a = 0; a < dim; ++a)
+        for (unsigned int b = a; b < dim; ++b)
+          {
+            double B_ab = F[a][0] * F[b][0]; // (F F^T)_ab
+            for (unsigned int k = 1; k < dim; ++k)
+              B_ab += F[a][k] * F[b][k];
+            stress[a][b] = a == b ? shear * (B_ab - 1.) + bulk : shear * B_ab;
+          }
+      return stress;
+    }
+  } // namespace
+
   template <int dim>
   void
   NeoHookean<dim>::update_stress(const Tensor<2, dim> &,
@@ -18,12 +46,20 @@ namespace dealmpm
                                  SymmetricTensor<2, dim> &stress,
                                  ArrayView<double>) const
   {
-    const double J = determinant(F);
-    // A non-positive J makes log() NaN; the step's finiteness check then
-    // stops the run and names the particle.
-    const SymmetricTensor<2, dim> B = symmetrize(F * transpose(F));
-    stress = (lame.mu / J) * (B - unit_symmetric_tensor<dim>()) +
-             (lame.lambda * std::log(J) / J) * unit_symmetric_tensor<dim>();
+    stress = neo_hookean_stress(lame, F);
+  }
+
+  template <int dim>
+  void
+  NeoHookean<dim>::update_stresses(
+    const ArrayView<const Tensor<2, dim>> &,
+    const ArrayView<const Tensor<2, dim>> &F,
+    const double,
+    const ArrayView<SymmetricTensor<2, dim>> &stress,
+    const ArrayView<double> &) const
+  {
+    for (std::size_t q = 0; q < F.size(); ++q)
+      stress[q] = neo_hookean_stress(lame, F[q]);
   }
 
   template <int dim>

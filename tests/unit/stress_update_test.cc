@@ -5,6 +5,7 @@
 // the stress update, and what the particle check learned (the largest
 // signal rate, the particle that has it, the smallest J). The lean path is
 // only offered when every material is exactly the model.
+#include <dealmpm/materials/j2_plasticity.h>
 #include <dealmpm/materials/linear_elastic.h>
 #include <dealmpm/materials/neo_hookean.h>
 #include <dealmpm/transfer/grid_to_particle.h>
@@ -14,6 +15,7 @@
 
 #include <memory>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include "test_scene.h"
@@ -111,4 +113,109 @@ TEST(StressUpdate, LeanPathOnlyWhenEveryMaterialIsTheModel)
   EXPECT_FALSE(all_elastic());
   materials.erase(materials.begin(), materials.begin() + 2);
   EXPECT_FALSE(all_elastic());
+}
+
+namespace
+{
+  /** update_stresses() of @p material on 8 points (random F near I, L
+   * and a starting stress) against update_stress() point by point: the
+   * number of entries (stress and internal variables) that differ. */
+  template <int dim>
+  unsigned int
+  batch_differs_from_points(const Material<dim> &material)
+  {
+    std::mt19937                           rng(11);
+    std::uniform_real_distribution<double> entry(-0.2, 0.2);
+    const unsigned int                     n          = 8;
+    unsigned int                           n_internal = 0;
+    for (const FieldDescription &f : material.internal_variables())
+      n_internal += f.n_components;
+    std::vector<Tensor<2, dim>>          F(n), L(n);
+    std::vector<SymmetricTensor<2, dim>> batch(n);
+    std::vector<double>                  batch_internal(n * n_internal);
+    for (unsigned int q = 0; q < n; ++q)
+      {
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = 0; j < dim; ++j)
+            {
+              F[q][i][j] = (i == j ? 1. : 0.) + entry(rng);
+              L[q][i][j] = entry(rng);
+            }
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = i; j < dim; ++j)
+            batch[q][i][j] = 1e5 * entry(rng);
+        material.initialize_internal_variables(
+          ArrayView<double>(batch_internal.data() + q * n_internal,
+                            n_internal));
+      }
+    std::vector<SymmetricTensor<2, dim>> points          = batch;
+    std::vector<double>                  points_internal = batch_internal;
+    material.update_stresses(make_array_view(std::as_const(L)),
+                             make_array_view(std::as_const(F)),
+                             1e-3,
+                             make_array_view(batch),
+                             make_array_view(batch_internal));
+    for (unsigned int q = 0; q < n; ++q)
+      material.update_stress(
+        L[q],
+        F[q],
+        1e-3,
+        points[q],
+        ArrayView<double>(points_internal.data() + q * n_internal, n_internal));
+    unsigned int differ = 0;
+    for (unsigned int q = 0; q < n; ++q)
+      differ += !(batch[q] == points[q]);
+    for (std::size_t i = 0; i < batch_internal.size(); ++i)
+      differ += batch_internal[i] != points_internal[i];
+    return differ;
+  }
+
+  /** The neo-Hookean stress against its tensor expression
+   * mu / J (B - I) + lambda ln(J) / J I: entries that differ. */
+  template <int dim>
+  unsigned int
+  neo_hookean_differs_from_expression()
+  {
+    NeoHookean<dim>                        material(lame);
+    std::mt19937                           rng(3);
+    std::uniform_real_distribution<double> entry(-0.3, 0.3);
+    unsigned int                           differ = 0;
+    for (unsigned int trial = 0; trial < 100; ++trial)
+      {
+        Tensor<2, dim> F;
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = 0; j < dim; ++j)
+            F[i][j] = (i == j ? 1. : 0.) + entry(rng);
+        SymmetricTensor<2, dim> stress;
+        material.update_stress(F, F, 1., stress, {});
+        const double                  J = determinant(F);
+        const SymmetricTensor<2, dim> B = symmetrize(F * transpose(F));
+        const SymmetricTensor<2, dim> expected =
+          (lame.mu / J) * (B - unit_symmetric_tensor<dim>()) +
+          (lame.lambda * std::log(J) / J) * unit_symmetric_tensor<dim>();
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = i; j < dim; ++j)
+            differ += stress[i][j] != expected[i][j];
+      }
+    return differ;
+  }
+} // namespace
+
+// An FEM region updates a cell's points in one call (update_stresses());
+// the models that override it (neo-Hookean, linear elastic) and the
+// default (point by point, here J2 plasticity with its internal
+// variables) give update_stress()'s numbers to the bit. The neo-Hookean
+// stress, written in scalars, is its tensor expression to the bit.
+TEST(StressUpdate, CellBatchEqualsPointByPoint)
+{
+  // Yield at 1e5 Pa: the random strains of up to 0.2 flow plastically.
+  const IsotropicHardening hardening{1e5, 1e6};
+  EXPECT_EQ(batch_differs_from_points<2>(NeoHookean<2>(lame)), 0u);
+  EXPECT_EQ(batch_differs_from_points<3>(NeoHookean<3>(lame)), 0u);
+  EXPECT_EQ(batch_differs_from_points<2>(LinearElastic<2>(lame)), 0u);
+  EXPECT_EQ(batch_differs_from_points<3>(LinearElastic<3>(lame)), 0u);
+  EXPECT_EQ(batch_differs_from_points<2>(J2Plasticity<2>(lame, hardening)), 0u);
+  EXPECT_EQ(batch_differs_from_points<3>(J2Plasticity<3>(lame, hardening)), 0u);
+  EXPECT_EQ(neo_hookean_differs_from_expression<2>(), 0u);
+  EXPECT_EQ(neo_hookean_differs_from_expression<3>(), 0u);
 }

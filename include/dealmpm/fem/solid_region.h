@@ -433,16 +433,6 @@ namespace dealmpm
     template <int n>
     double
     cell_force(const unsigned int cell, const double dt);
-    /** At quadrature point @p k of cell @p cell with deformation gradient
-     * @p F = I + grad_X u and @p grad_v = grad_X v: the stress advanced
-     * over @p dt (from the half step that made F), F kept; returns the
-     * first Piola-Kirchhoff stress. */
-    Tensor<2, dim>
-    point_stress(const unsigned int    cell,
-                 const std::size_t     k,
-                 const Tensor<2, dim> &F,
-                 const Tensor<2, dim> &grad_v,
-                 const double          dt);
     /** The rate of local_signal_rate() from the quadrature points' F. */
     void
     update_signal_rate();

@@ -47,6 +47,22 @@ namespace dealmpm
       stress += increment;
     }
 
+    /** The points in one loop, update_stress() inlined. */
+    void
+    update_stresses(const ArrayView<const Tensor<2, dim>>    &L,
+                    const ArrayView<const Tensor<2, dim>>    &F,
+                    const double                              dt,
+                    const ArrayView<SymmetricTensor<2, dim>> &stress,
+                    const ArrayView<double> &internal) const override
+    {
+      for (std::size_t q = 0; q < F.size(); ++q)
+        update_stress(L[q],
+                      F[q],
+                      dt,
+                      stress[q],
+                      ArrayView<double>(internal.begin() + q, 1));
+    }
+
     DEAL_II_ALWAYS_INLINE double
     wave_speed(const Tensor<2, dim> &F) const override
     {

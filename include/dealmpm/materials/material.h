@@ -52,6 +52,29 @@ namespace dealmpm
                   SymmetricTensor<2, dim> &stress,
                   ArrayView<double>        internal) const = 0;
 
+    /**
+     * update_stress() at @p F.size() points at once (an FEM region's
+     * cell), each with its n_internal = internal.size() / F.size() internal
+     * variables in turn. Point by point unless a model overrides it to let
+     * the compiler overlap the points' work.
+     */
+    virtual void
+    update_stresses(const ArrayView<const Tensor<2, dim>>    &L,
+                    const ArrayView<const Tensor<2, dim>>    &F,
+                    const double                              dt,
+                    const ArrayView<SymmetricTensor<2, dim>> &stress,
+                    const ArrayView<double>                  &internal) const
+    {
+      const std::size_t n_internal = internal.size() / F.size();
+      for (std::size_t q = 0; q < F.size(); ++q)
+        update_stress(L[q],
+                      F[q],
+                      dt,
+                      stress[q],
+                      ArrayView<double>(internal.begin() + q * n_internal,
+                                        n_internal));
+    }
+
     /** Dilatational (P-)wave speed at the current state. */
     virtual double
     wave_speed(const Tensor<2, dim> &F) const = 0;

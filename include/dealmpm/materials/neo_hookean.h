@@ -23,6 +23,13 @@ namespace dealmpm
                   SymmetricTensor<2, dim> &stress,
                   ArrayView<double>        internal) const override;
 
+    /** The points in one loop (the stress of each from its F alone). */
+    void
+    update_stresses(const ArrayView<const Tensor<2, dim>>    &L,
+                    const ArrayView<const Tensor<2, dim>>    &F,
+                    const double                              dt,
+                    const ArrayView<SymmetricTensor<2, dim>> &stress,
+                    const ArrayView<double> &internal) const override;
     /** From the tangent moduli at the current J: stiffer in compression. */
     double
     wave_speed(const Tensor<2, dim> &F) const override;
