@@ -15,6 +15,8 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
+
 #include "test_scene.h"
 
 using namespace dealmpm;
@@ -296,4 +298,50 @@ end
           EXPECT_EQ(apart.second, 1u);
         }
     }
+}
+
+// The 3D smallest stretch takes lambda_0 lambda_1 from an inlined copy of
+// deal.II's eigenvalues(): the same number to the bit for symmetric
+// tensors of every kind (C = F^T F near and far from I, diagonal ones,
+// repeated eigenvalues, indefinite ones), so that the time step of a
+// total-Lagrangian body or an FEM region does not change.
+TEST(TotalLagrangian, TwoLargestEigenvaluesAsDealII)
+{
+  std::mt19937                           rng(17);
+  std::uniform_real_distribution<double> entry(-1., 1.);
+  std::vector<SymmetricTensor<2, 3>>     tensors;
+  for (const double spread : {1e-8, 1e-3, 0.3, 2.})
+    for (unsigned int trial = 0; trial < 200; ++trial)
+      {
+        Tensor<2, 3> F;
+        for (unsigned int i = 0; i < 3; ++i)
+          for (unsigned int j = 0; j < 3; ++j)
+            F[i][j] = (i == j ? 1. : 0.) + spread * entry(rng);
+        tensors.push_back(symmetrize(transpose(F) * F));
+        SymmetricTensor<2, 3> T; // indefinite
+        for (unsigned int i = 0; i < 3; ++i)
+          for (unsigned int j = i; j < 3; ++j)
+            T[i][j] = spread * entry(rng);
+        tensors.push_back(T);
+      }
+  SymmetricTensor<2, 3> diagonal;
+  diagonal[0][0] = 0.5, diagonal[1][1] = 3., diagonal[2][2] = 0.5;
+  tensors.push_back(diagonal);
+  tensors.push_back(unit_symmetric_tensor<3>());
+  // diag(2, 2, 1) rotated: two equal eigenvalues, off-diagonal entries.
+  Tensor<2, 3> R;
+  R[0][0] = R[1][1] = std::cos(0.3);
+  R[1][0]           = std::sin(0.3);
+  R[0][1]           = -R[1][0];
+  R[2][2]           = 1.;
+  Tensor<2, 3> D;
+  D[0][0] = D[1][1] = 2., D[2][2] = 1.;
+  tensors.push_back(symmetrize(R * D * transpose(R)));
+  unsigned int differ = 0;
+  for (const SymmetricTensor<2, 3> &T : tensors)
+    {
+      const auto lambda = eigenvalues(T); // descending
+      differ += product_of_two_largest_eigenvalues(T) != lambda[0] * lambda[1];
+    }
+  EXPECT_EQ(differ, 0u);
 }
