@@ -142,18 +142,23 @@ namespace dealmpm
 
   template <int dim>
   std::string
-  write_pieces(const DataOut<dim> &data_out,
-               const std::string  &directory,
-               const std::string  &base,
-               const MPI_Comm      comm,
-               const OutputFormat  format,
-               const double        time)
+  write_pieces(DataOut<dim>      &data_out,
+               const std::string &directory,
+               const std::string &base,
+               const MPI_Comm     comm,
+               const OutputFormat format,
+               const double       time)
   {
     if (format == OutputFormat::hdf5)
       return write_hdf5(data_out, directory, base, comm, time);
     const auto piece = [&](const unsigned int r) {
       return base + "." + Utilities::int_to_string(r) + ".vtu";
     };
+    // zlib's fastest level: at deal.II's default (best compression) a 3D
+    // region of 32k cells spent 1.7 s of each output in deflate.
+    DataOutBase::VtkFlags flags;
+    flags.compression_level = DataOutBase::VtkFlags::best_speed;
+    data_out.set_flags(flags);
     std::ostringstream vtu;
     data_out.write_vtu(vtu);
     OutputFile piece_file(directory + "/" +
@@ -223,7 +228,7 @@ namespace dealmpm
                                          unsigned int,                \
                                          OutputFormat,                \
                                          double);                     \
-  template std::string write_pieces(const DataOut<dim> &,             \
+  template std::string write_pieces(DataOut<dim> &,                   \
                                     const std::string &,              \
                                     const std::string &,              \
                                     MPI_Comm,                         \

@@ -32,10 +32,10 @@ namespace dealmpm
    * Collective for hdf5 (which throws OutputError on every rank). */
   template <int dim>
   std::string
-  write_pieces(const DataOut<dim> &data_out,
-               const std::string  &directory,
-               const std::string  &base,
-               const MPI_Comm      comm,
-               const OutputFormat  format,
-               const double        time);
+  write_pieces(DataOut<dim>      &data_out,
+               const std::string &directory,
+               const std::string &base,
+               const MPI_Comm     comm,
+               const OutputFormat format,
+               const double       time);
 } // namespace dealmpm
