@@ -12,10 +12,10 @@ a step does for the region (its force loop, its update, the time step's
 rate) and the tiny rest. Best of N runs (default 3), the binaries
 interleaved, so that a comparison on a shared machine holds.
 """
+import argparse
 import os
 import re
 import subprocess
-import sys
 import tempfile
 
 SCENE = """set Dimension             = {dim}
@@ -67,8 +67,8 @@ def scene(dim, n, degree, folder):
             gravity=", ".join(["0"] * (dim - 1) + ["-9.81"]),
             grid=", ".join(["1.2"] * dim), grid_cells=", ".join(["2"] * dim),
             region=ones, bottom=2 * (dim - 1),
-            body_low=", ".join(["0.6"] * (dim - 1) + ["1.05"]),
-            body_high=", ".join(["0.65"] * (dim - 1) + ["1.1"]),
+            body_low=", ".join(["0.6"] * (dim - 1) + ["1.02"]),
+            body_high=", ".join(["0.9"] * (dim - 1) + ["1.2"]),
             end=4e-3 if dim == 2 else 6e-3,
             out=os.path.join(folder, "out")))
     return path, n ** dim
@@ -86,14 +86,12 @@ def microseconds_per_cell_step(dealmpm, path, cells):
 
 
 def main():
-    args = sys.argv[1:]
-    repeats = 3
-    if "--repeats" in args:
-        i = args.index("--repeats")
-        repeats = int(args[i + 1])
-        del args[i:i + 2]
-    if not args:
-        sys.exit(__doc__)
+    parser = argparse.ArgumentParser(
+        description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
+    parser.add_argument("binaries", nargs="+", help="dealmpm programs")
+    parser.add_argument("--repeats", type=int, default=3)
+    options = parser.parse_args()
+    args, repeats = options.binaries, options.repeats
     with tempfile.TemporaryDirectory() as folder:
         cases = [(2, 200, 1), (3, 32, 1), (2, 100, 2), (3, 16, 2)]
         scenes = [(case, *scene(*case, folder)) for case in cases]
