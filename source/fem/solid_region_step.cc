@@ -23,29 +23,24 @@ namespace dealmpm
 
   namespace
   {
-    /** What a cell's quadrature points say about the stable step: the
-     * largest wave speed and the smallest stretch. */
+    /** A cell's signal rate from its points' deformation gradients @p F:
+     * the largest wave speed over the smallest node spacing, in the
+     * current configuration's scale (the smallest stretch). Gauss-Lobatto
+     * points of degree k are closer than h / k near the vertices (the
+     * factor for k = 1, 2 is 1). */
     template <int dim>
-    struct CellSignal
+    double
+    cell_signal_rate(const Material<dim>                   &material,
+                     const ArrayView<const Tensor<2, dim>> &F,
+                     const unsigned int                     degree,
+                     const double                           min_vertex_distance)
     {
-      double wave_speed = 0, stretch = 1;
-
-      void
-      add(const Material<dim> &material, const Tensor<2, dim> &F)
-      {
-        wave_speed = std::max(wave_speed, material.wave_speed(F));
-        stretch    = std::min(stretch, smallest_stretch(F));
-      }
-
-      /** Over the smallest node spacing: Gauss-Lobatto points of degree k
-       * are closer than h / k near the vertices (the factor for k = 1, 2 is
-       * 1), in the current configuration's scale. */
-      double
-      rate(const unsigned int degree, const double min_vertex_distance) const
-      {
-        return wave_speed * degree / (stretch * min_vertex_distance);
-      }
-    };
+      double stretch = 1;
+      for (const Tensor<2, dim> &f : F)
+        stretch = std::min(stretch, smallest_stretch(f));
+      return material.max_wave_speed(F) * degree /
+             (stretch * min_vertex_distance);
+    }
   } // namespace
 
   template <int dim>
@@ -54,15 +49,13 @@ namespace dealmpm
   {
     const ReferenceData &r = reference;
     signal_rate            = 0;
-    for (std::size_t c = 0, k = 0; c < r.centre.size(); ++c)
-      {
-        CellSignal<dim> signal;
-        for (unsigned int q = 0; q < r.n_q; ++q, ++k)
-          signal.add(material, deformation[k]);
-        signal_rate =
-          std::max(signal_rate,
-                   signal.rate(fe.degree, r.min_vertex_distance[c]));
-      }
+    for (std::size_t c = 0; c < r.centre.size(); ++c)
+      signal_rate = std::max(signal_rate,
+                             cell_signal_rate(material,
+                                              ArrayView<const Tensor<2, dim>>(
+                                                &deformation[c * r.n_q], r.n_q),
+                                              fe.degree,
+                                              r.min_vertex_distance[c]));
   }
 
   template <int dim>
@@ -222,9 +215,6 @@ namespace dealmpm
         dt,
         ArrayView<SymmetricTensor<2, dim>>(&stress[k], n),
         ArrayView<double>(internal.data() + k * n_internal, n * n_internal));
-    // The rate of the F made here is the next step's (the same F as
-    // update_signal_rate() would read back).
-    CellSignal<dim> signal;
     for (unsigned int q = 0; q < n; ++q)
       {
         deformation[k + q] = F[q];
@@ -233,7 +223,6 @@ namespace dealmpm
         for (unsigned int a = 0; a < dim; ++a)
           for (unsigned int b = 0; b < dim; ++b)
             cell.P[a][b][q] = P[a][b];
-        signal.add(material, F[q]);
       }
     cell.make_shares(grad, &r.JxW[k]);
     for (unsigned int s = 0; s < n; ++s)
@@ -244,7 +233,12 @@ namespace dealmpm
             f -= cell.share[a][s][q];
           force.local_element(dofs[s * dim + a]) += f;
         }
-    return signal.rate(fe.degree, r.min_vertex_distance[c]);
+    // The rate of the F made here is the next step's (the same F as
+    // update_signal_rate() would read back).
+    return cell_signal_rate(material,
+                            ArrayView<const Tensor<2, dim>>(F.data(), n),
+                            fe.degree,
+                            r.min_vertex_distance[c]);
   }
 
   template <int dim>

@@ -62,17 +62,37 @@ namespace dealmpm
       stress[q] = neo_hookean_stress(lame, F[q]);
   }
 
+  namespace
+  {
+    /** Tangent P-wave modulus over current density: (lambda + 2 (mu -
+     * lambda ln J)) / J divided by rho0 / J; at least the small-strain
+     * one. */
+    template <int dim>
+    inline double
+    neo_hookean_modulus(const LameParameters &lame, const Tensor<2, dim> &F)
+    {
+      const double modulus =
+        lame.lambda + 2. * (lame.mu - lame.lambda * std::log(determinant(F)));
+      return std::max(modulus, lame.lambda + 2. * lame.mu);
+    }
+  } // namespace
+
   template <int dim>
   double
   NeoHookean<dim>::wave_speed(const Tensor<2, dim> &F) const
   {
-    // Tangent P-wave modulus over current density: (lambda + 2 (mu - lambda
-    // ln J)) / J divided by rho0 / J.
-    const double J = determinant(F);
-    const double modulus =
-      lame.lambda + 2. * (lame.mu - lame.lambda * std::log(J));
-    return std::sqrt(std::max(modulus, lame.lambda + 2. * lame.mu) /
-                     this->density);
+    return std::sqrt(neo_hookean_modulus(lame, F) / this->density);
+  }
+
+  template <int dim>
+  double
+  NeoHookean<dim>::max_wave_speed(
+    const ArrayView<const Tensor<2, dim>> &F) const
+  {
+    double largest = 0;
+    for (const Tensor<2, dim> &f : F)
+      largest = std::max(largest, neo_hookean_modulus(lame, f));
+    return F.size() == 0 ? 0. : std::sqrt(largest / this->density);
   }
 
   template <int dim>

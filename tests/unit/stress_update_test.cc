@@ -170,6 +170,28 @@ namespace
     return differ;
   }
 
+  /** Whether max_wave_speed() of @p material over points near I (some
+   * stretched, some compressed) is the largest wave_speed() to the bit. */
+  template <int dim>
+  bool
+  max_wave_speed_is_largest(const Material<dim> &material)
+  {
+    std::mt19937                           rng(7);
+    std::uniform_real_distribution<double> entry(-0.2, 0.2);
+    std::vector<Tensor<2, dim>>            F(8);
+    double                                 largest = 0;
+    for (Tensor<2, dim> &f : F)
+      {
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = 0; j < dim; ++j)
+            f[i][j] = (i == j ? 1. : 0.) + entry(rng);
+        largest = std::max(largest, material.wave_speed(f));
+      }
+    return material.max_wave_speed(make_array_view(std::as_const(F))) ==
+             largest &&
+           material.max_wave_speed(ArrayView<const Tensor<2, dim>>()) == 0.;
+  }
+
   /** The neo-Hookean stress against its tensor expression
    * mu / J (B - I) + lambda ln(J) / J I: entries that differ. */
   template <int dim>
@@ -218,4 +240,29 @@ TEST(StressUpdate, CellBatchEqualsPointByPoint)
   EXPECT_EQ(batch_differs_from_points<3>(J2Plasticity<3>(lame, hardening)), 0u);
   EXPECT_EQ(neo_hookean_differs_from_expression<2>(), 0u);
   EXPECT_EQ(neo_hookean_differs_from_expression<3>(), 0u);
+}
+
+// A region's cell takes the largest wave speed of its points in one call:
+// the models that take the square root once (neo-Hookean, linear elastic)
+// and the default (J2 plasticity) give the largest point value to the bit.
+TEST(StressUpdate, CellMaxWaveSpeedEqualsLargestPoint)
+{
+  NeoHookean<2>    neo_2(lame);
+  NeoHookean<3>    neo_3(lame);
+  LinearElastic<2> linear_2(lame);
+  LinearElastic<3> linear_3(lame);
+  J2Plasticity<2>  j2_2(lame, IsotropicHardening{1e5, 1e6});
+  J2Plasticity<3>  j2_3(lame, IsotropicHardening{1e5, 1e6});
+  for (Material<2> *m :
+       std::initializer_list<Material<2> *>{&neo_2, &linear_2, &j2_2})
+    {
+      m->density = 1000;
+      EXPECT_TRUE(max_wave_speed_is_largest<2>(*m));
+    }
+  for (Material<3> *m :
+       std::initializer_list<Material<3> *>{&neo_3, &linear_3, &j2_3})
+    {
+      m->density = 1000;
+      EXPECT_TRUE(max_wave_speed_is_largest<3>(*m));
+    }
 }

@@ -71,6 +71,18 @@ namespace dealmpm
                        this->density);
     }
 
+    /** The root taken once, of the largest J (see Material). */
+    double
+    max_wave_speed(const ArrayView<const Tensor<2, dim>> &F) const override
+    {
+      double largest_J = 0;
+      for (const Tensor<2, dim> &f : F)
+        largest_J = std::max(largest_J, determinant(f));
+      return F.size() == 0 ? 0. :
+                             std::sqrt((lame.lambda + 2. * lame.mu) *
+                                       largest_J / this->density);
+    }
+
     /** The integrated stress power. */
     /** In plane strain d sigma_zz = dt lambda tr(D) = nu d(sigma_xx +
      * sigma_yy), so sigma_zz = nu (sigma_xx + sigma_yy) from a stress-free

@@ -7,6 +7,7 @@
 #include <dealmpm/base/property_layout.h>
 #include <dealmpm/base/registry.h>
 
+#include <algorithm>
 #include <memory>
 #include <string>
 #include <vector>
@@ -78,6 +79,20 @@ namespace dealmpm
     /** Dilatational (P-)wave speed at the current state. */
     virtual double
     wave_speed(const Tensor<2, dim> &F) const = 0;
+
+    /** The largest wave_speed() over the points @p F (an FEM region's
+     * cell; zero for none). Point by point unless a model whose speed is
+     * the square root of a modulus takes the root once: sqrt and the
+     * division by the density are monotone and correctly rounded, so the
+     * largest is the same number. */
+    virtual double
+    max_wave_speed(const ArrayView<const Tensor<2, dim>> &F) const
+    {
+      double largest = 0;
+      for (const Tensor<2, dim> &f : F)
+        largest = std::max(largest, wave_speed(f));
+      return largest;
+    }
 
     /**
      * The out-of-plane normal stress sigma_zz of a plane-strain (2D) point.

@@ -33,6 +33,9 @@ namespace dealmpm
     /** From the tangent moduli at the current J: stiffer in compression. */
     double
     wave_speed(const Tensor<2, dim> &F) const override;
+    /** The root taken once, of the largest modulus (see Material). */
+    double
+    max_wave_speed(const ArrayView<const Tensor<2, dim>> &F) const override;
 
     /** lambda ln(J) / J (F_zz = 1). */
     double
