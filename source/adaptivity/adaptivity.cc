@@ -3,6 +3,7 @@
 #include <deal.II/lac/la_parallel_vector.h>
 
 #include <dealmpm/adaptivity/adaptivity.h>
+#include <dealmpm/transfer/stencil_order.h>
 
 #include <algorithm>
 #include <cctype>
@@ -57,11 +58,12 @@ namespace dealmpm
       target_levels(const AdaptivityContext<dim> &context,
                     std::vector<int>             &levels) const override
       {
-        const BackgroundGrid<dim> &grid = context.grid;
-        std::vector<bool>          inside(grid.cells.size());
+        const BackgroundGrid<dim>                         &grid = context.grid;
+        const ParticlesByCell<dim, const ParticleSet<dim>> particles(
+          grid, context.particles);
+        std::vector<bool> inside(grid.cells.size());
         for (std::size_t i = 0; i < grid.cells.size(); ++i)
-          inside[i] = context.particles.handler.n_particles_in_cell(
-                        grid.cells[i].cell) > 0;
+          inside[i] = !particles.empty(i);
         LinearAlgebra::distributed::Vector<double> marked(grid.partitioner);
         std::vector<types::global_dof_index>       dofs(
           GeometryInfo<dim>::vertices_per_cell);
@@ -96,6 +98,12 @@ namespace dealmpm
         const int wanted = level < 0 ? context.max_level : level;
         for (std::size_t i = 0; i < grid.cells.size(); ++i)
           levels[i] = inside[i] ? wanted : context.min_level;
+      }
+
+      bool
+      reads_handler_lists() const override
+      {
+        return false;
       }
 
     private:
@@ -406,6 +414,67 @@ namespace dealmpm
     return true;
   }
 
+  template <int dim>
+  bool
+  flags_may_change_grid(const BackgroundGrid<dim> &grid)
+  {
+    std::vector<bool> coarsen(grid.cells.size());
+    for (std::size_t i = 0; i < grid.cells.size(); ++i)
+      {
+        if (grid.cells[i].cell->refine_flag_set())
+          return true;
+        coarsen[i] = grid.cells[i].cell->coarsen_flag_set() &&
+                     grid.cells[i].cell->level() > 0;
+      }
+    // Where each active cell is in grid.cells (siblings are found by
+    // iterator).
+    std::vector<unsigned int> index(grid.triangulation.n_active_cells(),
+                                    numbers::invalid_unsigned_int);
+    for (std::size_t i = 0; i < grid.cells.size(); ++i)
+      index[grid.cells[i].cell->active_cell_index()] = i;
+    std::vector<int> vertex_level(grid.triangulation.n_vertices());
+    bool             undone = true;
+    while (undone)
+      {
+        undone = false;
+        // Each vertex's finest level after the flags; a ghost counts as
+        // coarsened (its flags are not known here), the least it can be.
+        std::fill(vertex_level.begin(), vertex_level.end(), -1);
+        const auto touch = [&](const auto &cell, const int level) {
+          for (const unsigned int v : cell->vertex_indices())
+            vertex_level[cell->vertex_index(v)] =
+              std::max(vertex_level[cell->vertex_index(v)], level);
+        };
+        for (std::size_t i = 0; i < grid.cells.size(); ++i)
+          touch(grid.cells[i].cell, grid.cells[i].cell->level() - coarsen[i]);
+        for (const GridCell<dim> &c : grid.ghost_cells)
+          touch(c.cell, c.cell->level() - 1);
+        for (std::size_t i = 0; i < grid.cells.size(); ++i)
+          {
+            if (!coarsen[i])
+              continue;
+            const auto &cell = grid.cells[i].cell;
+            bool        keep = true;
+            for (const unsigned int v : cell->vertex_indices())
+              keep =
+                keep && vertex_level[cell->vertex_index(v)] <= cell->level();
+            // A family coarsens whole: a sibling that is refined, or owned
+            // here and kept, keeps this one (one owned elsewhere may be
+            // flagged).
+            for (const auto &sibling : cell->parent()->child_iterators())
+              keep = keep && sibling->is_active() &&
+                     (!sibling->is_locally_owned() ||
+                      coarsen[index[sibling->active_cell_index()]]);
+            if (!keep)
+              {
+                coarsen[i] = false;
+                undone     = true;
+              }
+          }
+      }
+    return std::find(coarsen.begin(), coarsen.end(), true) != coarsen.end();
+  }
+
 #define DEALMPM_INSTANTIATE(dim)                                           \
   template Registry<RefinementCriterion<dim>>                              \
     &refinement_criterion_registry<dim>();                                 \
@@ -414,7 +483,8 @@ namespace dealmpm
                                           const AdaptivityContext<dim> &); \
   template bool             flag_cells(const BackgroundGrid<dim> &,        \
                                        const std::vector<int> &,           \
-                                       const double);
+                                       const double);                      \
+  template bool             flags_may_change_grid(const BackgroundGrid<dim> &);
   DEALMPM_INSTANTIATE(2)
   DEALMPM_INSTANTIATE(3)
 #undef DEALMPM_INSTANTIATE

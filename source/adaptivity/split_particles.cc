@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <dealmpm/adaptivity/split_particles.h>
+#include <dealmpm/transfer/stencil_order.h>
 
 #include <algorithm>
 #include <array>
@@ -16,24 +17,57 @@ namespace dealmpm
     using ParticleIterator =
       typename Particles::ParticleHandler<dim>::particle_iterator;
 
+    /** Whether each of the 2^dim parts of a particle of current volume
+     * @p volume would still fill at least half of a particle's share of
+     * a cell of measure @p cell_measure. */
+    template <int dim>
+    bool
+    too_large(const double       volume,
+              const double       cell_measure,
+              const unsigned int particles_per_direction)
+    {
+      const double per_cell = std::pow(double(particles_per_direction), dim);
+      return volume / (1u << dim) >= 0.5 * cell_measure / per_cell;
+    }
+
+    /** How many particles are too_large() for their cells, walked in the
+     * step's order (deal.II's lists may lag behind it). */
+    template <int dim>
+    std::size_t
+    n_to_split(const BackgroundGrid<dim> &grid,
+               const ParticleSet<dim>    &particles,
+               const unsigned int         particles_per_direction)
+    {
+      const ParticlesByCell<dim, const ParticleSet<dim>> by_cell(grid,
+                                                                 particles);
+      std::size_t                                        n = 0;
+      for (std::size_t i = 0; i < grid.cells.size(); ++i)
+        by_cell.for_each(i, [&](const auto &p) {
+          n += too_large<dim>(current_volume<dim>(p.get_properties().data(),
+                                                  particles.fields),
+                              grid.cells[i].measure,
+                              particles_per_direction);
+        });
+      return n;
+    }
+
     /** The particles each of whose 2^dim parts would still fill at least
-     * half of a particle's share of the cell. */
+     * half of a particle's share of the cell (too_large()). */
     template <int dim>
     std::vector<ParticleIterator<dim>>
     particles_to_split(const BackgroundGrid<dim> &grid,
                        ParticleSet<dim>          &particles,
                        const unsigned int         particles_per_direction)
     {
-      constexpr unsigned int n_parts = 1u << dim;
-      const CoreFields      &f       = particles.fields;
-      const double per_cell = std::pow(double(particles_per_direction), dim);
+      const CoreFields                  &f = particles.fields;
       std::vector<ParticleIterator<dim>> parents;
       for (const GridCell<dim> &c : grid.cells)
         for (auto p = particles.handler.particles_in_cell(c.cell).begin();
              p != particles.handler.particles_in_cell(c.cell).end();
              ++p)
-          if (current_volume<dim>(p->get_properties().data(), f) / n_parts >=
-              0.5 * c.measure / per_cell)
+          if (too_large<dim>(current_volume<dim>(p->get_properties().data(), f),
+                             c.measure,
+                             particles_per_direction))
             parents.push_back(p);
       return parents;
     }
@@ -108,18 +142,17 @@ namespace dealmpm
                   const unsigned int         particles_per_direction)
   {
     constexpr unsigned int n_parts = 1u << dim;
+    // Nothing to split anywhere (the usual case between refinements): no
+    // sort either.
+    const double n_split = Utilities::MPI::sum(
+      double(n_to_split(grid, particles, particles_per_direction)), grid.comm);
+    if (n_split == 0)
+      return 0;
     particles.update_handler(grid); // walked cell by cell below
 
     // The parents first: inserting would invalidate the iterators.
     std::vector<ParticleIterator<dim>> parents =
       particles_to_split(grid, particles, particles_per_direction);
-
-    // Nothing to split anywhere: no sort either (the usual case between
-    // refinements).
-    const double n_split =
-      Utilities::MPI::sum(double(parents.size()), grid.comm);
-    if (n_split == 0)
-      return 0;
 
     // Ids above every id in use, each parent's parts in a range of its
     // own: the same ids on any number of ranks.

@@ -57,9 +57,15 @@ namespace dealmpm
   Simulation<dim>::change_grid_to_criteria()
   {
     bool changed = false;
-    particles->update_handler(grid); // the criteria count each cell's particles
     {
       const auto t = timed(computing_timer.get(), "adaptivity: criteria");
+      // A user's criterion may ask deal.II's handler for a cell's
+      // particles; the built-in ones walk the step's order, and deal.II's
+      // sort (tens of ms a call on large grids) runs only before a change.
+      if (std::any_of(adaptivity.criteria.begin(),
+                      adaptivity.criteria.end(),
+                      [](const auto &c) { return c->reads_handler_lists(); }))
+        particles->update_handler(grid);
       const std::vector<int> levels =
         target_levels(adaptivity,
                       AdaptivityContext<dim>{grid,
@@ -76,12 +82,19 @@ namespace dealmpm
           cell_limit_warned = true;
         }
       // Coarsening flags of incomplete families go, and the level rule
-      // may add refinement: count what will change.
-      grid.triangulation.prepare_coarsening_and_refinement();
-      double flagged = 0;
-      for (const GridCell<dim> &c : grid.cells)
-        flagged += c.cell->refine_flag_set() || c.cell->coarsen_flag_set();
-      changed = Utilities::MPI::sum(flagged, comm) > 0;
+      // may add refinement: count what will change. deal.II's preparation
+      // walks the whole grid several times, so only when it may matter.
+      if (Utilities::MPI::logical_or(flags_may_change_grid(grid), comm))
+        {
+          grid.triangulation.prepare_coarsening_and_refinement();
+          double flagged = 0;
+          for (const GridCell<dim> &c : grid.cells)
+            flagged += c.cell->refine_flag_set() || c.cell->coarsen_flag_set();
+          changed = Utilities::MPI::sum(flagged, comm) > 0;
+        }
+      else
+        for (const GridCell<dim> &c : grid.cells)
+          c.cell->clear_coarsen_flag(); // as deal.II would have
     }
     if (changed)
       change_grid([](Triangulation<dim> &) {});
@@ -98,15 +111,20 @@ namespace dealmpm
       throw RunError(step_and_time(loop.step, loop.time) +
                      ": the grid cannot change under 'MPM/Formulation = total "
                      "Lagrangian': its stencil belongs to the reference grid");
-    // The flags may be set from the particles in each cell, and deal.II
-    // moves the particles with their cells.
-    particles->update_handler(grid);
-    set_flags(grid.triangulation);
-    grid.triangulation.prepare_coarsening_and_refinement();
-    particles->handler.prepare_for_coarsening_and_refinement();
-    grid.triangulation.execute_coarsening_and_refinement();
-    particles->handler.unpack_after_coarsening_and_refinement();
-    particles->changed();
+    {
+      // The flags may be set from the particles in each cell, and deal.II
+      // moves the particles with their cells. Its execute prepares the
+      // flags itself.
+      const auto t_dealii =
+        timed(computing_timer.get(), "grid change: deal.II and p4est");
+      particles->update_handler(grid);
+      set_flags(grid.triangulation);
+      particles->handler.prepare_for_coarsening_and_refinement();
+      grid.triangulation.execute_coarsening_and_refinement();
+      particles->handler.unpack_after_coarsening_and_refinement();
+      particles->changed();
+    }
+    const auto t_rebuild = timed(computing_timer.get(), "grid change: rebuild");
     rebuild_after_grid_change();
   }
 

@@ -227,7 +227,8 @@ namespace dealmpm
                               run_settings.checks.memory_limit,
                               comm);
       },
-      saved != nullptr ? &saved_grid : nullptr);
+      saved != nullptr ? &saved_grid : nullptr,
+      adaptivity.enabled());
     const std::string problem =
       kernel.setup(run_settings.method.shape_function, grid);
     if (!problem.empty())

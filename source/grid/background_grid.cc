@@ -37,15 +37,18 @@ namespace dealmpm
     declare_mesh_entries<dim>(prm);
     prm.declare_entry(
       "Most coarse cells",
-      "1e5",
-      Patterns::Double(1),
+      "auto",
+      Patterns::Anything(),
       "Rectangle: a grid of more cells is made of fewer coarse cells (Cells "
       "divided by the least power of two they share that leaves at most "
       "this many) refined back to Cells. Every rank holds every coarse cell "
       "(about 1 KB each) and only its share of the rest, so large grids need "
       "this on many ranks. But a refined grid ran the 3D column at 0.71-0.83 "
       "of the speed on one rank (62k-147k cells, benchmarks/README.md): "
-      "lower it on clusters, raise it on one machine.");
+      "lower it on clusters, raise it on one machine. 'auto': 1e5, or 1 "
+      "(as few as the counts allow) when 'Adaptivity/Criteria' lists one: "
+      "p4est's balance across coarse cells is the largest part of a grid "
+      "change (3D, 16k cells: 8,000 coarse cells 268 ms, 125 166 ms).");
     prm.declare_entry("Global refinements",
                       "0",
                       Patterns::Integer(0, 12),
@@ -68,12 +71,35 @@ namespace dealmpm
     prm.leave_subsection();
   }
 
+  namespace
+  {
+    /** 'Most coarse cells' (the reader in section Grid). */
+    double
+    most_coarse_cells(const SceneReader &reader, const bool adaptive)
+    {
+      const std::string entry = "Most coarse cells";
+      if (reader.get(entry) == "auto")
+        return adaptive ? 1 : 1e5;
+      double value = 0;
+      try
+        {
+          value = Utilities::string_to_double(reader.get(entry));
+        }
+      catch (...)
+        {}
+      if (!(value >= 1 && std::isfinite(value)))
+        reader.fail(entry, "'auto' or a number >= 1");
+      return value;
+    }
+  } // namespace
+
   template <int dim>
   void
   BackgroundGrid<dim>::create(
     SceneReader                                      &reader,
     const std::function<void(const GridSize<dim> &)> &before_allocating,
-    const SavedGrid                                  *saved)
+    const SavedGrid                                  *saved,
+    const bool                                        adaptive)
   {
     SectionScope grid(reader, "Grid");
     base_level = read_coarse_mesh<dim>(
@@ -83,7 +109,7 @@ namespace dealmpm
         before_allocating(refined_size(reader, n_cells, box));
       },
       max_coarse_refinements(reader),
-      reader.get_positive("Most coarse cells"));
+      most_coarse_cells(reader, adaptive));
     coarse_checksum = checksum_of_coarse_grid();
     if (saved != nullptr)
       {
@@ -93,7 +119,8 @@ namespace dealmpm
             ": the coarse grid (section 'Grid', its mesh file) differs from "
             "the saved run's (" +
             saved->file +
-            "; a checkpoint written before 2026-11-29, when a rectangle had "
+            "; a checkpoint written before 2026-11-29, or of a scene with "
+            "'Adaptivity/Criteria' before 2026-11-30, when a rectangle had "
             "a coarse cell per cell, cannot be resumed: run it again)");
         // The saved cells and partition; a different number of ranks
         // gets the cells shared by count (the caller repartitions).

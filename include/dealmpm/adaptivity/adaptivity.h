@@ -50,6 +50,17 @@ namespace dealmpm
     virtual void
     target_levels(const AdaptivityContext<dim> &context,
                   std::vector<int>             &levels) const = 0;
+
+    /** Whether target_levels() asks deal.II's particle handler for a
+     * cell's particles (particles_in_cell(), n_particles_in_cell()): its
+     * lists are then sorted first, which costs about as much as a step.
+     * A criterion that walks the step's order instead (ParticlesByCell in
+     * transfer/stencil_order.h, as 'particles' does) says false. */
+    virtual bool
+    reads_handler_lists() const
+    {
+      return true;
+    }
   };
 
   /** The registered criteria; each reads its parameters from
@@ -107,4 +118,21 @@ namespace dealmpm
   flag_cells(const BackgroundGrid<dim> &grid,
              const std::vector<int>    &levels,
              const double               max_cells);
+
+  /**
+   * Whether the refinement and coarsening flags of this rank's cells may
+   * change the grid: false when deal.II's preparation of them would
+   * surely undo them all. The level rule at vertices undoes a coarsening
+   * that would leave two levels between cells sharing a vertex, and a
+   * family coarsens whole. The 'particles' criterion flags just such
+   * cells most of the time (the layer between fine and coarse cells), and
+   * deal.II's preparation walks the grid several times to find that out
+   * (about 80 % of a criteria call that changes nothing). This undoes a
+   * part of what deal.II undoes (a ghost counts as coarsened and a sibling
+   * owned elsewhere as flagged, whatever their flags), so a false is
+   * exact; a true says: ask deal.II. Not collective.
+   */
+  template <int dim>
+  bool
+  flags_may_change_grid(const BackgroundGrid<dim> &grid);
 } // namespace dealmpm

@@ -149,13 +149,16 @@ namespace dealmpm
      * grid's size before its cells are made (and may refuse it by
      * throwing). A @p saved grid (a resumed run's) replaces the scene's
      * refinement with its own cells and partition, after its coarse grid
-     * is found to be this scene's (else InputError). */
+     * is found to be this scene's (else InputError). An @p adaptive grid
+     * (one that 'Adaptivity' will change) is made of as few coarse cells
+     * as its counts allow unless 'Most coarse cells' says otherwise. */
     void
     create(
       SceneReader                                      &reader,
       const std::function<void(const GridSize<dim> &)> &before_allocating =
         [](const GridSize<dim> &) {},
-      const SavedGrid *saved = nullptr);
+      const SavedGrid *saved    = nullptr,
+      bool             adaptive = false);
 
     /** (Re)build DoFs, constraints, the node layout and the cell data, and
      * forget the neighbour tables (the shape function asks for them again),
