@@ -5,6 +5,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <dealmpm/adaptivity/split_particles.h>
+#include <dealmpm/transfer/stencil_order.h>
 
 #include <gtest/gtest.h>
 
@@ -267,4 +268,132 @@ TEST(Adaptivity, RefusedWhereItCannotWork)
   EXPECT_THROW(test::make_simulation<2>(
                  with + "Formulation = total Lagrangian\nend\n"),
                InputError);
+}
+
+namespace
+{
+  /** How many of this grid's owned cells carry a flag, over all ranks. */
+  double
+  n_flagged(const BackgroundGrid<2> &grid)
+  {
+    double n = 0;
+    for (const GridCell<2> &c : grid.cells)
+      n += c.cell->refine_flag_set() || c.cell->coarsen_flag_set();
+    return Utilities::MPI::sum(n, grid.comm);
+  }
+
+  /** Whether flags_may_change_grid() says "no" on some rank's behalf for
+   * all of them, that is whether deal.II's preparation is skipped. */
+  bool
+  predicted_unchanged(const BackgroundGrid<2> &grid)
+  {
+    return !Utilities::MPI::logical_or(flags_may_change_grid(grid), grid.comm);
+  }
+
+  /** deal.II's preparation of the flags, as the grid change runs it. */
+  void
+  prepare(const BackgroundGrid<2> &grid)
+  {
+    // The test's grid is the simulation's (const outside); only the flags
+    // change.
+    const_cast<parallel::distributed::Triangulation<2> &>(grid.triangulation)
+      .prepare_coarsening_and_refinement();
+  }
+} // namespace
+
+TEST(Adaptivity, FlagsThatDealIIWouldUndoAreSeenWithoutIt)
+{
+  // The block's grid: levels 2 (the block and its buffer), 1 (the layer
+  // the level rule needs) and 0.
+  auto simulation = test::make_simulation<2>(
+    corner_block + "subsection Grid\n set Cells = 12, 12\nend\n"
+                   "subsection Adaptivity\n subsection Particles\n"
+                   "  set Margin cells = 0\n end\nend\n");
+  const BackgroundGrid<2> &grid = simulation->background_grid();
+  // What the 'particles' criterion flags between two steps: the layer's
+  // cells (empty) to be coarsened, which the level rule undoes. Seen
+  // without deal.II.
+  flag_cells(
+    grid,
+    target_levels(
+      simulation->adaptivity_settings(),
+      AdaptivityContext<2>{grid, simulation->particle_set(), 0, 2, grid.comm}),
+    1e9);
+  EXPECT_GT(n_flagged(grid), 0);
+  EXPECT_TRUE(predicted_unchanged(grid));
+  prepare(grid);
+  EXPECT_EQ(n_flagged(grid), 0);
+
+  // Cells flagged for coarsening at random (the same on any number of
+  // ranks: by the cell's centre), from a few to most: a "no change" said
+  // without deal.II must be deal.II's answer too, and both answers must
+  // occur.
+  unsigned int n_skipped = 0, n_asked = 0, n_changed = 0;
+  for (unsigned int seed = 1; seed <= 60; ++seed)
+    {
+      for (const GridCell<2> &c : grid.cells)
+        {
+          c.cell->clear_refine_flag();
+          c.cell->clear_coarsen_flag();
+          if (c.cell->level() == 0)
+            continue;
+          const Point<2>     x = c.cell->center();
+          const unsigned int hash =
+            static_cast<unsigned int>(std::floor(x[0] * 1e4)) * 7919u +
+            static_cast<unsigned int>(std::floor(x[1] * 1e4)) * 104729u +
+            seed * 15485863u;
+          if ((hash >> 7) % 20 < seed % 20)
+            c.cell->set_coarsen_flag();
+        }
+      const bool skipped = predicted_unchanged(grid);
+      prepare(grid);
+      const double kept = n_flagged(grid);
+      if (skipped)
+        {
+          EXPECT_EQ(kept, 0) << "seed " << seed;
+          ++n_skipped;
+        }
+      else
+        ++n_asked;
+      n_changed += kept > 0;
+    }
+  for (const GridCell<2> &c : grid.cells)
+    c.cell->clear_coarsen_flag();
+  EXPECT_GT(n_skipped, 5u);
+  EXPECT_GT(n_changed, 5u);
+  EXPECT_GE(n_asked, n_changed);
+}
+
+TEST(Adaptivity, MarginChangesTheGridLessOftenAndKeepsParticlesOnFineCells)
+{
+  // The block flies across the grid (0.2 s at 2.2 m/s, about 3.5 coarse
+  // cells) and the grid is adapted every 5 steps: with a margin the grid
+  // changes only when particles near coarser cells, and at every step
+  // every particle is on a cell of the finest level.
+  unsigned int changes[2] = {0, 0};
+  for (const unsigned int margin : {0u, 1u})
+    {
+      auto simulation = test::make_simulation<2>(
+        corner_block +
+        "subsection Adaptivity\n set Steps between adaptations = 5\n"
+        " set Maximum level = 1\n subsection Particles\n  set Margin cells = " +
+        std::to_string(margin) +
+        "\n end\nend\nsubsection Body 1\n set Velocity = 2, 1\nend\n");
+      const BackgroundGrid<2> &grid = simulation->background_grid();
+      while (simulation->time() < 0.2)
+        {
+          simulation->advance(simulation->time_step());
+          if (simulation->step_number() % 5 == 0)
+            changes[margin] += simulation->adapt_grid();
+          const ParticlesByCell<2, const ParticleSet<2>> particles(
+            grid, simulation->particle_set());
+          for (std::size_t i = 0; i < grid.cells.size(); ++i)
+            if (!particles.empty(i))
+              ASSERT_EQ(grid.level(grid.cells[i].cell), 1)
+                << "margin " << margin << ", step "
+                << simulation->step_number();
+        }
+    }
+  EXPECT_GT(changes[1], 0u);
+  EXPECT_LT(2 * changes[1], changes[0]);
 }

@@ -64,6 +64,8 @@ expect 2 "Grid/Boundary conditions.*boundary ids the grid has \(0, 1, 2, 3\), no
 expect 2 "Grid/Global refinements.*at most 2e9" "$scene" "${s[@]}" -s "Grid/Cells=1000, 1000" -s "Grid/Global refinements=12"
 # Counts without a common power of two make every cell a coarse cell.
 expect 2 "Grid/Cells.*share a power of two.*400040001 coarse cells \(at most 2e8\)" "$scene" "${s[@]}" -s "Grid/Cells=20001, 20001"
+expect 2 "Grid/Most coarse cells.*'auto' or a number >= 1" "$scene" "${s[@]}" -s "Grid/Most coarse cells=many"
+expect 2 "Grid/Most coarse cells.*'auto' or a number >= 1" "$scene" "${s[@]}" -s "Grid/Most coarse cells=0.5"
 expect 2 "command line: -s '=1': expected 'Section/Entry=value'" "$scene" -s "=1"
 expect 2 "command line: -s 'Grid/=1'" "$scene" -s "Grid/=1"
 # A scene that sets nothing would run a built-in default: refused.

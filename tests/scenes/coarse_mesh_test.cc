@@ -125,3 +125,38 @@ TEST(GridChange, EachRankHoldsItsOwnCellsAndFewMore)
   EXPECT_LT(mesh.n_active_cells() - mesh.n_locally_owned_active_cells(),
             0.05 * 262144);
 }
+
+TEST(GridChange, AdaptiveRectangleIsTheFewestCoarseCells)
+{
+  // 'Most coarse cells = auto': with a criterion the rectangle is made of
+  // as few coarse cells as its counts allow (p4est's balance across
+  // coarse cells is most of a grid change); without, of at most 1e5.
+  const std::string grid = "subsection Grid\n set Upper corner = 1.2, 2\n"
+                           " set Cells = 24, 40\n";
+  const std::string body = "subsection Body 1\n set Lower corner = 0.1, 0.1\n"
+                           " set Upper corner = 0.2, 0.2\nend\n";
+  const std::string adaptive =
+    "subsection Adaptivity\n set Criteria = particles\n"
+    " set Maximum level = 1\nend\n";
+  {
+    auto simulation = test::make_simulation<2>(grid + "end\n" + body);
+    EXPECT_EQ(simulation->background_grid().base_level, 0u);
+  }
+  {
+    // 24 x 40 = 3 x 5 refined three times; the levels still count from
+    // the scene's cells.
+    auto simulation =
+      test::make_simulation<2>(grid + "end\n" + body + adaptive);
+    const BackgroundGrid<2> &mesh = simulation->background_grid();
+    EXPECT_EQ(mesh.base_level, 3u);
+    EXPECT_EQ(mesh.triangulation.n_cells(0), 15u);
+    for (const GridCell<2> &c : mesh.cells)
+      EXPECT_LE(mesh.level(c.cell), 1);
+    EXPECT_GT(mesh.triangulation.n_global_active_cells(), 960u);
+  }
+  {
+    auto simulation = test::make_simulation<2>(
+      grid + " set Most coarse cells = 1e5\nend\n" + body + adaptive);
+    EXPECT_EQ(simulation->background_grid().base_level, 0u);
+  }
+}

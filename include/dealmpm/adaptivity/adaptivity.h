@@ -128,9 +128,10 @@ namespace dealmpm
    * cells most of the time (the layer between fine and coarse cells), and
    * deal.II's preparation walks the grid several times to find that out
    * (about 80 % of a criteria call that changes nothing). This undoes a
-   * part of what deal.II undoes (a ghost counts as coarsened and a sibling
-   * owned elsewhere as flagged, whatever their flags), so a false is
-   * exact; a true says: ask deal.II. Not collective.
+   * part of what deal.II's preparation on this rank undoes, from the same
+   * flags (a ghost's are those it has here, as deal.II sees them; a
+   * sibling owned elsewhere counts as flagged), so a false is exact; a
+   * true says: ask deal.II. Not collective.
    */
   template <int dim>
   bool

@@ -162,6 +162,11 @@ namespace dealmpm
     {
       return grid;
     }
+    const AdaptivitySettings<dim> &
+    adaptivity_settings() const
+    {
+      return adaptivity;
+    }
     const NodalFields<dim> &
     nodal_fields() const
     {
