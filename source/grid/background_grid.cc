@@ -48,7 +48,7 @@ namespace dealmpm
       "lower it on clusters, raise it on one machine. 'auto': 1e5, or 1 "
       "(as few as the counts allow) when 'Adaptivity/Criteria' lists one: "
       "p4est's balance across coarse cells is the largest part of a grid "
-      "change (3D, 16k cells: 8,000 coarse cells 268 ms, 125 166 ms).");
+      "change (3D, 16k cells: 8,000 coarse cells 290 ms, 125 190 ms).");
     prm.declare_entry("Global refinements",
                       "0",
                       Patterns::Integer(0, 12),
