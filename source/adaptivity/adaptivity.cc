@@ -209,41 +209,45 @@ namespace dealmpm
           stress ? SymmetricTensor<2, dim>::n_independent_components : dim;
         const unsigned int offset =
           stress ? set.fields.stress : set.fields.velocity;
+        // The step's order of the particles, cell by cell (deal.II's lists
+        // may lag behind it), and where each active cell is in grid.cells.
+        const ParticlesByCell<dim, const ParticleSet<dim>> particles(grid, set);
+        std::vector<unsigned int> index(grid.triangulation.n_active_cells(),
+                                        numbers::invalid_unsigned_int);
+        for (std::size_t i = 0; i < grid.cells.size(); ++i)
+          index[grid.cells[i].cell->active_cell_index()] = i;
         // The largest squared distance from the mean of the particles in
-        // @p cells (the mean over all of them).
-        using Cell = typename Triangulation<dim>::active_cell_iterator;
+        // @p cells (indices in grid.cells; the mean over all of them).
         std::vector<double> mean(n);
-        const auto          spread = [&](const std::vector<Cell> &cells) {
+        const auto spread = [&](const std::vector<unsigned int> &cells) {
           std::fill(mean.begin(), mean.end(), 0.);
           double count = 0;
-          for (const Cell &cell : cells)
-            for (const auto &p : set.handler.particles_in_cell(cell))
-              {
-                for (unsigned int c = 0; c < n; ++c)
-                  mean[c] += p.get_properties()[offset + c];
-                ++count;
-              }
+          for (const unsigned int i : cells)
+            particles.for_each(i, [&](const auto &p) {
+              for (unsigned int c = 0; c < n; ++c)
+                mean[c] += p.get_properties()[offset + c];
+              ++count;
+            });
           double largest = 0;
           for (double &m : mean)
             m /= std::max(count, 1.);
-          for (const Cell &cell : cells)
-            for (const auto &p : set.handler.particles_in_cell(cell))
-              {
-                double d2 = 0;
-                for (unsigned int c = 0; c < n; ++c)
-                  d2 += std::pow(p.get_properties()[offset + c] - mean[c], 2);
-                largest = std::max(largest, d2);
-              }
+          for (const unsigned int i : cells)
+            particles.for_each(i, [&](const auto &p) {
+              double d2 = 0;
+              for (unsigned int c = 0; c < n; ++c)
+                d2 += std::pow(p.get_properties()[offset + c] - mean[c], 2);
+              largest = std::max(largest, d2);
+            });
           return largest;
         };
         double largest = 0;
-        for (const auto &p : set.handler)
-          {
+        for (std::size_t i = 0; i < grid.cells.size(); ++i)
+          particles.for_each(i, [&](const auto &p) {
             double norm2 = 0;
             for (unsigned int c = 0; c < n; ++c)
               norm2 += std::pow(p.get_properties()[offset + c], 2);
             largest = std::max(largest, norm2);
-          }
+          });
         largest = Utilities::MPI::max(largest, context.comm);
         if (!(largest > 0))
           {
@@ -255,21 +259,27 @@ namespace dealmpm
         const double coarsen = coarsen_fraction * coarsen_fraction * largest;
         for (std::size_t i = 0; i < grid.cells.size(); ++i)
           {
-            const Cell &cell = grid.cells[i].cell;
+            const auto &cell = grid.cells[i].cell;
             levels[i]        = grid.level(cell);
-            if (spread({cell}) > refine)
+            if (spread({static_cast<unsigned int>(i)}) > refine)
               levels[i] = context.max_level;
             else if (levels[i] > 0)
               {
-                std::vector<Cell> family;
+                std::vector<unsigned int> family;
                 for (const auto &child : cell->parent()->child_iterators())
                   if (child->is_active() && child->is_locally_owned())
-                    family.push_back(child);
+                    family.push_back(index[child->active_cell_index()]);
                 if (family.size() == cell->parent()->n_children() &&
                     spread(family) < coarsen)
                   levels[i] = grid.level(cell) - 1;
               }
           }
+      }
+
+      bool
+      reads_handler_lists() const override
+      {
+        return false;
       }
 
     private:
