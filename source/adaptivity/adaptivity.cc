@@ -13,6 +13,19 @@ namespace dealmpm
 {
   namespace
   {
+    /** For each active cell (by active_cell_index()), its index in
+     * grid.cells, or invalid_unsigned_int if this rank does not own it. */
+    template <int dim>
+    std::vector<unsigned int>
+    indices_in_grid(const BackgroundGrid<dim> &grid)
+    {
+      std::vector<unsigned int> index(grid.triangulation.n_active_cells(),
+                                      numbers::invalid_unsigned_int);
+      for (std::size_t i = 0; i < grid.cells.size(); ++i)
+        index[grid.cells[i].cell->active_cell_index()] = i;
+      return index;
+    }
+
     /** "velocity jump" -> "Velocity jump": the criterion's subsection. */
     std::string
     title(std::string name)
@@ -212,10 +225,7 @@ namespace dealmpm
         // The step's order of the particles, cell by cell (deal.II's lists
         // may lag behind it), and where each active cell is in grid.cells.
         const ParticlesByCell<dim, const ParticleSet<dim>> particles(grid, set);
-        std::vector<unsigned int> index(grid.triangulation.n_active_cells(),
-                                        numbers::invalid_unsigned_int);
-        for (std::size_t i = 0; i < grid.cells.size(); ++i)
-          index[grid.cells[i].cell->active_cell_index()] = i;
+        const std::vector<unsigned int> index = indices_in_grid(grid);
         // The largest squared distance from the mean of the particles in
         // @p cells (indices in grid.cells; the mean over all of them).
         std::vector<double> mean(n);
@@ -484,12 +494,8 @@ namespace dealmpm
         coarsen[i] = grid.cells[i].cell->coarsen_flag_set() &&
                      grid.cells[i].cell->level() > 0;
       }
-    // Where each active cell is in grid.cells (siblings are found by
-    // iterator).
-    std::vector<unsigned int> index(grid.triangulation.n_active_cells(),
-                                    numbers::invalid_unsigned_int);
-    for (std::size_t i = 0; i < grid.cells.size(); ++i)
-      index[grid.cells[i].cell->active_cell_index()] = i;
+    // Where each sibling is in grid.cells.
+    const std::vector<unsigned int> index = indices_in_grid(grid);
     std::vector<int> vertex_level(grid.triangulation.n_vertices());
     bool             undone = true;
     while (undone)

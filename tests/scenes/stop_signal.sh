@@ -46,18 +46,22 @@ sys.exit(1 if problems else 0)
 PY
 }
 
+# Wait until the run writing into $1 is stepping (its signal handlers are
+# in place): start-up takes longer on a loaded machine than any fixed pause.
+wait_until_stepping() {
+  for _ in $(seq 600); do
+    [ "$(cat "$1/statistics.csv" 2> /dev/null | wc -l)" -ge 3 ] && break
+    sleep 0.1
+  done
+}
+
 # $1 signal, $2 expected exit code, $3 folder, $4 whom to signal (the
 # process started, or its children: mpirun's ranks), then the command.
 stop_with() {
   local signal=$1 code=$2 folder=$3 whom=$4; shift 4
   "$@" -s "Output/Directory=$folder" "${long[@]}" > "$folder.log" 2>&1 &
   local pid=$!
-  # Signal once the run is stepping (its handlers are in place): start-up
-  # takes longer on a loaded machine than any fixed pause.
-  for _ in $(seq 600); do
-    [ "$(cat "$folder/statistics.csv" 2> /dev/null | wc -l)" -ge 3 ] && break
-    sleep 0.1
-  done
+  wait_until_stepping "$folder"
   if [ "$whom" = children ]; then kill -"$signal" $(pgrep -P $pid); else kill -"$signal" $pid; fi
   wait $pid
   local got=$?
@@ -83,10 +87,7 @@ stop_with TERM 143 ranks children "$mpirun" "${flags[@]}" -np 2 "$dealmpm" "$sce
 "$mpirun" "${flags[@]}" -np 2 "$dealmpm" "$scene" -s "Output/Directory=mpirun" "${long[@]}" \
   > mpirun.log 2>&1 &
 pid=$!
-for _ in $(seq 600); do
-  [ "$(cat mpirun/statistics.csv 2> /dev/null | wc -l)" -ge 3 ] && break
-  sleep 0.1
-done
+wait_until_stepping mpirun
 kill -TERM $pid
 wait $pid
 got=$?
