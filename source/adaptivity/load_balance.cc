@@ -27,8 +27,11 @@ namespace dealmpm
       "Imbalance limit",
       "1.2",
       Patterns::Double(),
-      "Repartition when the most loaded rank holds more than this times the "
-      "mean number of particles per rank (> 1).");
+      "Repartition when the most loaded rank's cells weigh more than this "
+      "times the mean over the ranks (> 1; a cell weighs 1 + 'Particle "
+      "weight' times its particles, what a repartition evens out). Where "
+      "the cells are too few or too heavy to share that evenly, when the "
+      "imbalance passes this times what the last repartition reached.");
     prm.declare_entry("Check interval",
                       "10",
                       Patterns::Integer(1),
@@ -119,10 +122,10 @@ namespace dealmpm
     const double local =
       tria.n_locally_owned_active_cells() +
       double(particle_weight) * handler.n_locally_owned_particles();
-    const double mean =
-      Utilities::MPI::sum(local, tria.get_communicator()) /
-      Utilities::MPI::n_mpi_processes(tria.get_communicator());
-    return Utilities::MPI::max(local, tria.get_communicator()) / mean;
+    // One reduction for the max and the mean.
+    const Utilities::MPI::MinMaxAvg weights =
+      Utilities::MPI::min_max_avg(local, tria.get_communicator());
+    return weights.avg > 0 ? weights.max / weights.avg : 1.;
   }
 
   template <int dim>

@@ -148,6 +148,11 @@ namespace dealmpm
     particles->changed();
     rebuild_after_grid_change();
     ++loop.repartitions;
+    if (run_settings.load_balance.enabled)
+      balanced_imbalance =
+        weight_imbalance(grid.triangulation,
+                         particles->handler,
+                         run_settings.load_balance.particle_weight);
   }
 
   template <int dim>

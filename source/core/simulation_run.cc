@@ -214,8 +214,14 @@ namespace dealmpm
     if (!due && loop.step % s.check_interval != 0)
       return;
     TimerOutput::Scope t(*computing_timer, "load balance");
-    if (due || particle_balance(particles->handler, comm).imbalance() >
-                 s.imbalance_limit)
+    // The partition evens out cell weights, not particles: a trigger on
+    // particles repartitioned at every check where empty cells weigh
+    // much (a body in a large box), and so does one set below what the
+    // cells allow.
+    const double limit = s.imbalance_limit * std::max(1., balanced_imbalance);
+    if (due || weight_imbalance(grid.triangulation,
+                                particles->handler,
+                                s.particle_weight) > limit)
       repartition();
   }
 

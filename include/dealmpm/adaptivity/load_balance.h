@@ -23,7 +23,7 @@ namespace dealmpm
   struct LoadBalanceSettings
   {
     unsigned int particle_weight = 10;  ///< w: a particle's cost in cells
-    double       imbalance_limit = 1.2; ///< max / mean particles per rank
+    double       imbalance_limit = 1.2; ///< max / mean cell weight per rank
     unsigned int check_interval  = 10;  ///< steps between checks
     /** Steps between repartitions whatever the imbalance; 0: never. */
     unsigned int repartition_interval = 0;

@@ -270,8 +270,8 @@ namespace dealmpm
      * changes; returns whether one did. Collective. */
     bool
     change_grid_to_criteria();
-    /** In the loop: repartition when the particle imbalance passes the
-     * limit (checked every few steps). */
+    /** In the loop: repartition when the cell weight imbalance passes
+     * the limit (checked every few steps). */
     void
     balance_load();
     /** One step of the loop with its checks and, when due, an output. */
@@ -318,11 +318,14 @@ namespace dealmpm
     /** The cells' particle weights on the triangulation's weight signal;
      * after particles, so that it is disconnected before they go. */
     boost::signals2::scoped_connection particle_weights;
-    NodalFieldSet<dim>                 nodal;
-    Kernel<dim>                        kernel;
-    MemoryEstimate                     memory;
-    Stencil<dim>                       stencil;
-    std::vector<Stage<dim>>            stages;
+    /** The weight imbalance the last repartition reached (1 until one
+     * did): the loop's check allows the limit times that. */
+    double                  balanced_imbalance = 1;
+    NodalFieldSet<dim>      nodal;
+    Kernel<dim>             kernel;
+    MemoryEstimate          memory;
+    Stencil<dim>            stencil;
+    std::vector<Stage<dim>> stages;
     /** Only when the scene's materials differ in stiffness. */
     std::unique_ptr<MixedCellSplit<dim>> mixed_cells;
     double                               mass_threshold = 0;
