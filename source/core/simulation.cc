@@ -168,17 +168,27 @@ namespace dealmpm
     const ParticleCheck<dim> &check = particle_check;
     // The step's one reduction, a min over the ranks: the largest signal
     // rate (the next step's size), the smallest J, whether a particle
-    // failed, whether one left its cell.
-    double reduced[4] = {-std::max(check.max_signal_rate,
+    // failed, whether one left its cell, whether a stencil failed.
+    double reduced[5] = {-std::max(check.max_signal_rate,
                                    regions.local_signal_rate()),
                          check.min_J,
                          check.failed ? -1. : 0.,
-                         state.left_cell ? -1. : 0.};
-    Utilities::MPI::min(ArrayView<const double>(reduced, 4),
+                         state.left_cell ? -1. : 0.,
+                         stencil.failed ? -1. : 0.};
+    Utilities::MPI::min(ArrayView<const double>(reduced, 5),
                         comm,
-                        ArrayView<double>(reduced, 4));
+                        ArrayView<double>(reduced, 5));
     max_signal_rate = -reduced[0];
     loop.accuracy.observe_step(reduced[1], dt * max_signal_rate);
+    // The stencil first: a particle's failure may follow from it.
+    if (reduced[4] < 0)
+      stop_on_particle(stencil.failed,
+                       stencil.failed_particle,
+                       stencil.failed_location,
+                       stencil.failure,
+                       loop.step + 1,
+                       loop.time + dt,
+                       comm);
     if (reduced[2] < 0)
       stop_on_particle(check.failed,
                        check.particle,

@@ -157,8 +157,9 @@ namespace dealmpm
         if (s.method.apic)
           record_positions(s.grid, s.particles, s.stencil);
       }
-      if (s.kernel.stencil_can_fail())
-        stop_on_failed_stencil(s);
+      // A failed stencil (CPDI) keeps finite entries, so the step can
+      // finish: the run stops at the step's reduction (Simulation::
+      // advance), without a collective of its own.
     }
 
     template <int dim>

@@ -4,8 +4,9 @@
 # runs of 40 and 20 steps of the 2D elastic column, per step, so that
 # set-up and output cancel. USL and MUSL with linear shape functions
 # (weights computed where used), USL with cpGIMP and the B-spline (a
-# stored stencil, which cannot fail: no check of it across ranks); the
-# imbalance check (one reduction every 'Check interval' steps) is moved
+# stored stencil, which cannot fail: no check of it across ranks) and with
+# CPDI (whose stencil can fail: the step's reduction carries that; a
+# reduction of its own before 2026-11-30, 3 a step); the imbalance check (one reduction every 'Check interval' steps) is moved
 # out of reach.
 # - Collectives (reductions, barriers, ...): at most 2 per step, the
 #   step's own reduction (time step, smallest J, failed particles,
@@ -36,7 +37,7 @@ count() { # steps overrides... -> "collectives point_to_point" of rank 0
   awk '{ print $2, $4 }' "$work/count"
 }
 
-for limits in USL:linear:2 MUSL:linear:4 USL:cpGIMP:2 "USL:quadratic B-spline:2"; do
+for limits in USL:linear:2 MUSL:linear:4 USL:cpGIMP:2 "USL:quadratic B-spline:2" USL:CPDI:2; do
   IFS=: read -r scheme kernel sends <<< "$limits"
   read -r c20 p20 < <(count 20 -s "MPM/Stress update=$scheme" -s "MPM/Shape function=$kernel")
   read -r c40 p40 < <(count 40 -s "MPM/Stress update=$scheme" -s "MPM/Shape function=$kernel")
