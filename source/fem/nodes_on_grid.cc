@@ -16,8 +16,9 @@ namespace dealmpm
   {
     std::vector<std::pair<BoundingBox<dim>, unsigned int>> boxes;
     const auto add = [&](const GridCell<dim> &c) {
+      const auto vertices = c.vertices();
       boxes.emplace_back(BoundingBox<dim>(std::vector<Point<dim>>(
-                           c.vertices.begin(), c.vertices.end())),
+                           vertices.begin(), vertices.end())),
                          static_cast<unsigned int>(boxes.size()));
       // A point on a face must be found by both cells.
       boxes.back().first.extend(1e-10 * c.h);

@@ -239,30 +239,33 @@ namespace dealmpm
     const typename DoFHandler<dim>::active_cell_iterator &dof_cell,
     bool                                                 &box)
   {
-    constexpr unsigned int n_vertices = GridCell<dim>::n_vertices;
-    GridCell<dim>          c;
+    constexpr unsigned int           n_vertices = GridCell<dim>::n_vertices;
+    GridCell<dim>                    c;
+    typename GridCell<dim>::Vertices vertices;
     c.cell = dof_cell;
     for (unsigned int v = 0; v < n_vertices; ++v)
-      c.vertices[v] = dof_cell->vertex(v);
-    c.h       = dof_cell->minimum_vertex_distance();
-    c.measure = dof_cell->measure();
+      vertices[v] = dof_cell->vertex(v);
+    c.origin     = vertices[0];
+    c.far_corner = vertices[n_vertices - 1];
+    c.h          = dof_cell->minimum_vertex_distance();
+    c.measure    = dof_cell->measure();
 
     // Affine when x(xi) is linear: each vertex = v0 + sum of the edge
     // vectors along its set bits.
     Tensor<2, dim> J;
     for (unsigned int d = 0; d < dim; ++d)
       for (unsigned int e = 0; e < dim; ++e)
-        J[e][d] = c.vertices[1u << d][e] - c.vertices[0][e];
+        J[e][d] = vertices[1u << d][e] - vertices[0][e];
     bool affine = true;
     box         = true;
     for (unsigned int v = 0; v < n_vertices; ++v)
       {
-        Point<dim> expected = c.vertices[0];
+        Point<dim> expected = vertices[0];
         for (unsigned int d = 0; d < dim; ++d)
           if ((v >> d) & 1u)
             for (unsigned int e = 0; e < dim; ++e)
               expected[e] += J[e][d];
-        if (expected.distance(c.vertices[v]) > 1e-12 * c.h)
+        if (expected.distance(vertices[v]) > 1e-12 * c.h)
           affine = false;
       }
     for (unsigned int d = 0; d < dim; ++d)
@@ -273,6 +276,8 @@ namespace dealmpm
     c.inverse_jacobian = invert(J);
     if (!affine)
       {
+        curved_vertices.push_back(vertices);
+        c.stored_vertices = &curved_vertices.back();
         Point<dim> centre;
         for (unsigned int d = 0; d < dim; ++d)
           centre[d] = 0.5;
@@ -411,6 +416,7 @@ namespace dealmpm
     cells.clear();
     cells.reserve(triangulation.n_locally_owned_active_cells());
     ghost_cells.clear();
+    curved_vertices.clear();
     cell_nodes.clear();
     cell_node_weights.clear();
     bool       all_boxes = true;
@@ -423,7 +429,7 @@ namespace dealmpm
         bool                box = true;
         const GridCell<dim> c   = make_cell(dof_cell, box);
         all_boxes               = all_boxes && c.affine && box;
-        for (const Point<dim> &x : c.vertices)
+        for (const Point<dim> &x : c.vertices())
           {
             for (unsigned int d = 0; d < dim; ++d)
               {
@@ -545,7 +551,6 @@ namespace dealmpm
     neighbor_by_side.clear();
     if (!cartesian)
       return;
-    constexpr unsigned int n_vertices = GridCell<dim>::n_vertices;
     neighbor_by_side.resize(cells.size());
     for (unsigned int i = 0; i < cells.size(); ++i)
       {
@@ -557,11 +562,9 @@ namespace dealmpm
             for (unsigned int d = 0; d < dim; ++d, stride *= 3)
               {
                 const double tolerance = 1e-10 * own.h;
-                if (c->vertices[n_vertices - 1][d] <=
-                    own.vertices[0][d] + tolerance)
+                if (c->far_corner[d] <= own.origin[d] + tolerance)
                   index += 0;
-                else if (c->vertices[0][d] >=
-                         own.vertices[n_vertices - 1][d] - tolerance)
+                else if (c->origin[d] >= own.far_corner[d] - tolerance)
                   index += 2 * stride;
                 else
                   index += stride;

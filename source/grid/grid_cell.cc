@@ -35,7 +35,7 @@ namespace dealmpm
         double N = 1;
         for (unsigned int d = 0; d < dim; ++d)
           N *= ((v >> d) & 1u) ? xi[d] : 1. - xi[d];
-        x += N * vertices[v];
+        x += N * vertex(v);
       }
     return x;
   }
@@ -50,7 +50,7 @@ namespace dealmpm
     q1_gradients(xi, grad);
     Tensor<2, dim> J;
     for (unsigned int v = 0; v < n_vertices; ++v)
-      J += outer_product(vertices[v], grad[v]);
+      J += outer_product(vertex(v), grad[v]);
     return invert(J);
   }
 

@@ -64,8 +64,9 @@ namespace dealmpm
       fill(const GridCell<dim> &c)
       {
         // Most cells are nowhere near the body: skip them by its box.
+        const auto             vertices = c.vertices();
         const BoundingBox<dim> cell_box(
-          std::vector<Point<dim>>(c.vertices.begin(), c.vertices.end()));
+          std::vector<Point<dim>>(vertices.begin(), vertices.end()));
         if (cell_box.get_neighbor_type(shape_box) ==
             NeighborType::not_neighbors)
           return;
@@ -147,9 +148,7 @@ namespace dealmpm
         if (f.domain_half_length != numbers::invalid_unsigned_int)
           for (unsigned int d = 0; d < dim; ++d)
             properties[f.domain_half_length + d] =
-              (c.vertices[GridCell<dim>::n_vertices - 1][d] -
-               c.vertices[0][d]) /
-              (2. * n);
+              (c.far_corner[d] - c.origin[d]) / (2. * n);
         if (f.body != numbers::invalid_unsigned_int)
           properties[f.body] = body_index;
         std::copy(initial_internal_variables.begin(),

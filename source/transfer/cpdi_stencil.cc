@@ -36,7 +36,7 @@ namespace dealmpm
         return c.reference_point(x);
       Point<dim> xi;
       for (unsigned int d = 0; d < dim; ++d)
-        xi[d] = (x[d] - c.vertices[0][d]) * c.inverse_jacobian[d][d];
+        xi[d] = (x[d] - c.origin[d]) * c.inverse_jacobian[d][d];
       return xi;
     }
 
@@ -216,7 +216,7 @@ namespace dealmpm
           for (unsigned int d = 0, stride = 1; d < dim; ++d, stride *= 3)
             {
               const double t =
-                (x_c[d] - own.vertices[0][d]) * own.inverse_jacobian[d][d];
+                (x_c[d] - own.origin[d]) * own.inverse_jacobian[d][d];
               if (!(t >= -1. && t < 2.))
                 return false;
               const int offset = t < 0. ? -1 : (t < 1. ? 0 : 1);

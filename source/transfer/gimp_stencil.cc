@@ -42,8 +42,8 @@ namespace dealmpm
                       double               &volume)
     {
       constexpr unsigned int n_vertices = GridCell<dim>::n_vertices;
-      const Point<dim>      &x0         = c.vertices[0];
-      const Point<dim>      &x1         = c.vertices[n_vertices - 1];
+      const Point<dim>      &x0         = c.origin;
+      const Point<dim>      &x1         = c.far_corner;
       double                 lower[dim], upper[dim], length[dim];
       volume = 1;
       for (unsigned int d = 0; d < dim; ++d)
@@ -134,14 +134,9 @@ namespace dealmpm
                       std::size_t          &e,
                       Stencil<dim>         &stencil)
     {
-      constexpr unsigned int n_vertices = GridCell<dim>::n_vertices;
-      LatticeWeights1D       w[dim];
+      LatticeWeights1D w[dim];
       for (unsigned int d = 0; d < dim; ++d)
-        if (!lattice_weights_1d(x[d],
-                                l[d],
-                                c.vertices[0][d],
-                                c.vertices[n_vertices - 1][d],
-                                w[d]))
+        if (!lattice_weights_1d(x[d], l[d], c.origin[d], c.far_corner[d], w[d]))
           return false;
       if (!spans_present_cells<dim>(w, present))
         return false;

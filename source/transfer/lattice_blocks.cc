@@ -10,12 +10,10 @@ namespace dealmpm
     bool
     is_plain_box_of(const GridCell<dim> &c, const Tensor<1, dim> &h)
     {
-      constexpr unsigned int n_vertices = GridCell<dim>::n_vertices;
       if (c.first_weight != numbers::invalid_unsigned_int || !c.affine)
         return false;
       for (unsigned int d = 0; d < dim; ++d)
-        if (std::abs(c.vertices[n_vertices - 1][d] - c.vertices[0][d] - h[d]) >
-            1e-10 * h[d])
+        if (std::abs(c.far_corner[d] - c.origin[d] - h[d]) > 1e-10 * h[d])
           return false;
       return true;
     }
@@ -34,7 +32,7 @@ namespace dealmpm
       const GridCell<dim>   &own        = grid.cells[i];
       Tensor<1, dim>         h;
       for (unsigned int d = 0; d < dim; ++d)
-        h[d] = own.vertices[n_vertices - 1][d] - own.vertices[0][d];
+        h[d] = own.far_corner[d] - own.origin[d];
       std::uint32_t present   = 0;
       unsigned int  n_present = 0;
       for (unsigned int s = 0; s < Utilities::pow(3, dim); ++s)
@@ -57,7 +55,7 @@ namespace dealmpm
           Point<dim> expected;
           for (unsigned int d = 0; d < dim; ++d)
             expected[d] =
-              own.vertices[0][d] + (double((n >> (2 * d)) & 3u) - 1.) * h[d];
+              own.origin[d] + (double((n >> (2 * d)) & 3u) - 1.) * h[d];
           for (unsigned int choice = 0; choice < n_vertices; ++choice)
             {
               unsigned int side_index = 0, vertex = 0, stride = 1;

@@ -27,10 +27,9 @@ namespace dealmpm
           has_hanging || c.first_weight != numbers::invalid_unsigned_int;
         for (unsigned int d = 0; d < dim; ++d)
           {
-            const double length =
-              c.vertices[GridCell<dim>::n_vertices - 1][d] - c.vertices[0][d];
-            h_min[d] = std::min(h_min[d], length);
-            h_max[d] = std::max(h_max[d], length);
+            const double length = c.far_corner[d] - c.origin[d];
+            h_min[d]            = std::min(h_min[d], length);
+            h_max[d]            = std::max(h_max[d], length);
           }
       }
     if (!grid.cartesian)
@@ -64,8 +63,7 @@ namespace dealmpm
       grid.cells.empty() ? grid.ghost_cells.front() : grid.cells.front();
     for (unsigned int d = 0; d < dim; ++d)
       {
-        h[d] =
-          any.vertices[GridCell<dim>::n_vertices - 1][d] - any.vertices[0][d];
+        h[d]       = any.far_corner[d] - any.origin[d];
         n_cells[d] = int(std::round((upper[d] - lower[d]) / h[d]));
       }
     const auto index_of = [&](const Point<dim> &x) {
@@ -80,11 +78,11 @@ namespace dealmpm
                        numbers::invalid_unsigned_int);
     for (unsigned int i = 0; i < grid.cells.size(); ++i)
       {
-        lower_index[i] = index_of(grid.cells[i].vertices[0]);
+        lower_index[i] = index_of(grid.cells[i].origin);
         for (const GridCell<dim> *c : grid.neighbors[i])
           for (unsigned int v = 0; v < GridCell<dim>::n_vertices; ++v)
             {
-              const std::array<int, dim> index    = index_of(c->vertices[v]);
+              const std::array<int, dim> index    = index_of(c->vertex(v));
               unsigned int               position = 0, stride = 1;
               for (unsigned int d = 0; d < dim; ++d, stride *= 4)
                 position += (index[d] - lower_index[i][d] + 1) * stride;

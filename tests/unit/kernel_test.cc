@@ -278,7 +278,7 @@ TEST(Kernel, QuadraticBSplineClosedForm)
   for (const auto &c : grid.cells)
     for (auto &p : handler.particles_in_cell(c.cell))
       {
-        const Point<2> x = c.vertices[0] + Tensor<1, 2>({0.3 * hx, 0.001});
+        const Point<2> x = c.origin + Tensor<1, 2>({0.3 * hx, 0.001});
         p.set_location(x);
         p.set_reference_location(c.reference_point(x));
       }

@@ -81,15 +81,27 @@ TEST(Stencil, PartitionOfUnityWithHangingNodes3D)
   check_partition_of_unity<3>();
 }
 
+// A grid's memory is about a quarter GridCells: they keep the two vertices
+// the kernels read, not all 2^dim (320 B in 3D and 152 B in 2D before
+// 2026-11-30).
+TEST(GridCell, KeepsTwoVerticesNotAll)
+{
+  EXPECT_LE(sizeof(GridCell<2>), 120u);
+  EXPECT_LE(sizeof(GridCell<3>), 176u);
+}
+
 TEST(GridCell, DistortedCellMapRoundTrip)
 {
-  GridCell<2> c;
-  c.vertices = {{Point<2>(0, 0),
-                 Point<2>(1.2, 0.1),
-                 Point<2>(-0.1, 0.9),
-                 Point<2>(1.4, 1.3)}};
-  c.affine   = false;
-  c.h        = 0.9;
+  GridCell<2>                 c;
+  const GridCell<2>::Vertices vertices = {{Point<2>(0, 0),
+                                           Point<2>(1.2, 0.1),
+                                           Point<2>(-0.1, 0.9),
+                                           Point<2>(1.4, 1.3)}};
+  c.stored_vertices                    = &vertices;
+  c.origin                             = vertices[0];
+  c.far_corner                         = vertices[3];
+  c.affine                             = false;
+  c.h                                  = 0.9;
   std::mt19937                           rng(7);
   std::uniform_real_distribution<double> unit(0., 1.);
   for (unsigned int i = 0; i < 100; ++i)

@@ -11,6 +11,7 @@
 #include <dealmpm/base/scene_reader.h>
 
 #include <array>
+#include <deque>
 #include <functional>
 #include <memory>
 #include <vector>
@@ -21,19 +22,28 @@ namespace dealmpm
 
   /**
    * What the per-step kernels need of one locally owned cell, computed once
-   * per mesh: its vertices, the inverse Jacobian when the cell is affine, its
-   * size for the CFL limit, and its "effective nodes": the vertex DoFs with
-   * hanging nodes replaced by their masters, so that every kernel sees
-   * continuous shape functions that sum to one without special cases.
+   * per mesh: its first and last vertex, the inverse Jacobian when the cell
+   * is affine, its size for the CFL limit, and its "effective nodes": the
+   * vertex DoFs with hanging nodes replaced by their masters, so that every
+   * kernel sees continuous shape functions that sum to one without special
+   * cases. The other vertices are the triangulation's (vertex()), or kept
+   * aside for a cell that is not affine, whose map reads them all: a cell
+   * costs 176 B in 3D instead of 320 B with all eight (a quarter of a
+   * grid's memory before 2026-11-30).
    */
   template <int dim>
   struct GridCell
   {
     static constexpr unsigned int n_vertices = 1u << dim;
+    using Vertices = std::array<Point<dim>, n_vertices>;
 
     typename Triangulation<dim>::active_cell_iterator cell;
-    std::array<Point<dim>, n_vertices>                vertices;
-    bool                                              affine = true;
+    Point<dim>                                        origin; ///< vertex 0
+    Point<dim> far_corner; ///< vertex n_vertices - 1
+    /** All vertices, for a cell that is not affine (in the grid's
+     * BackgroundGrid::curved_vertices) or one made by hand; else
+     * nullptr, and vertex() reads the triangulation's. */
+    const Vertices *stored_vertices = nullptr;
     /** d(xi)/dx of the map from the unit cell; exact for affine cells. */
     Tensor<2, dim> inverse_jacobian;
     double         h       = 0; ///< shortest edge
@@ -45,6 +55,25 @@ namespace dealmpm
      * numbers::invalid_unsigned_int when no vertex is constrained (then the
      * effective nodes are the vertices, in order). */
     unsigned int first_weight = numbers::invalid_unsigned_int;
+    bool         affine       = true;
+
+    /** Vertex @p v, the same number the triangulation holds. */
+    Point<dim>
+    vertex(const unsigned int v) const
+    {
+      return stored_vertices != nullptr ? (*stored_vertices)[v] :
+                                          cell->vertex(v);
+    }
+
+    /** All vertices (for bounding boxes; not on a per-particle path). */
+    Vertices
+    vertices() const
+    {
+      Vertices all;
+      for (unsigned int v = 0; v < n_vertices; ++v)
+        all[v] = vertex(v);
+      return all;
+    }
 
     /** Position of unit-cell point xi (the Q1 map). */
     Point<dim>
@@ -57,7 +86,7 @@ namespace dealmpm
     reference_point(const Point<dim> &x) const
     {
       if (affine)
-        return Point<dim>(inverse_jacobian * (x - vertices[0]));
+        return Point<dim>(inverse_jacobian * (x - origin));
       return reference_point_by_newton(x);
     }
 
@@ -69,7 +98,7 @@ namespace dealmpm
     {
       Point<dim> xi;
       for (unsigned int d = 0; d < dim; ++d)
-        xi[d] = (x[d] - vertices[0][d]) * inverse_jacobian[d][d];
+        xi[d] = (x[d] - origin[d]) * inverse_jacobian[d][d];
       return xi;
     }
 
@@ -204,6 +233,10 @@ namespace dealmpm
     /** The ghost layer's cells (same data), for kernels that reach into
      * neighbour cells. */
     std::vector<GridCell<dim>> ghost_cells;
+    /** The vertices of the owned and ghost cells that are not affine
+     * (GridCell::stored_vertices points here; a deque does not move its
+     * elements as it grows). */
+    std::deque<typename GridCell<dim>::Vertices> curved_vertices;
     /** Per locally owned cell (same order as cells): the owned or ghost
      * cells that share a vertex with it, itself included. Empty until
      * find_neighbors(); only kernels with particle domains need it. */
