@@ -84,6 +84,12 @@ namespace dealmpm
                           "'Maximum level'.");
       }
 
+      unsigned int
+      level_of_particle_cells(const unsigned int max_level) const override
+      {
+        return level < 0 ? max_level : level;
+      }
+
       void
       target_levels(const AdaptivityContext<dim> &context,
                     std::vector<int>             &levels) const override
@@ -401,6 +407,16 @@ namespace dealmpm
         prm.leave_subsection();
       }
     prm.leave_subsection();
+  }
+
+  template <int dim>
+  unsigned int
+  AdaptivitySettings<dim>::level_of_particle_cells() const
+  {
+    unsigned int level = 0;
+    for (const auto &criterion : criteria)
+      level = std::max(level, criterion->level_of_particle_cells(max_level));
+    return enabled() ? std::clamp(level, min_level, max_level) : 0;
   }
 
   template <int dim>

@@ -222,8 +222,12 @@ namespace dealmpm
     grid.create(
       reader,
       [&](const GridSize<dim> &size) {
+        const StartRefinement start{
+          adaptivity.enabled() ? adaptivity.min_level : 0u,
+          adaptivity.level_of_particle_cells(),
+          adaptivity.enabled() ? adaptivity.max_cells : 0.};
         memory = check_memory(reader.file_name(),
-                              estimate_memory(size, bodies),
+                              estimate_memory(size, bodies, start),
                               run_settings.checks.memory_limit,
                               comm);
       },

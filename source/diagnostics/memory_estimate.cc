@@ -23,11 +23,17 @@ namespace dealmpm
   template <int dim>
   MemoryEstimate
   estimate_memory(const GridSize<dim>          &grid,
-                  const std::vector<Body<dim>> &bodies)
+                  const std::vector<Body<dim>> &bodies,
+                  const StartRefinement        &refinement)
   {
+    // Cells per cell of the grid's Cells at each level.
+    const double everywhere     = std::pow(2., dim * refinement.everywhere);
+    const double with_particles = std::pow(
+      2., dim * std::max(refinement.everywhere, refinement.with_particles));
     MemoryEstimate estimate;
-    estimate.n_cells         = grid.n_cells;
+    estimate.n_cells         = grid.n_cells * everywhere;
     const double cell_volume = grid.box.volume() / grid.n_cells;
+    double       body_cells  = 0; // of the grid's Cells, holding particles
     for (const Body<dim> &body : bodies)
       {
         const BoundingBox<dim> box    = body.shape->bounding_box();
@@ -37,9 +43,18 @@ namespace dealmpm
             std::max(0.,
                      std::min(box.upper_bound(d), grid.box.upper_bound(d)) -
                        std::max(box.lower_bound(d), grid.box.lower_bound(d)));
-        estimate.n_particles +=
-          volume / cell_volume * std::pow(body.particles_per_direction, dim);
+        body_cells += volume / cell_volume;
+        estimate.n_particles += volume / cell_volume * with_particles *
+                                std::pow(body.particles_per_direction, dim);
       }
+    // The bodies' cells refined further (overlaps counted twice: an
+    // estimate errs on the large side).
+    estimate.n_cells +=
+      std::min(body_cells, grid.n_cells) * (with_particles - everywhere);
+    if (refinement.most_cells > 0)
+      estimate.n_cells =
+        std::min(estimate.n_cells,
+                 std::max(refinement.most_cells, grid.n_cells * everywhere));
     estimate.bytes = program_bytes + estimate.n_cells * bytes_per_cell[dim] +
                      estimate.n_particles * bytes_per_particle[dim];
     return estimate;
@@ -92,9 +107,10 @@ namespace dealmpm
     return estimate;
   }
 
-#define DEALMPM_INSTANTIATE(dim)                                 \
-  template MemoryEstimate estimate_memory(const GridSize<dim> &, \
-                                          const std::vector<Body<dim>> &);
+#define DEALMPM_INSTANTIATE(dim)                                          \
+  template MemoryEstimate estimate_memory(const GridSize<dim> &,          \
+                                          const std::vector<Body<dim>> &, \
+                                          const StartRefinement &);
   DEALMPM_INSTANTIATE(2)
   DEALMPM_INSTANTIATE(3)
 #undef DEALMPM_INSTANTIATE

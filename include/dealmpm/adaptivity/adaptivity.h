@@ -61,6 +61,15 @@ namespace dealmpm
     {
       return true;
     }
+
+    /** The level it asks for the cells that hold particles at the start
+     * (the bodies are then filled at that level), for the memory estimate
+     * made before the grid exists; 0 when it asks none. */
+    virtual unsigned int
+    level_of_particle_cells(const unsigned int /*max_level*/) const
+    {
+      return 0;
+    }
   };
 
   /** The registered criteria; each reads its parameters from
@@ -89,6 +98,11 @@ namespace dealmpm
     {
       return !criteria.empty();
     }
+
+    /** The level of the cells that hold particles at the start (the most
+     * any criterion asks, within the levels; 0 without adaptivity). */
+    unsigned int
+    level_of_particle_cells() const;
 
     static void
     declare_parameters(ParameterHandler &prm);

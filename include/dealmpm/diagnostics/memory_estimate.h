@@ -24,10 +24,23 @@ namespace dealmpm
     double bytes       = 0;
   };
 
+  /** How adaptivity refines the grid at the start, before the first step:
+   * every cell to @p everywhere levels, those holding particles to
+   * @p with_particles (where the bodies are filled), up to @p most_cells. */
+  struct StartRefinement
+  {
+    unsigned int everywhere     = 0;
+    unsigned int with_particles = 0;
+    double       most_cells     = 0; ///< 0: no limit
+  };
+
+  /** The cells, particles and bytes of a scene at its first step, from
+   * the grid's size and the bodies' boxes before the grid is made. */
   template <int dim>
   MemoryEstimate
   estimate_memory(const GridSize<dim>          &grid,
-                  const std::vector<Body<dim>> &bodies);
+                  const std::vector<Body<dim>> &bodies,
+                  const StartRefinement        &refinement = {});
 
   /** @p estimate, or an InputError (about @p scene_file) when it exceeds
    * @p limit (bytes) or, with no limit (0), the available memory.
