@@ -440,7 +440,7 @@ namespace dealmpm
           }
         (dof_cell->is_locally_owned() ? cells : ghost_cells).push_back(c);
       }
-    neighbors.clear();
+    clear_neighbors();
     // The mapping is made once: the particle handler keeps a reference to
     // it. Refining boxes gives boxes, so it stays right when the grid
     // changes.
@@ -471,49 +471,52 @@ namespace dealmpm
     template <int dim>
     struct CellsAtVertices
     {
-      std::vector<unsigned int>          begin;
-      std::vector<const GridCell<dim> *> cell;
+      std::vector<unsigned int> begin;
+      std::vector<unsigned int> cell; ///< BackgroundGrid::local_cell() index
 
-      CellsAtVertices(const Triangulation<dim>                 &tria,
-                      const std::vector<const GridCell<dim> *> &local)
+      /** @p local: per active cell index, its local_cell() index or
+       * numbers::invalid_unsigned_int. Indices, not pointers: this is the
+       * peak of a moving scene's memory (about 32 entries a 3D cell). */
+      CellsAtVertices(const BackgroundGrid<dim>       &grid,
+                      const std::vector<unsigned int> &local)
       {
+        const unsigned int n_local =
+          grid.cells.size() + grid.ghost_cells.size();
         // Visit every (vertex, cell) pair twice: count, then place.
         const auto for_each_pair = [&](const auto &visit) {
-          for (const GridCell<dim> *c : local)
+          for (unsigned int k = 0; k < n_local; ++k)
             {
-              if (c == nullptr)
-                continue;
-              for (const unsigned int v : c->cell->vertex_indices())
-                visit(c->cell->vertex_index(v), c);
-              for (const unsigned int f : c->cell->face_indices())
-                if (!c->cell->at_boundary(f) &&
-                    c->cell->neighbor(f)->is_active())
-                  if (const GridCell<dim> *n =
-                        local[c->cell->neighbor(f)->active_cell_index()])
-                    for (const unsigned int v :
-                         c->cell->face(f)->vertex_indices())
-                      visit(c->cell->face(f)->vertex_index(v), n);
+              const auto &cell = grid.local_cell(k).cell;
+              for (const unsigned int v : cell->vertex_indices())
+                visit(cell->vertex_index(v), k);
+              for (const unsigned int f : cell->face_indices())
+                if (!cell->at_boundary(f) && cell->neighbor(f)->is_active())
+                  if (const unsigned int n =
+                        local[cell->neighbor(f)->active_cell_index()];
+                      n != numbers::invalid_unsigned_int)
+                    for (const unsigned int v : cell->face(f)->vertex_indices())
+                      visit(cell->face(f)->vertex_index(v), n);
               if constexpr (dim == 3)
-                for (unsigned int l = 0; l < c->cell->n_lines(); ++l)
-                  if (c->cell->line(l)->has_children())
-                    visit(c->cell->line(l)->child(0)->vertex_index(1), c);
+                for (unsigned int l = 0; l < cell->n_lines(); ++l)
+                  if (cell->line(l)->has_children())
+                    visit(cell->line(l)->child(0)->vertex_index(1), k);
             }
         };
-        begin.assign(tria.n_vertices() + 1, 0);
+        begin.assign(grid.triangulation.n_vertices() + 1, 0);
         for_each_pair(
-          [&](const unsigned int v, const GridCell<dim> *) { ++begin[v + 1]; });
+          [&](const unsigned int v, unsigned int) { ++begin[v + 1]; });
         for (std::size_t v = 0; v + 1 < begin.size(); ++v)
           begin[v + 1] += begin[v];
         cell.resize(begin.back());
         std::vector<unsigned int> next(begin.begin(), begin.end() - 1);
-        for_each_pair([&](const unsigned int v, const GridCell<dim> *c) {
-          cell[next[v]++] = c;
+        for_each_pair([&](const unsigned int v, const unsigned int k) {
+          cell[next[v]++] = k;
         });
         for (std::size_t v = 0; v + 1 < begin.size(); ++v)
           std::sort(cell.begin() + begin[v],
                     cell.begin() + begin[v + 1],
-                    [](const GridCell<dim> *a, const GridCell<dim> *b) {
-                      return a->cell < b->cell;
+                    [&grid](const unsigned int a, const unsigned int b) {
+                      return grid.local_cell(a).cell < grid.local_cell(b).cell;
                     });
       }
     };
@@ -521,33 +524,54 @@ namespace dealmpm
 
   template <int dim>
   void
+  BackgroundGrid<dim>::clear_neighbors()
+  {
+    neighbor_begin.clear();
+    neighbor_list.clear();
+    neighbor_by_side.clear();
+  }
+
+  template <int dim>
+  void
   BackgroundGrid<dim>::find_neighbors()
   {
-    if (!neighbors.empty() || cells.empty())
+    if (has_neighbors() || cells.empty())
       return;
-    std::vector<const GridCell<dim> *> local(triangulation.n_active_cells(),
-                                             nullptr);
-    for (const auto *list : {&cells, &ghost_cells})
-      for (const GridCell<dim> &c : *list)
-        local[c.cell->active_cell_index()] = &c;
-    const CellsAtVertices<dim> at_vertex(triangulation, local);
-    neighbors.resize(cells.size());
+    std::vector<unsigned int> local(triangulation.n_active_cells(),
+                                    numbers::invalid_unsigned_int);
+    for (unsigned int k = 0; k < cells.size() + ghost_cells.size(); ++k)
+      local[local_cell(k).cell->active_cell_index()] = k;
+    const CellsAtVertices<dim> at_vertex(*this, local);
+    neighbor_begin.assign(1, 0);
+    neighbor_begin.reserve(cells.size() + 1);
+    neighbor_list.clear();
+    neighbor_list.reserve(cells.size() * Utilities::pow(3, dim));
     for (unsigned int i = 0; i < cells.size(); ++i)
       {
-        neighbors[i].reserve(Utilities::pow(3, dim));
+        const auto first = neighbor_list.end() - neighbor_list.begin();
         for (const unsigned int v : cells[i].cell->vertex_indices())
           {
             const unsigned int vertex = cells[i].cell->vertex_index(v);
             for (unsigned int k = at_vertex.begin[vertex];
                  k < at_vertex.begin[vertex + 1];
                  ++k)
-              if (std::find(neighbors[i].begin(),
-                            neighbors[i].end(),
-                            at_vertex.cell[k]) == neighbors[i].end())
-                neighbors[i].push_back(at_vertex.cell[k]);
+              {
+                const unsigned int n = at_vertex.cell[k];
+                if (std::find(neighbor_list.begin() + first,
+                              neighbor_list.end(),
+                              n) == neighbor_list.end())
+                  neighbor_list.push_back(n);
+              }
           }
+        neighbor_begin.push_back(neighbor_list.size());
       }
+    find_side_neighbors();
+  }
 
+  template <int dim>
+  void
+  BackgroundGrid<dim>::find_side_neighbors()
+  {
     neighbor_by_side.clear();
     if (!cartesian)
       return;
@@ -555,21 +579,22 @@ namespace dealmpm
     for (unsigned int i = 0; i < cells.size(); ++i)
       {
         const GridCell<dim> &own = cells[i];
-        neighbor_by_side[i].fill(nullptr);
-        for (const GridCell<dim> *c : neighbors[i])
+        neighbor_by_side[i].fill(numbers::invalid_unsigned_int);
+        for (const unsigned int k : neighbors_of(i))
           {
-            unsigned int index = 0, stride = 1;
+            const GridCell<dim> &c     = local_cell(k);
+            unsigned int         index = 0, stride = 1;
             for (unsigned int d = 0; d < dim; ++d, stride *= 3)
               {
                 const double tolerance = 1e-10 * own.h;
-                if (c->far_corner[d] <= own.origin[d] + tolerance)
+                if (c.far_corner[d] <= own.origin[d] + tolerance)
                   index += 0;
-                else if (c->origin[d] >= own.far_corner[d] - tolerance)
+                else if (c.origin[d] >= own.far_corner[d] - tolerance)
                   index += 2 * stride;
                 else
                   index += stride;
               }
-            neighbor_by_side[i][index] = c;
+            neighbor_by_side[i][index] = k;
           }
       }
   }

@@ -40,6 +40,7 @@ namespace dealmpm
                            const Point<dim>          &xi_old,
                            Point<dim>                &xi)
     {
+      // Owned cells only: a ghost cell's particles are another rank's.
       const std::less<const GridCell<dim> *> before;
       const GridCell<dim> *const             begin = grid.cells.data();
       const GridCell<dim> *const             end   = begin + grid.cells.size();
@@ -50,25 +51,25 @@ namespace dealmpm
         xi = c->reference_point(x);
         return GeometryInfo<dim>::is_inside_unit_cell(xi);
       };
-      if (!grid.neighbor_by_side.empty())
+      if (grid.has_side_neighbors())
         {
           unsigned int side = 0;
           for (unsigned int d = 0, stride = 1; d < dim; ++d, stride *= 3)
             side += stride * (xi_old[d] < 0 ? 0 : (xi_old[d] > 1 ? 2 : 1));
-          const GridCell<dim> *guess = grid.neighbor_by_side[i][side];
+          const GridCell<dim> *guess = grid.side_neighbor(i, side);
           if (holds(guess))
             return guess - begin;
         }
-      for (const GridCell<dim> *c : grid.neighbors[i])
-        if (holds(c))
-          return c - begin;
+      for (const unsigned int k : grid.neighbors_of(i))
+        if (holds(&grid.local_cell(k)))
+          return k;
       return none;
     }
 
     /** Whether @p xi, outside grid.cells[i], may lie beyond a boundary
      * face of that cell, where hold_at_walls() has to look: on grids of
      * boxes only if no cell lies across a face it is beyond (a face
-     * neighbour is at index sum_d 3^d of neighbor_by_side, less or plus
+     * neighbour is at side sum_d 3^d of side_neighbor(), less or plus
      * 3^d along the face's axis); elsewhere always. Most particles that
      * leave a cell enter a neighbour, and this costs less than the look. */
     template <int dim>
@@ -77,13 +78,12 @@ namespace dealmpm
                          const unsigned int         i,
                          const Point<dim>          &xi)
     {
-      if (grid.neighbor_by_side.empty())
+      if (!grid.has_side_neighbors())
         return true;
       constexpr unsigned int centre = (Utilities::pow(3, dim) - 1) / 2;
       for (unsigned int d = 0, stride = 1; d < dim; ++d, stride *= 3)
-        if ((xi[d] < 0 &&
-             grid.neighbor_by_side[i][centre - stride] == nullptr) ||
-            (xi[d] > 1 && grid.neighbor_by_side[i][centre + stride] == nullptr))
+        if ((xi[d] < 0 && grid.side_neighbor(i, centre - stride) == nullptr) ||
+            (xi[d] > 1 && grid.side_neighbor(i, centre + stride) == nullptr))
           return true;
       return false;
     }

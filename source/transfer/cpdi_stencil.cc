@@ -66,7 +66,7 @@ namespace dealmpm
           unsigned int index = 0, stride = 1;
           for (unsigned int d = 0; d < dim; ++d, stride *= 3)
             index += (xi[d] < 0. ? 0 : (xi[d] > 1. ? 2 : 1)) * stride;
-          const GridCell<dim> *guess = grid.neighbor_by_side[i][index];
+          const GridCell<dim> *guess = grid.side_neighbor(i, index);
           if (guess != nullptr)
             {
               const Point<dim> candidate = unit_point<dim, boxes>(*guess, x);
@@ -79,8 +79,9 @@ namespace dealmpm
             }
         }
       const GridCell<dim> *best = &own;
-      for (const GridCell<dim> *c : grid.neighbors[i])
+      for (const unsigned int k : grid.neighbors_of(i))
         {
+          const GridCell<dim> *c = &grid.local_cell(k);
           if (c == &own)
             continue;
           const Point<dim> candidate = unit_point<dim, boxes>(*c, x);

@@ -185,13 +185,14 @@ namespace dealmpm
             return;
           gathered.clear();
           double covered = 0;
-          for (const GridCell<dim> *c : grid.neighbors[i])
+          for (const unsigned int k : grid.neighbors_of(i))
             {
-              double volume;
-              if (!overlap_integrals(*c, x, l, S, G, volume))
+              const GridCell<dim> &c = grid.local_cell(k);
+              double               volume;
+              if (!overlap_integrals(c, x, l, S, G, volume))
                 continue;
               covered += volume;
-              gathered.add_cell(grid, *c, S, G);
+              gathered.add_cell(grid, c, S, G);
             }
           // Normalise by the covered volume: the partition of unity holds
           // even where a domain reaches past the grid.

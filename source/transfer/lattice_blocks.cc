@@ -36,7 +36,7 @@ namespace dealmpm
       std::uint32_t present   = 0;
       unsigned int  n_present = 0;
       for (unsigned int s = 0; s < Utilities::pow(3, dim); ++s)
-        if (const GridCell<dim> *c = grid.neighbor_by_side[i][s])
+        if (const GridCell<dim> *c = grid.side_neighbor(i, s))
           {
             if (!is_plain_box_of(*c, h))
               return 0;
@@ -44,7 +44,7 @@ namespace dealmpm
             ++n_present;
           }
       // More neighbours than sides: smaller cells next to the patch.
-      if (grid.neighbors[i].size() != n_present)
+      if (grid.neighbors_of(i).size() != n_present)
         return 0;
       for (unsigned int n = 0; n < Utilities::pow(4, dim); ++n)
         {
@@ -70,7 +70,7 @@ namespace dealmpm
                 }
               if (!valid || !((present >> side_index) & 1u))
                 continue;
-              const GridCell<dim> &c = *grid.neighbor_by_side[i][side_index];
+              const GridCell<dim> &c = *grid.side_neighbor(i, side_index);
               block[n]               = grid.cell_nodes[c.first_node + vertex];
               if (grid.node_positions[block[n]].distance(expected) >
                   1e-10 * h.norm())
@@ -88,7 +88,7 @@ namespace dealmpm
   {
     present.assign(grid.cells.size(), 0);
     nodes.assign(grid.cells.size() * block_size, 0);
-    if (!grid.cartesian || grid.neighbor_by_side.size() != grid.cells.size())
+    if (!grid.cartesian || !grid.has_side_neighbors())
       return;
     for (unsigned int i = 0; i < grid.cells.size(); ++i)
       present[i] = fill_block(grid, i, &nodes[i * block_size]);

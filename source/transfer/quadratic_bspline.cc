@@ -79,9 +79,10 @@ namespace dealmpm
     for (unsigned int i = 0; i < grid.cells.size(); ++i)
       {
         lower_index[i] = index_of(grid.cells[i].origin);
-        for (const GridCell<dim> *c : grid.neighbors[i])
+        for (const unsigned int k : grid.neighbors_of(i))
           for (unsigned int v = 0; v < GridCell<dim>::n_vertices; ++v)
             {
+              const GridCell<dim>       *c        = &grid.local_cell(k);
               const std::array<int, dim> index    = index_of(c->vertex(v));
               unsigned int               position = 0, stride = 1;
               for (unsigned int d = 0; d < dim; ++d, stride *= 4)

@@ -237,21 +237,56 @@ namespace dealmpm
      * (GridCell::stored_vertices points here; a deque does not move its
      * elements as it grows). */
     std::deque<typename GridCell<dim>::Vertices> curved_vertices;
-    /** Per locally owned cell (same order as cells): the owned or ghost
-     * cells that share a vertex with it, itself included. Empty until
-     * find_neighbors(); only kernels with particle domains need it. */
-    std::vector<std::vector<const GridCell<dim> *>> neighbors;
+    /** Owned cell @p k (k < cells.size()), else ghost cell k -
+     * cells.size(): the indices neighbors_of() and side_neighbor() use. */
+    const GridCell<dim> &
+    local_cell(const unsigned int k) const
+    {
+      return k < cells.size() ? cells[k] : ghost_cells[k - cells.size()];
+    }
 
-    /** On grids of boxes, per locally owned cell: the neighbour lying below
-     * (0), level with (1) or above (2) it along each axis, at index
-     * sum_d side_d 3^d; nullptr where there is none. A first guess for point
-     * location (next to hanging nodes a side may hold several cells: check
-     * the guess, then search neighbors). Filled by find_neighbors(). */
-    std::vector<std::array<const GridCell<dim> *, Utilities::pow(3, dim)>>
-      neighbor_by_side;
+    /** Whether find_neighbors() has run on the present cells. */
+    bool
+    has_neighbors() const
+    {
+      return !neighbor_begin.empty();
+    }
 
+    /** The owned or ghost cells that share a vertex with owned cell @p i,
+     * itself included, as local_cell() indices (after find_neighbors();
+     * relocation and kernels with particle domains need it). */
+    ArrayView<const unsigned int>
+    neighbors_of(const unsigned int i) const
+    {
+      return {neighbor_list.data() + neighbor_begin[i],
+              neighbor_begin[i + 1] - neighbor_begin[i]};
+    }
+
+    /** On grids of boxes, after find_neighbors(): the neighbour of owned
+     * cell @p i lying below (0), level with (1) or above (2) it along each
+     * axis, at @p side = sum_d side_d 3^d; nullptr where there is none. A
+     * first guess for point location (next to hanging nodes a side may
+     * hold several cells: check the guess, then search neighbors_of()). */
+    const GridCell<dim> *
+    side_neighbor(const unsigned int i, const unsigned int side) const
+    {
+      const unsigned int k = neighbor_by_side[i][side];
+      return k == numbers::invalid_unsigned_int ? nullptr : &local_cell(k);
+    }
+
+    /** Whether side_neighbor() is there (grids of boxes). */
+    bool
+    has_side_neighbors() const
+    {
+      return !neighbor_by_side.empty();
+    }
+
+    /** Make neighbors_of() and side_neighbor() (once per grid). */
     void
     find_neighbors();
+    /** Forget them (the cells changed). */
+    void
+    clear_neighbors();
     /** Local (owned + ghost) indices of the effective nodes of all cells. */
     std::vector<unsigned int> cell_nodes;
     /** Position of each local (owned + ghost) node, by local index. */
@@ -259,6 +294,21 @@ namespace dealmpm
     std::vector<double>     cell_node_weights;
 
   private:
+    /** side_neighbor()'s table, from neighbors_of(). */
+    void
+    find_side_neighbors();
+
+    /** neighbors_of(i) is neighbor_list[neighbor_begin[i]] to
+     * [neighbor_begin[i + 1]]: 4 B a neighbour and none of a vector's
+     * own (a vector of pointers per cell took about 250 B of a 3D cell
+     * before 2026-11-30). */
+    std::vector<unsigned int> neighbor_begin;
+    std::vector<unsigned int> neighbor_list;
+    /** Per owned cell, side_neighbor()'s local_cell() indices
+     * (numbers::invalid_unsigned_int: none). */
+    std::vector<std::array<unsigned int, Utilities::pow(3, dim)>>
+      neighbor_by_side;
+
     void
     refine_box(SceneReader &reader);
     /** coarse_checksum of the triangulation before it is refined. */

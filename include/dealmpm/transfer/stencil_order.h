@@ -114,7 +114,7 @@ namespace dealmpm
   }
 
   /** The index of @p cell in grid.cells, for the per-cell data kept beside
-   * it (grid.neighbors, the B-spline's node blocks). */
+   * it (grid.neighbors_of(), the B-spline's node blocks). */
   template <int dim>
   inline unsigned int
   index_in_grid(const BackgroundGrid<dim> &grid, const GridCell<dim> &cell)
