@@ -101,7 +101,7 @@ namespace dealmpm
         for (std::size_t i = 0; i < grid.cells.size(); ++i)
           inside[i] = !particles.empty(i);
         spread(grid, buffer, inside);
-        const int wanted = level < 0 ? context.max_level : level;
+        const int wanted = level_of_particle_cells(context.max_level);
         if (margin > 0)
           {
             // Particles still within fine cells and their buffer: keep the

@@ -43,13 +43,6 @@ namespace dealmpm
     double min  = 0;
     double max  = 0;
     double mean = 0;
-
-    /** max / mean, 1 when there are no particles. */
-    double
-    imbalance() const
-    {
-      return mean > 0 ? max / mean : 1.;
-    }
   };
 
   /** The locally owned particles of every rank, reduced (collective). */
