@@ -164,22 +164,44 @@ namespace dealmpm
     for (const Stage<dim> &stage : stages)
       stage.run(state, stage.name);
 
-    particle_check                  = state.stress_update.check;
+    finish_step(state.stress_update.check, state.left_cell, dt);
+  }
+
+  template <int dim>
+  void
+  Simulation<dim>::finish_step(const ParticleCheck<dim> &step_check,
+                               const bool                left_cell,
+                               const double              dt)
+  {
+    particle_check                  = step_check;
     const ParticleCheck<dim> &check = particle_check;
     // The step's one reduction, a min over the ranks: the largest signal
     // rate (the next step's size), the smallest J, whether a particle
-    // failed, whether one left its cell, whether a stencil failed.
-    double reduced[5] = {-std::max(check.max_signal_rate,
+    // failed, whether one left its cell, whether a stencil failed, whether
+    // an FEM region's coupling failed or asks to publish its boxes.
+    const std::string coupling_failure = regions.coupling_failure();
+    double            reduced[7]       = {-std::max(check.max_signal_rate,
                                    regions.local_signal_rate()),
-                         check.min_J,
+                                          check.min_J,
                          check.failed ? -1. : 0.,
-                         state.left_cell ? -1. : 0.,
-                         stencil.failed ? -1. : 0.};
-    Utilities::MPI::min(ArrayView<const double>(reduced, 5),
+                         left_cell ? -1. : 0.,
+                         stencil.failed ? -1. : 0.,
+                         coupling_failure.empty() ? 0. : -1.,
+                         regions.coupling_wants_publication() ? -1. : 0.};
+    Utilities::MPI::min(ArrayView<const double>(reduced, 7),
                         comm,
-                        ArrayView<double>(reduced, 5));
+                        ArrayView<double>(reduced, 7));
     max_signal_rate = -reduced[0];
     loop.accuracy.observe_step(reduced[1], dt * max_signal_rate);
+    if (reduced[5] < 0)
+      {
+        std::ostringstream message;
+        message << "step " << loop.step + 1 << " (t = " << loop.time + dt
+                << "): " << first_message(coupling_failure, comm);
+        throw RunError(message.str());
+      }
+    if (reduced[6] < 0)
+      regions.publish_coupling_at_next_step();
     // The stencil first: a particle's failure may follow from it.
     if (reduced[4] < 0)
       stop_on_particle(stencil.failed,

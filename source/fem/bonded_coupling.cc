@@ -164,7 +164,7 @@ namespace dealmpm
   template <int dim>
   std::vector<double>
   BondedCoupling<dim>::grid_velocities(const BackgroundGrid<dim> &grid,
-                                       const NodalFields<dim>    &fields) const
+                                       const NodalFields<dim>    &fields)
   {
     // v (and B, column by column) per node.
     const unsigned int  width = dim + (affine ? dim * dim : 0);

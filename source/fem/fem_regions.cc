@@ -237,6 +237,51 @@ namespace dealmpm
       }
   }
 
+  template <int dim>
+  void
+  FemRegions<dim>::for_each_coupling(
+    const std::function<void(NodesOnGrid<dim> &)> &f)
+  {
+    for (FemRegion<dim> &region : regions)
+      {
+        if (region.bonded)
+          f(region.bonded->nodes_on_grid());
+        if (region.contact)
+          f(region.contact->nodes_on_grid());
+      }
+  }
+
+  template <int dim>
+  bool
+  FemRegions<dim>::coupling_wants_publication()
+  {
+    bool wanted = false;
+    for_each_coupling([&](NodesOnGrid<dim> &points) {
+      wanted = wanted || points.publication_wanted();
+    });
+    return wanted;
+  }
+
+  template <int dim>
+  void
+  FemRegions<dim>::publish_coupling_at_next_step()
+  {
+    for_each_coupling(
+      [](NodesOnGrid<dim> &points) { points.publish_at_next_step(); });
+  }
+
+  template <int dim>
+  std::string
+  FemRegions<dim>::coupling_failure()
+  {
+    std::string failure;
+    for_each_coupling([&](NodesOnGrid<dim> &points) {
+      if (failure.empty())
+        failure = points.failure();
+    });
+    return failure;
+  }
+
   template class FemRegions<2>;
   template class FemRegions<3>;
 } // namespace dealmpm

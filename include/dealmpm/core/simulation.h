@@ -256,6 +256,12 @@ namespace dealmpm
      * instead of stored (Stencil::where_used): nothing else reads them. */
     bool
     weights_where_used() const;
+    /** The step's one reduction and what it decides: the next step's
+     * size, stops, relocation and the couplings' publication. */
+    void
+    finish_step(const ParticleCheck<dim> &step_check,
+                const bool                left_cell,
+                const double              dt);
     void
     relocate_particles();
     /** After the cells changed (refinement or repartition): rebuild every

@@ -40,9 +40,18 @@ namespace dealmpm
     void
     grid_changed(const BackgroundGrid<dim> &grid);
 
-    /** Gather the nodes and add m, m v and f (the region's forces of this
-     * step) to the nodal fields. Collective; RunError when a node is in
-     * no cell of the grid. */
+    /** The coupling nodes on the grid (their publication and failures,
+     * for the step's reduction). */
+    NodesOnGrid<dim> &
+    nodes_on_grid()
+    {
+      return points;
+    }
+
+    /** Send the nodes to the ranks that place them and add m, m v and f
+     * (the region's forces of this step) to the nodal fields. All ranks
+     * call it together; a node in no cell of the grid is a failure of
+     * nodes_on_grid(). */
     void
     deposit(const BackgroundGrid<dim> &grid, NodalFieldSet<dim> &fields);
 
@@ -79,10 +88,10 @@ namespace dealmpm
 
     /** The grid's velocity (and B) at the placed points, summed to the
      * points' owners: per node of this rank, v (and B column by
-     * column). Collective. */
+     * column). Point to point. */
     std::vector<double>
     grid_velocities(const BackgroundGrid<dim> &grid,
-                    const NodalFields<dim>    &fields) const;
+                    const NodalFields<dim>    &fields);
 
     SolidRegion<dim> &region;
     unsigned int      body;

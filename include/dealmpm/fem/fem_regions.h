@@ -2,10 +2,12 @@
 
 #include <dealmpm/effects/effect.h>
 #include <dealmpm/fem/fem_region.h>
+#include <dealmpm/fem/nodes_on_grid.h>
 #include <dealmpm/grid/background_grid.h>
 #include <dealmpm/grid/nodal_field_set.h>
 #include <dealmpm/materials/material.h>
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -123,7 +125,25 @@ namespace dealmpm
     void
     grid_changed(const BackgroundGrid<dim> &grid);
 
+    /** Whether a coupling node of this rank asks for the ranks' boxes to
+     * be published again (NodesOnGrid; not collective). */
+    bool
+    coupling_wants_publication();
+
+    /** Some rank asked: the couplings publish at the next step. */
+    void
+    publish_coupling_at_next_step();
+
+    /** Why a coupling node of this rank could not be coupled this step,
+     * or empty (not collective). */
+    std::string
+    coupling_failure();
+
   private:
+    /** Call @p f with each coupling's nodes on the grid. */
+    void
+    for_each_coupling(const std::function<void(NodesOnGrid<dim> &)> &f);
+
     /** The effects' potential per unit mass, for the regions' nodes. */
     std::function<double(const Point<dim> &)>
     potential() const;

@@ -57,6 +57,14 @@ namespace dealmpm
     void
     grid_changed(const BackgroundGrid<dim> &grid);
 
+    /** The coupling nodes on the grid (their publication and failures,
+     * for the step's reduction). */
+    NodesOnGrid<dim> &
+    nodes_on_grid()
+    {
+      return points;
+    }
+
     /** After the grid update (v* on the core fields, with their walls)
      * and the region's forces: correct both sides where the MPM material
      * of @p particles (its weights in @p stencil) meets the region.
