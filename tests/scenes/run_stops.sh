@@ -76,4 +76,21 @@ code=$?
 grep -q "particle [0-9]* at (.*): its CPDI domain reaches past the cells" err.txt \
   || { fail "CPDI domain: message"; cat err.txt; }
 
+# A bonded FEM region whose coupling nodes leave the grid (the bar moving
+# left at 5 m/s, nothing holding it): the run stops at the step's
+# reduction with the node's position, on 1 and 2 ranks (the nodes go
+# point to point; before 2026-11-30 the stop came from a sum over all
+# ranks inside the step and named no step).
+leaving=(-s "FEM region 1/Fixed boundaries=" -s "FEM region 1/Initial velocity=-5, 0"
+         -s "Body 1/Velocity=-5, 0" -s "Output/Write particles=false")
+for ranks in 1 2; do
+  mpirun "${mpirun_flags[@]}" -np $ranks "$dealmpm" "$(dirname "$scene")/bonded_bar.prm" \
+    "${leaving[@]}" -s "Output/Directory=bonded_$ranks" > out.txt 2> err.txt
+  code=$?
+  [ $code = 3 ] || fail "bonded node off the grid on $ranks rank(s): exit $code, expected 3"
+  grep -q "stopped: step 102 (t = 0.102): a coupling node of an FEM region at (-0.005, 0) left the background grid" err.txt \
+    || { fail "bonded node off the grid on $ranks rank(s): message"; cat err.txt; }
+  [ -s "bonded_$ranks/statistics.csv" ] || fail "bonded node off the grid: last good output missing"
+done
+
 finish run-stop
