@@ -89,10 +89,28 @@ namespace dealmpm
   NeoHookean<dim>::max_wave_speed(
     const ArrayView<const Tensor<2, dim>> &F) const
   {
+    // The modulus falls with J where lambda >= 0 (rises where lambda < 0):
+    // the largest over the points is the one at the extreme J, one log
+    // per call instead of one per point (the same number). Where that J is
+    // not positive (a log of NaN or -inf) the loop over all decides, as
+    // before.
+    if (F.size() == 0)
+      return 0.;
+    std::size_t extreme   = 0;
+    double      extreme_J = determinant(F[0]);
+    for (std::size_t q = 1; q < F.size(); ++q)
+      {
+        const double J = determinant(F[q]);
+        if (lame.lambda >= 0 ? J < extreme_J : J > extreme_J)
+          extreme = q, extreme_J = J;
+      }
     double largest = 0;
-    for (const Tensor<2, dim> &f : F)
-      largest = std::max(largest, neo_hookean_modulus(lame, f));
-    return F.size() == 0 ? 0. : std::sqrt(largest / this->density);
+    if (extreme_J > 0)
+      largest = neo_hookean_modulus(lame, F[extreme]);
+    else
+      for (const Tensor<2, dim> &f : F)
+        largest = std::max(largest, neo_hookean_modulus(lame, f));
+    return std::sqrt(largest / this->density);
   }
 
   template <int dim>
