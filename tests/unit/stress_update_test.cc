@@ -171,10 +171,12 @@ namespace
   }
 
   /** Whether max_wave_speed() of @p material over points near I (some
-   * stretched, some compressed) is the largest wave_speed() to the bit. */
+   * stretched, some compressed; with @p inverted one turned inside out,
+   * J < 0) is the largest wave_speed() to the bit. */
   template <int dim>
   bool
-  max_wave_speed_is_largest(const Material<dim> &material)
+  max_wave_speed_is_largest(const Material<dim> &material,
+                            const bool           inverted = false)
   {
     std::mt19937                           rng(7);
     std::uniform_real_distribution<double> entry(-0.2, 0.2);
@@ -185,6 +187,8 @@ namespace
         for (unsigned int i = 0; i < dim; ++i)
           for (unsigned int j = 0; j < dim; ++j)
             f[i][j] = (i == j ? 1. : 0.) + entry(rng);
+        if (inverted && &f == &F[3])
+          f[0] *= -1.;
         largest = std::max(largest, material.wave_speed(f));
       }
     return material.max_wave_speed(make_array_view(std::as_const(F))) ==
@@ -243,10 +247,26 @@ TEST(StressUpdate, CellBatchEqualsPointByPoint)
 }
 
 // A region's cell takes the largest wave speed of its points in one call:
-// the models that take the square root once (neo-Hookean, linear elastic)
-// and the default (J2 plasticity) give the largest point value to the bit.
+// the models that take the square root once (neo-Hookean, linear elastic;
+// the neo-Hookean also takes one log, at the smallest J, or the largest
+// where lambda < 0) and the default (J2 plasticity) give the largest point
+// value to the bit, also with an inverted point among them.
 TEST(StressUpdate, CellMaxWaveSpeedEqualsLargestPoint)
 {
+  // Poisson's ratio -0.2: lambda < 0, the modulus rises with J.
+  NeoHookean<2> auxetic_2({-1.6e6, 3.8e6});
+  NeoHookean<3> auxetic_3({-1.6e6, 3.8e6});
+  for (const bool inverted : {false, true})
+    {
+      auxetic_2.density = auxetic_3.density = 1000;
+      EXPECT_TRUE(max_wave_speed_is_largest<2>(auxetic_2, inverted));
+      EXPECT_TRUE(max_wave_speed_is_largest<3>(auxetic_3, inverted));
+      NeoHookean<2> neo_2(lame);
+      NeoHookean<3> neo_3(lame);
+      neo_2.density = neo_3.density = 1000;
+      EXPECT_TRUE(max_wave_speed_is_largest<2>(neo_2, inverted));
+      EXPECT_TRUE(max_wave_speed_is_largest<3>(neo_3, inverted));
+    }
   NeoHookean<2>    neo_2(lame);
   NeoHookean<3>    neo_3(lame);
   LinearElastic<2> linear_2(lame);
