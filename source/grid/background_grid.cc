@@ -482,6 +482,14 @@ namespace dealmpm
       {
         const unsigned int n_local =
           grid.cells.size() + grid.ghost_cells.size();
+        // Where every owned and ghost cell has one level, no vertex of an
+        // owned cell hangs: a cell's own vertices are all it touches (the
+        // faces and lines below would add only what the neighbours add
+        // themselves).
+        bool one_level = true;
+        for (unsigned int k = 1; k < n_local; ++k)
+          one_level = one_level && grid.local_cell(k).cell->level() ==
+                                     grid.local_cell(0).cell->level();
         // Visit every (vertex, cell) pair twice: count, then place.
         const auto for_each_pair = [&](const auto &visit) {
           for (unsigned int k = 0; k < n_local; ++k)
@@ -489,6 +497,8 @@ namespace dealmpm
               const auto &cell = grid.local_cell(k).cell;
               for (const unsigned int v : cell->vertex_indices())
                 visit(cell->vertex_index(v), k);
+              if (one_level)
+                continue;
               for (const unsigned int f : cell->face_indices())
                 if (!cell->at_boundary(f) && cell->neighbor(f)->is_active())
                   if (const unsigned int n =
@@ -546,22 +556,23 @@ namespace dealmpm
     neighbor_begin.reserve(cells.size() + 1);
     neighbor_list.clear();
     neighbor_list.reserve(cells.size() * Utilities::pow(3, dim));
+    // listed_for[n] == i + 1: cell n is already among cell i's neighbours
+    // (kept in the order first met, as a search of the list kept them).
+    std::vector<unsigned int> listed_for(cells.size() + ghost_cells.size(), 0);
     for (unsigned int i = 0; i < cells.size(); ++i)
       {
-        const auto first = neighbor_list.end() - neighbor_list.begin();
         for (const unsigned int v : cells[i].cell->vertex_indices())
           {
             const unsigned int vertex = cells[i].cell->vertex_index(v);
             for (unsigned int k = at_vertex.begin[vertex];
                  k < at_vertex.begin[vertex + 1];
                  ++k)
-              {
-                const unsigned int n = at_vertex.cell[k];
-                if (std::find(neighbor_list.begin() + first,
-                              neighbor_list.end(),
-                              n) == neighbor_list.end())
+              if (const unsigned int n = at_vertex.cell[k];
+                  listed_for[n] != i + 1)
+                {
+                  listed_for[n] = i + 1;
                   neighbor_list.push_back(n);
-              }
+                }
           }
         neighbor_begin.push_back(neighbor_list.size());
       }
