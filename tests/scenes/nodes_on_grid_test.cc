@@ -1,11 +1,13 @@
 // NodesOnGrid couples an FEM region's nodes to the background grid point to
 // point: each rank sends its points only to the ranks whose owned cells'
 // box holds them, after the ranks published their boxes. ctest runs these
-// tests on 1, 2 and 3 ranks. Points spread over the grid, owned by the
-// ranks in turn (a partition unlike the grid's), circle around the box:
-// every point must be placed by exactly one rank and its answer (the
-// grid's linear interpolation of the node positions, exact for x itself)
-// must reach its owner, with the boxes published again only now and then.
+// tests on 1, 2 and 3 ranks. A cluster of points, owned by the ranks in
+// turn (a partition unlike the grid's), circles through the box: every
+// point must be placed by exactly one rank and its answer (the grid's
+// linear interpolation of the node positions, exact for x itself up to
+// round-off, hence 1e-12) must reach its owner, with the boxes published
+// again only now and then. A point off the grid, or one that jumps past
+// its published box, must stop the run, never be lost silently.
 #include <deal.II/base/mpi.h>
 
 #include <dealmpm/base/run_messages.h>
