@@ -159,7 +159,7 @@ namespace dealmpm
       }
       // A failed stencil (CPDI) keeps finite entries, so the step can
       // finish: the run stops at the step's reduction (Simulation::
-      // advance), without a collective of its own.
+      // finish_step), without a collective of its own.
     }
 
     template <int dim>
