@@ -73,6 +73,18 @@ namespace dealmpm
         return -mass * factor_now * (g * x);
       }
 
+      bool
+      potential_steady_from(const double t) const override
+      {
+        return ramp_time <= 0. || t >= ramp_time; // factor() is 1 from t on
+      }
+
+      bool
+      body_acceleration_is_uniform() const override
+      {
+        return true;
+      }
+
       Tensor<1, dim>
       body_acceleration(const Point<dim> &,
                         const Point<dim> &,

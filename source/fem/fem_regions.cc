@@ -37,6 +37,15 @@ namespace dealmpm
   }
 
   template <int dim>
+  bool
+  FemRegions<dim>::potential_steady_from(const double t) const
+  {
+    return std::all_of(effects.begin(), effects.end(), [t](const auto &e) {
+      return e->potential_steady_from(t);
+    });
+  }
+
+  template <int dim>
   void
   FemRegions<dim>::make(
     SceneReader                                       &reader,
@@ -72,11 +81,18 @@ namespace dealmpm
         b += effect->body_acceleration(X, x, v, t);
       return b;
     };
+    const bool uniform =
+      std::all_of(effects.begin(), effects.end(), [](const auto &e) {
+        return e->body_acceleration_is_uniform();
+      });
+    // Where every potential is steady from now on, the nodes' potential
+    // is the one the last step ended with: the work it would add is 0.
+    const bool potential_steady = potential_steady_from(time);
     for (FemRegion<dim> &region : regions)
       {
-        if (!effects.empty())
+        if (!potential_steady)
           region.solid->track_potential(potential(), true);
-        region.solid->compute_forces(time, dt, body_force);
+        region.solid->compute_forces(time, dt, body_force, uniform);
         if (region.bonded)
           region.bonded->deposit(grid, fields);
       }
@@ -100,7 +116,8 @@ namespace dealmpm
           region.contact->apply(
             grid, fields, particles, stencil, mass_threshold, dt);
         region.solid->advance(time, dt);
-        if (!effects.empty())
+        // Only for the next step's change in time (compute_forces()).
+        if (!potential_steady_from(time + dt))
           region.solid->track_potential(potential(), false);
       }
   }

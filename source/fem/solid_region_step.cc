@@ -245,19 +245,26 @@ namespace dealmpm
   void
   SolidRegion<dim>::compute_forces(const double          time,
                                    const double          dt,
-                                   const BodyForce<dim> &body_force)
+                                   const BodyForce<dim> &body_force,
+                                   const bool            uniform)
   {
     internal_force(last_dt);
     const double t_mid = time + 0.5 * dt;
     if (!conditions.traction.empty())
       force.add(conditions.traction_curve(t_mid), traction_force);
+    const Tensor<1, dim> b_uniform =
+      uniform && body_force ?
+        body_force(Point<dim>(), Point<dim>(), Tensor<1, dim>(), t_mid) :
+        Tensor<1, dim>();
     if (body_force)
       for (const Node &node : nodes)
         {
-          const Tensor<1, dim> b = body_force(node.X,
-                                              position(node),
-                                              node_vector(velocity, node),
-                                              t_mid);
+          const Tensor<1, dim> b = uniform ?
+                                     b_uniform :
+                                     body_force(node.X,
+                                                position(node),
+                                                node_vector(velocity, node),
+                                                t_mid);
           const double         m = mass.local_element(node.dof[0]);
           for (unsigned int d = 0; d < dim; ++d)
             force.local_element(node.dof[d]) += m * b[d];
@@ -370,19 +377,20 @@ namespace dealmpm
     advance(time, dt);
   }
 
-#define DEALMPM_INSTANTIATE(dim)                                            \
-  template double SolidRegion<dim>::stable_time_step(const double) const;   \
-  template void   SolidRegion<dim>::compute_forces(const double,            \
-                                                 const double,            \
-                                                 const BodyForce<dim> &); \
-  template void   SolidRegion<dim>::advance(const double, const double);    \
-  template void   SolidRegion<dim>::update_signal_rate();                   \
-  template void   SolidRegion<dim>::step(const double,                      \
-                                       const double,                      \
-                                       const BodyForce<dim> &);           \
-  template Tensor<2, dim> SolidRegion<dim>::reference_gradient(             \
-    const LinearAlgebra::distributed::Vector<double> &,                     \
-    const unsigned int,                                                     \
+#define DEALMPM_INSTANTIATE(dim)                                           \
+  template double SolidRegion<dim>::stable_time_step(const double) const;  \
+  template void   SolidRegion<dim>::compute_forces(const double,           \
+                                                 const double,           \
+                                                 const BodyForce<dim> &, \
+                                                 const bool);            \
+  template void   SolidRegion<dim>::advance(const double, const double);   \
+  template void   SolidRegion<dim>::update_signal_rate();                  \
+  template void   SolidRegion<dim>::step(const double,                     \
+                                       const double,                     \
+                                       const BodyForce<dim> &);          \
+  template Tensor<2, dim> SolidRegion<dim>::reference_gradient(            \
+    const LinearAlgebra::distributed::Vector<double> &,                    \
+    const unsigned int,                                                    \
     const Tensor<1, dim> *) const;
   DEALMPM_INSTANTIATE(2)
   DEALMPM_INSTANTIATE(3)

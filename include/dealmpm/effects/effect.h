@@ -283,11 +283,32 @@ namespace dealmpm
       return {};
     }
 
+    /** True when body_acceleration() depends on t alone (the same at
+     * every X, x and v, as gravity's): FEM regions then take it once a
+     * step instead of at every node. The default, false, is always
+     * right. */
+    virtual bool
+    body_acceleration_is_uniform() const
+    {
+      return false;
+    }
+
     /** Potential energy of a mass at x, for the statistics. */
     virtual double
     potential_energy(const double /*mass*/, const Point<dim> & /*x*/) const
     {
       return 0;
+    }
+
+    /** Whether potential_energy() at a fixed x keeps, at every time from
+     * @p t on, the value it has at t (no ramp, or one that has ended).
+     * FEM regions count a change of their nodes' potential in time as
+     * work, and skip that sum over their nodes in steps where every
+     * effect's potential is steady. The default, false, is always right. */
+    virtual bool
+    potential_steady_from(const double /*t*/) const
+    {
+      return false;
     }
 
     /** Effects that bring an exact solution (manufactured solutions): the

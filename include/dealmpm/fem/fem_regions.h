@@ -148,6 +148,10 @@ namespace dealmpm
     std::function<double(const Point<dim> &)>
     potential() const;
 
+    /** Whether every effect's potential is steady from time @p t on. */
+    bool
+    potential_steady_from(const double t) const;
+
     const std::vector<std::unique_ptr<Effect<dim>>> &effects;
     std::vector<FemRegion<dim>>                      regions;
   };

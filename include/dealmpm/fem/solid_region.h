@@ -133,11 +133,13 @@ namespace dealmpm
 
     /** f = f_int(u) + tractions + m b at the start of a step of size dt
      * from @p time (the internal force's stress is advanced over the last
-     * step). Collective. */
+     * step). A @p uniform body force depends on t alone: it is called
+     * once. Collective. */
     void
     compute_forces(const double          time,
                    const double          dt,
-                   const BodyForce<dim> &body_force = {});
+                   const BodyForce<dim> &body_force = {},
+                   const bool            uniform    = false);
 
     /** v += dt f / m on free nodes, the prescribed velocities, bonded
      * nodes as set; then u += dt v. */
