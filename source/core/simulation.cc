@@ -175,22 +175,28 @@ namespace dealmpm
   {
     particle_check                  = step_check;
     const ParticleCheck<dim> &check = particle_check;
+    const RelocationPlan      relocation =
+      plan_relocation(left_cell, check.failed || stencil.failed);
     // The step's one reduction, a min over the ranks: the largest signal
     // rate (the next step's size), the smallest J, whether a particle
     // failed, whether one left its cell, whether a stencil failed, whether
-    // an FEM region's coupling failed or asks to publish its boxes.
+    // an FEM region's coupling failed or asks to publish its boxes, the
+    // largest relocation plan, whether particles were held at walls.
     const std::string coupling_failure = regions.coupling_failure();
-    double            reduced[7]       = {-std::max(check.max_signal_rate,
-                                   regions.local_signal_rate()),
-                                          check.min_J,
+    const double      rate =
+      std::max(check.max_signal_rate, regions.local_signal_rate());
+    double reduced[9] = {-rate,
+                         check.min_J,
                          check.failed ? -1. : 0.,
                          left_cell ? -1. : 0.,
                          stencil.failed ? -1. : 0.,
                          coupling_failure.empty() ? 0. : -1.,
-                         regions.coupling_wants_publication() ? -1. : 0.};
-    Utilities::MPI::min(ArrayView<const double>(reduced, 7),
+                         regions.coupling_wants_publication() ? -1. : 0.,
+                         -double(relocation.local),
+                         relocation.held > 0 ? -1. : 0.};
+    Utilities::MPI::min(ArrayView<const double>(reduced, 9),
                         comm,
-                        ArrayView<double>(reduced, 7));
+                        ArrayView<double>(reduced, 9));
     max_signal_rate = -reduced[0];
     loop.accuracy.observe_step(reduced[1], dt * max_signal_rate);
     if (reduced[5] < 0)
@@ -222,20 +228,49 @@ namespace dealmpm
     loop.time += dt;
     loop.last_dt = dt;
     ++loop.step;
-    if (reduced[3] < 0)
+    if (reduced[3] < 0 || relocation.local > 0)
       {
         TimerOutput::Scope t(*computing_timer, "relocate");
-        relocate_particles();
+        if (reduced[3] < 0)
+          finish_relocation(std::max(int(-reduced[7]) - 1, 0),
+                            reduced[8] < 0,
+                            relocation.held);
+        else
+          particles->cancel_relocation();
       }
   }
 
   template <int dim>
-  void
-  Simulation<dim>::relocate_particles()
+  typename Simulation<dim>::RelocationPlan
+  Simulation<dim>::plan_relocation(const bool left_cell, const bool failed)
   {
-    unsigned int held = 0;
+    // Wherever G2P saw a particle outside its cell, also by round-off
+    // only (which relocates only if a particle somewhere left by more),
+    // and not where the step failed (it stops).
+    const auto &leavers = particles->leavers;
+    if (failed ||
+        !(left_cell || (leavers.recorded && !leavers.position.empty())))
+      return {};
+    TimerOutput::Scope t(*computing_timer, "relocate");
+    RelocationPlan     plan;
+    plan.local =
+      1 +
+      particles->plan_relocation(grid, boundary_conditions.walls(), plan.held);
+    return plan;
+  }
+
+  template <int dim>
+  void
+  Simulation<dim>::finish_relocation(const int          everywhere,
+                                     const bool         held_anywhere,
+                                     const unsigned int held)
+  {
     lost_this_step.clear();
-    particles->relocate(grid, boundary_conditions.walls(), &held);
+    const bool sorted = !particles->finish_relocation(grid, everywhere);
+    // Particles are lost only in deal.II's sort; the counts need a sum
+    // only when it ran or some rank held particles at a wall.
+    if (!sorted && !held_anywhere)
+      return;
     const double local[2] = {double(held), double(lost_this_step.size())};
     double       counts[2];
     Utilities::MPI::sum(ArrayView<const double>(local, 2),

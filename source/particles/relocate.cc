@@ -2,7 +2,6 @@
 // are moved into their new cells in the step's order, instead of by
 // deal.II's sort of the whole pool (see doc/lean-step.md).
 #include <deal.II/base/geometry_info.h>
-#include <deal.II/base/mpi.h>
 
 #include <dealmpm/particles/hold_at_walls.h>
 #include <dealmpm/particles/particle_set.h>
@@ -100,8 +99,27 @@ namespace dealmpm
       Particles::PropertyPool<dim>       &pool;
       std::vector<unsigned int>          &cell_of;
       std::vector<Move<dim>>              moves;
-      unsigned int                        n_held    = 0;
-      bool                                found_all = true;
+      /** What check() changed in the pool, in order. */
+      std::vector<typename ParticleSet<dim>::PoolEdit> &edits;
+      unsigned int                                      n_held    = 0;
+      bool                                              found_all = true;
+
+      typename ParticleSet<dim>::PoolEdit
+      before_edit(const typename ParticleOrder<dim>::Handle handle,
+                  const bool                                with_properties)
+      {
+        typename ParticleSet<dim>::PoolEdit edit{handle,
+                                                 pool.get_location(handle),
+                                                 pool.get_reference_location(
+                                                   handle),
+                                                 {}};
+        if (with_properties)
+          {
+            const ArrayView<const double> props = pool.get_properties(handle);
+            edit.properties.assign(props.begin(), props.end());
+          }
+        return edit;
+      }
 
       /** Particle @p k of the order, listed in grid.cells[@p i]: one
        * outside that crossed a wall is put back on it; one (then) inside
@@ -115,15 +133,20 @@ namespace dealmpm
         const Point<dim> &x      = pool.get_location(handle);
         Point<dim>        xi     = grid.cells[i].reference_point(x);
         bool              inside = GeometryInfo<dim>::is_inside_unit_cell(xi);
-        if (!inside && !walls.empty() && may_be_beyond_a_wall(grid, i, xi) &&
-            hold_at_walls(grid.cells[i], walls, fields, pool, handle, xi))
+        if (!inside && !walls.empty() && may_be_beyond_a_wall(grid, i, xi))
           {
-            ++n_held; // x (a reference into the pool) is on the wall now
-            xi     = grid.cells[i].reference_point(x);
-            inside = GeometryInfo<dim>::is_inside_unit_cell(xi);
+            auto before = before_edit(handle, true);
+            if (hold_at_walls(grid.cells[i], walls, fields, pool, handle, xi))
+              {
+                edits.push_back(std::move(before));
+                ++n_held; // x (a reference into the pool) is on the wall now
+                xi     = grid.cells[i].reference_point(x);
+                inside = GeometryInfo<dim>::is_inside_unit_cell(xi);
+              }
           }
         if (inside)
           {
+            edits.push_back(before_edit(handle, false));
             pool.set_reference_location(handle, xi);
             return;
           }
@@ -188,45 +211,95 @@ namespace dealmpm
   } // namespace
 
   template <int dim>
-  bool
-  ParticleSet<dim>::relocate(BackgroundGrid<dim>                &grid,
-                             const std::set<types::boundary_id> &walls,
-                             unsigned int                       *n_held)
+  int
+  ParticleSet<dim>::plan_relocation(BackgroundGrid<dim>                &grid,
+                                    const std::set<types::boundary_id> &walls,
+                                    unsigned int                       &n_held)
   {
     grid.find_neighbors();
     const ParticleOrder<dim> &now = order_over(grid);
-    std::vector<unsigned int> cell_of(now.handles.size());
-    auto                     &pool = handler.get_property_pool();
-    MoveFinder<dim>           finder{
-      grid, walls, fields, now, pool, cell_of, {}, 0, true};
+    planned_cell_of.resize(now.handles.size());
+    planned_edits.clear();
+    MoveFinder<dim> finder{grid,
+                           walls,
+                           fields,
+                           now,
+                           handler.get_property_pool(),
+                           planned_cell_of,
+                           {},
+                           planned_edits};
     find_moves(finder, leavers);
+    n_held = finder.n_held;
+    planned_moves.clear();
+    for (const Move<dim> &move : finder.moves)
+      planned_moves.emplace_back(move.position, move.xi);
+    return finder.found_all ? (finder.moves.empty() ? 0 : 1) : 2;
+  }
+
+  template <int dim>
+  void
+  ParticleSet<dim>::cancel_relocation()
+  {
+    auto &pool = handler.get_property_pool();
+    for (auto edit = planned_edits.rbegin(); edit != planned_edits.rend();
+         ++edit)
+      {
+        pool.set_location(edit->handle, edit->location);
+        pool.set_reference_location(edit->handle, edit->reference);
+        if (!edit->properties.empty())
+          std::copy(edit->properties.begin(),
+                    edit->properties.end(),
+                    pool.get_properties(edit->handle).begin());
+      }
+    planned_edits.clear();
+    planned_moves.clear();
+    std::vector<unsigned int>().swap(planned_cell_of);
+  }
+
+  template <int dim>
+  bool
+  ParticleSet<dim>::finish_relocation(const BackgroundGrid<dim> &grid,
+                                      const int                  everywhere)
+  {
     leavers.recorded = false;
-    if (n_held != nullptr)
-      *n_held = finder.n_held;
-    const std::vector<Move<dim>> &moves = finder.moves;
-    // 0: no particle moved, 1: moved here, 2: deal.II must sort.
-    const int here       = finder.found_all ? (moves.empty() ? 0 : 1) : 2;
-    const int everywhere = Utilities::MPI::max(here, grid.comm);
+    planned_edits.clear();
+    // The plan's memory goes with it (4 B a particle).
+    std::vector<unsigned int>                        cell_of;
+    std::vector<std::pair<unsigned int, Point<dim>>> moves;
+    cell_of.swap(planned_cell_of);
+    moves.swap(planned_moves);
     if (everywhere == 2)
       {
         sort();
         return false;
       }
-    handler_lags = handler_lags || everywhere == 1;
-    if (here == 0)
+    // The order is rebuilt from deal.II's lists, so before they may lag
+    // (on a rank that planned nothing, the order may be out of date).
+    const ParticleOrder<dim> &now = order_over(grid);
+    handler_lags                  = handler_lags || everywhere == 1;
+    if (moves.empty())
       return true;
-    for (const Move<dim> &move : moves)
-      pool.set_reference_location(now.handles[move.position], move.xi);
+    auto &pool = handler.get_property_pool();
+    for (const auto &[position, xi] : moves)
+      pool.set_reference_location(now.handles[position], xi);
     regroup(order, pool, cell_of, now.handles, grid.cells.size());
     return true;
   }
 
+  template int
+  ParticleSet<2>::plan_relocation(BackgroundGrid<2> &,
+                                  const std::set<types::boundary_id> &,
+                                  unsigned int &);
+  template int
+  ParticleSet<3>::plan_relocation(BackgroundGrid<3> &,
+                                  const std::set<types::boundary_id> &,
+                                  unsigned int &);
+  template void
+  ParticleSet<2>::cancel_relocation();
+  template void
+  ParticleSet<3>::cancel_relocation();
   template bool
-  ParticleSet<2>::relocate(BackgroundGrid<2> &,
-                           const std::set<types::boundary_id> &,
-                           unsigned int *);
+  ParticleSet<2>::finish_relocation(const BackgroundGrid<2> &, const int);
   template bool
-  ParticleSet<3>::relocate(BackgroundGrid<3> &,
-                           const std::set<types::boundary_id> &,
-                           unsigned int *);
+  ParticleSet<3>::finish_relocation(const BackgroundGrid<3> &, const int);
 } // namespace dealmpm

@@ -262,8 +262,26 @@ namespace dealmpm
     finish_step(const ParticleCheck<dim> &step_check,
                 const bool                left_cell,
                 const double              dt);
+    /** What this rank's half of a relocation found: 0 if it looked at
+     * no particle, else 1 + ParticleSet::plan_relocation(); the particles
+     * it held at walls. */
+    struct RelocationPlan
+    {
+      int          local = 0;
+      unsigned int held  = 0;
+    };
+    /** Relocation's first half, before the step's reduction so that the
+     * ranks agree on the second there. */
+    RelocationPlan
+    plan_relocation(const bool left_cell, const bool failed);
+    /** Relocation's second half, given the largest plan over the ranks:
+     * then the held and lost particles are counted (a sum over the ranks
+     * only where deal.II sorted or @p held_anywhere), and a lost particle
+     * stops the run or is reported. */
     void
-    relocate_particles();
+    finish_relocation(const int          everywhere,
+                      const bool         held_anywhere,
+                      const unsigned int held);
     /** After the cells changed (refinement or repartition): rebuild every
      * part that keeps grid data, in change_grid()'s order. */
     void

@@ -23,8 +23,8 @@ namespace dealmpm
    * velocity at the wall that is not the wall node's, so a particle next to
    * a wall can step through it and would leave the grid; linear shape
    * functions slow it to the wall's velocity on the way.
-   * ParticleSet::relocate() calls this for each particle outside its cell
-   * before it looks for the particle's new cell.
+   * ParticleSet::plan_relocation() calls this for each particle outside its
+   * cell before it looks for the particle's new cell.
    *
    * @return whether the particle was put back.
    */

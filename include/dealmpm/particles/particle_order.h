@@ -124,10 +124,10 @@ namespace dealmpm
    * Put the handles of one cell's particles (@p first to @p last) in the
    * order of the particles' ids. The order the step visits particles in
    * decides the order of its sums, so it must not depend on how they got
-   * into their cells (deal.II's sort, a restore, ParticleSet::relocate()):
-   * a checkpoint, which sorts with deal.II, would otherwise change the
-   * last digits of the run it saves, and a resumed run would not repeat
-   * an uninterrupted one bit for bit.
+   * into their cells (deal.II's sort, a restore,
+   * ParticleSet::finish_relocation()): a checkpoint, which sorts with deal.II,
+   * would otherwise change the last digits of the run it saves, and a resumed
+   * run would not repeat an uninterrupted one bit for bit.
    */
   template <int dim, typename Iterator>
   void

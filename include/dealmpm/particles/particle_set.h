@@ -1,5 +1,6 @@
 #pragma once
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/particles/particle_handler.h>
@@ -118,16 +119,17 @@ namespace dealmpm
      * current), reference locations (in the cell of the step's order),
      * ranks, and the lists of each cell's
      * particles. Those lists may lag behind the step, which moves
-     * particles between this rank's cells in its own order (relocate());
-     * walk a cell's particles with for_each_particle_in_cell(), or call
-     * update_handler() before asking the handler for them.
+     * particles between this rank's cells in its own order (plan_relocation(),
+     * finish_relocation()); walk a cell's particles with
+     * for_each_particle_in_cell(), or call update_handler() before asking the
+     * handler for them.
      */
     Particles::ParticleHandler<dim> handler;
 
     /** The particles the step's move took out of their cells, recorded by
-     * G2P for relocate(), which then checks only these: their positions
+     * G2P for plan_relocation(), which then checks only these: their positions
      * in the step's order and the indices in grid.cells of the cells they
-     * left. Trusted only while `recorded`, which relocate(), sort() and
+     * left. Trusted only while `recorded`, which relocation, sort() and
      * changed() clear. */
     struct Leavers
     {
@@ -173,17 +175,58 @@ namespace dealmpm
      * rank sorts with deal.II instead, which also reports lost particles.
      * First, each particle that crossed a face of its cell that is one of
      * @p walls is put back on it (hold_at_walls()), counted in @p n_held.
-     * Collective. Returns whether the particles were moved here (false:
-     * deal.II sorted them).
+     *
+     * In two halves, so that the ranks agree on what to do in the step's
+     * one reduction: plan_relocation() looks at this rank's particles that
+     * G2P saw leave (all of them if it did not record) and returns 0 (none
+     * left its cell), 1 (each that left is in one of this rank's
+     * neighbouring cells) or 2 (one went further); not collective.
      */
+    int
+    plan_relocation(BackgroundGrid<dim>                &grid,
+                    const std::set<types::boundary_id> &walls,
+                    unsigned int                       &n_held);
+
+    /** The second half: @p everywhere is the largest plan_relocation()
+     * over the ranks (every rank calls this, also one that planned
+     * nothing). Collective when it is 2 (deal.II sorts). Returns whether
+     * the particles were moved here (false: deal.II sorted them). */
+    bool
+    finish_relocation(const BackgroundGrid<dim> &grid, const int everywhere);
+
+    /** Or, where no rank relocates after all (the particles left their
+     * cells by round-off only), put back what plan_relocation() changed:
+     * the particles held at walls and the reference locations it set. */
+    void
+    cancel_relocation();
+
+    /** Both halves, agreed in a reduction of their own (for tests and
+     * tools; the step agrees in its own reduction). Collective. */
     bool
     relocate(BackgroundGrid<dim>                &grid,
              const std::set<types::boundary_id> &walls  = {},
-             unsigned int                       *n_held = nullptr);
+             unsigned int                       *n_held = nullptr)
+    {
+      unsigned int held = 0;
+      const int    here = plan_relocation(grid, walls, held);
+      if (n_held != nullptr)
+        *n_held = held;
+      return finish_relocation(grid, Utilities::MPI::max(here, grid.comm));
+    }
+
+    /** A particle as it was before plan_relocation() changed it: its
+     * location and reference location, and its properties if they
+     * changed too (empty if not). */
+    struct PoolEdit
+    {
+      typename ParticleOrder<dim>::Handle handle;
+      Point<dim>                          location, reference;
+      std::vector<double>                 properties;
+    };
 
     /** Bring deal.II's per-cell lists up to the step's order over
      * @p grid (deal.II's sort, and the order rebuilt from it) if
-     * relocate() moved particles since the last sort: before a grid
+     * a relocation moved particles since the last sort: before a grid
      * change, a repartition, a checkpoint, or code that asks the handler
      * for a cell's particles. Collective. */
     void
@@ -252,8 +295,14 @@ namespace dealmpm
     }
 
     mutable ParticleOrder<dim> order;
-    bool                       handler_lags        = false;
-    mutable bool               reference_from_sort = false;
+    /** What plan_relocation() found for finish_relocation(): each
+     * particle's cell index in the step's order, and the moved particles'
+     * positions in the order with their unit-cell coordinates there. */
+    std::vector<unsigned int>                        planned_cell_of;
+    std::vector<std::pair<unsigned int, Point<dim>>> planned_moves;
+    std::vector<PoolEdit>                            planned_edits;
+    bool                                             handler_lags = false;
+    mutable bool reference_from_sort                              = false;
   };
 
   /** Read and write small tensors from a particle's property array. */

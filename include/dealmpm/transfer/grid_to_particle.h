@@ -248,8 +248,8 @@ namespace dealmpm
     /** Moves the particle from @p x_p by @p dx: displacement, position and
      * reference location in its old cell @p c; sets @p left_cell if that
      * location is outside the cell by more than round-off. Returns whether
-     * it is outside at all (relocate() then looks at it). @p box: @p c is
-     * an axis-aligned box (GridCell::reference_point_in_box()). */
+     * it is outside at all (plan_relocation() then looks at it). @p box: @p c
+     * is an axis-aligned box (GridCell::reference_point_in_box()). */
     template <bool set_reference = true,
               bool box           = false,
               int  dim,
@@ -577,7 +577,8 @@ namespace dealmpm
       constexpr bool reference = formulation == Formulation::total_lagrangian;
       const CoreFields &f      = particles.fields;
       bool              left_cell = false;
-      auto &leavers = particles.leavers; // who leaves a cell, for relocate()
+      auto             &leavers =
+        particles.leavers; // who leaves a cell, for plan_relocation()
       if constexpr (parts::move && !reference)
         leavers.start();
       with_weights(grid, stencil, [&](const auto &weights) {
