@@ -376,13 +376,30 @@ namespace
       const_cast<BackgroundGrid<dim> &>(simulation->background_grid());
     ParticleSet<dim> &particles = simulation->particle_set();
     const double      h         = grid.cells.front().h;
+    // The block moved against the wall x = 0 (its first particles 0.01
+    // from it), in cells along the wall.
+    double x_min = 1;
+    for (const auto &p : particles.handler)
+      x_min = std::min(x_min, p.get_location()[0]);
+    const double shift = Utilities::MPI::min(x_min, MPI_COMM_WORLD) - 0.01;
     for (auto &p : particles.handler)
       {
-        Point<dim>   x    = p.get_location();
-        const double kind = p.get_id() % 3;
-        // Left by 0.35 m, past the wall at x = 0 for some (the block starts
-        // at 0.2-0.3), by up to half a cell, or by 1e-14 of a cell.
-        x[0] += kind == 0 ? -0.35 : (kind == 1 ? 0.5 * h : 1e-14 * h);
+        Point<dim> x = p.get_location();
+        x[0] -= shift;
+        p.set_location(x);
+      }
+    particles.sort();
+    particles.order_over(grid); // the step's order, as a step has it
+    // Then a third of the particles by the wall past it, a third by half
+    // a cell, a third by 1e-14 of a cell.
+    for (auto &p : particles.handler)
+      {
+        Point<dim>         x    = p.get_location();
+        const unsigned int kind = p.get_id() % 3;
+        if (kind == 0 && x[0] < 0.5 * h)
+          x[0] = -1e-3 * h;
+        else
+          x[0] += kind == 1 ? 0.5 * h : 1e-14 * h;
         p.set_location(x);
       }
     const auto   before = pool_state(particles);
