@@ -246,16 +246,21 @@ namespace dealmpm
   {
     // Wherever G2P saw a particle outside its cell, also by round-off
     // only (which relocates only if a particle somewhere left by more),
-    // and not where the step failed (it stops).
-    const auto &leavers = particles->leavers;
-    if (failed ||
-        !(left_cell || (leavers.recorded && !leavers.position.empty())))
+    // and not where the step failed (it stops). Where a particle here
+    // left by more, the ranks relocate for sure: nothing to keep for a
+    // cancel. On one rank the reduction is this rank's own, so round-off
+    // alone never relocates: no plan to make and cancel.
+    const auto &leavers  = particles->leavers;
+    const bool  roundoff = leavers.recorded && !leavers.position.empty() &&
+                          Utilities::MPI::n_mpi_processes(comm) > 1;
+    if (failed || !(left_cell || roundoff))
       return {};
     TimerOutput::Scope t(*computing_timer, "relocate");
     RelocationPlan     plan;
-    plan.local =
-      1 +
-      particles->plan_relocation(grid, boundary_conditions.walls(), plan.held);
+    plan.local = 1 + particles->plan_relocation(grid,
+                                                boundary_conditions.walls(),
+                                                plan.held,
+                                                !left_cell);
     return plan;
   }
 

@@ -15,17 +15,6 @@ namespace dealmpm
   {
     constexpr unsigned int none = numbers::invalid_unsigned_int;
 
-    /** A particle that left its cell: its position in the step's order,
-     * the index in grid.cells of the cell that holds it now, and its
-     * unit-cell coordinates there. */
-    template <int dim>
-    struct Move
-    {
-      unsigned int position;
-      unsigned int to_cell;
-      Point<dim>   xi;
-    };
-
     /** The index in grid.cells of a locally owned cell that shares a vertex
      * with grid.cells[i] and holds @p x (its unit-cell coordinates go to
      * @p xi), or none: then @p x lies in another rank's cell, beyond the
@@ -88,19 +77,22 @@ namespace dealmpm
     }
 
     /** Checks particles against their cells (see check()) and collects
-     * the moves. */
+     * the moves: each particle that left its cell, by its position in the
+     * step's order and its unit-cell coordinates in the new cell. */
     template <int dim>
     struct MoveFinder
     {
-      const BackgroundGrid<dim>          &grid;
-      const std::set<types::boundary_id> &walls;
-      const CoreFields                   &fields;
-      const ParticleOrder<dim>           &order;
-      Particles::PropertyPool<dim>       &pool;
-      std::vector<unsigned int>          &cell_of;
-      std::vector<Move<dim>>              moves;
-      /** What check() changed in the pool, in order. */
+      const BackgroundGrid<dim>                        &grid;
+      const std::set<types::boundary_id>               &walls;
+      const CoreFields                                 &fields;
+      const ParticleOrder<dim>                         &order;
+      Particles::PropertyPool<dim>                     &pool;
+      std::vector<unsigned int>                        &cell_of;
+      std::vector<std::pair<unsigned int, Point<dim>>> &moves;
+      /** What check() changed in the pool, in order; not kept where the
+       * plan cannot be cancelled. */
       std::vector<typename ParticleSet<dim>::PoolEdit> &edits;
+      const bool                                        keep_edits;
       unsigned int                                      n_held    = 0;
       bool                                              found_all = true;
 
@@ -121,6 +113,21 @@ namespace dealmpm
         return edit;
       }
 
+      /** hold_at_walls(), and the particle as it was if it held it. */
+      bool
+      hold(const typename ParticleOrder<dim>::Handle handle,
+           const unsigned int                        i,
+           const Point<dim>                         &xi)
+      {
+        if (!keep_edits)
+          return hold_at_walls(grid.cells[i], walls, fields, pool, handle, xi);
+        auto before = before_edit(handle, true);
+        if (!hold_at_walls(grid.cells[i], walls, fields, pool, handle, xi))
+          return false;
+        edits.push_back(std::move(before));
+        return true;
+      }
+
       /** Particle @p k of the order, listed in grid.cells[@p i]: one
        * outside that crossed a wall is put back on it; one (then) inside
        * gets its unit-cell coordinates (as deal.II's sort sets them), one
@@ -133,31 +140,29 @@ namespace dealmpm
         const Point<dim> &x      = pool.get_location(handle);
         Point<dim>        xi     = grid.cells[i].reference_point(x);
         bool              inside = GeometryInfo<dim>::is_inside_unit_cell(xi);
-        if (!inside && !walls.empty() && may_be_beyond_a_wall(grid, i, xi))
+        if (!inside && !walls.empty() && may_be_beyond_a_wall(grid, i, xi) &&
+            hold(handle, i, xi))
           {
-            auto before = before_edit(handle, true);
-            if (hold_at_walls(grid.cells[i], walls, fields, pool, handle, xi))
-              {
-                edits.push_back(std::move(before));
-                ++n_held; // x (a reference into the pool) is on the wall now
-                xi     = grid.cells[i].reference_point(x);
-                inside = GeometryInfo<dim>::is_inside_unit_cell(xi);
-              }
+            ++n_held; // x (a reference into the pool) is on the wall now
+            xi     = grid.cells[i].reference_point(x);
+            inside = GeometryInfo<dim>::is_inside_unit_cell(xi);
           }
         if (inside)
           {
-            edits.push_back(before_edit(handle, false));
+            if (keep_edits)
+              edits.push_back(before_edit(handle, false));
             pool.set_reference_location(handle, xi);
             return;
           }
-        Move<dim> move{k, none, {}};
+        Point<dim>   xi_new;
+        unsigned int to_cell = none;
         if (found_all)
-          move.to_cell = owned_neighbor_holding(grid, i, x, xi, move.xi);
-        found_all = found_all && move.to_cell != none;
+          to_cell = owned_neighbor_holding(grid, i, x, xi, xi_new);
+        found_all = found_all && to_cell != none;
         if (!found_all)
           return;
-        cell_of[k] = move.to_cell;
-        moves.push_back(move);
+        cell_of[k] = to_cell;
+        moves.emplace_back(k, xi_new);
       }
     };
 
@@ -214,32 +219,36 @@ namespace dealmpm
   int
   ParticleSet<dim>::plan_relocation(BackgroundGrid<dim>                &grid,
                                     const std::set<types::boundary_id> &walls,
-                                    unsigned int                       &n_held)
+                                    unsigned int                       &n_held,
+                                    const bool may_cancel)
   {
     grid.find_neighbors();
     const ParticleOrder<dim> &now = order_over(grid);
     planned_cell_of.resize(now.handles.size());
     planned_edits.clear();
+    planned_moves.clear();
+    planned_may_cancel = may_cancel;
     MoveFinder<dim> finder{grid,
                            walls,
                            fields,
                            now,
                            handler.get_property_pool(),
                            planned_cell_of,
-                           {},
-                           planned_edits};
+                           planned_moves,
+                           planned_edits,
+                           may_cancel};
     find_moves(finder, leavers);
     n_held = finder.n_held;
-    planned_moves.clear();
-    for (const Move<dim> &move : finder.moves)
-      planned_moves.emplace_back(move.position, move.xi);
-    return finder.found_all ? (finder.moves.empty() ? 0 : 1) : 2;
+    return finder.found_all ? (planned_moves.empty() ? 0 : 1) : 2;
   }
 
   template <int dim>
   void
   ParticleSet<dim>::cancel_relocation()
   {
+    // A plan made without records (a particle here surely relocates)
+    // cannot be undone.
+    AssertThrow(planned_may_cancel, ExcInternalError());
     auto &pool = handler.get_property_pool();
     for (auto edit = planned_edits.rbegin(); edit != planned_edits.rend();
          ++edit)
@@ -289,11 +298,13 @@ namespace dealmpm
   template int
   ParticleSet<2>::plan_relocation(BackgroundGrid<2> &,
                                   const std::set<types::boundary_id> &,
-                                  unsigned int &);
+                                  unsigned int &,
+                                  bool);
   template int
   ParticleSet<3>::plan_relocation(BackgroundGrid<3> &,
                                   const std::set<types::boundary_id> &,
-                                  unsigned int &);
+                                  unsigned int &,
+                                  bool);
   template void
   ParticleSet<2>::cancel_relocation();
   template void

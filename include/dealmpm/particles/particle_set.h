@@ -181,11 +181,15 @@ namespace dealmpm
      * G2P saw leave (all of them if it did not record) and returns 0 (none
      * left its cell), 1 (each that left is in one of this rank's
      * neighbouring cells) or 2 (one went further); not collective.
+     * With @p may_cancel false (a particle here left by more than
+     * round-off, so the ranks relocate for sure) it keeps no record for
+     * cancel_relocation().
      */
     int
     plan_relocation(BackgroundGrid<dim>                &grid,
                     const std::set<types::boundary_id> &walls,
-                    unsigned int                       &n_held);
+                    unsigned int                       &n_held,
+                    const bool                          may_cancel = true);
 
     /** The second half: @p everywhere is the largest plan_relocation()
      * over the ranks (every rank calls this, also one that planned
@@ -196,7 +200,8 @@ namespace dealmpm
 
     /** Or, where no rank relocates after all (the particles left their
      * cells by round-off only), put back what plan_relocation() changed:
-     * the particles held at walls and the reference locations it set. */
+     * the particles held at walls and the reference locations it set
+     * (not allowed after a plan that may not be cancelled). */
     void
     cancel_relocation();
 
@@ -208,7 +213,7 @@ namespace dealmpm
              unsigned int                       *n_held = nullptr)
     {
       unsigned int held = 0;
-      const int    here = plan_relocation(grid, walls, held);
+      const int    here = plan_relocation(grid, walls, held, false);
       if (n_held != nullptr)
         *n_held = held;
       return finish_relocation(grid, Utilities::MPI::max(here, grid.comm));
@@ -301,8 +306,9 @@ namespace dealmpm
     std::vector<unsigned int>                        planned_cell_of;
     std::vector<std::pair<unsigned int, Point<dim>>> planned_moves;
     std::vector<PoolEdit>                            planned_edits;
-    bool                                             handler_lags = false;
-    mutable bool reference_from_sort                              = false;
+    bool                                             planned_may_cancel = true;
+    bool                                             handler_lags       = false;
+    mutable bool reference_from_sort                                    = false;
   };
 
   /** Read and write small tensors from a particle's property array. */
