@@ -35,11 +35,11 @@ namespace dealmpm
                      const unsigned int                     degree,
                      const double                           min_vertex_distance)
     {
-      double stretch = 1;
+      double squared = 1;
       for (const Tensor<2, dim> &f : F)
-        stretch = std::min(stretch, smallest_stretch(f));
+        squared = std::min(squared, smallest_stretch_squared(f));
       return material.max_wave_speed(F) * degree /
-             (stretch * min_vertex_distance);
+             (std::sqrt(squared) * min_vertex_distance);
     }
   } // namespace
 

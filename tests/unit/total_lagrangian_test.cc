@@ -239,6 +239,22 @@ TEST(TotalLagrangian, SmallestStretch)
               0.05,
               1e-14);
   EXPECT_NEAR(smallest_stretch<2>(unit_symmetric_tensor<2>()), 1., 1e-15);
+  // A stretch far below the others keeps its relative accuracy (J^2 over
+  // the larger eigenvalue): J, a difference of products of size 1, is
+  // good to about eps / 1e-6 = 2e-10 relative here, while the smaller
+  // root of the characteristic equation (half trace less the radius, a
+  // difference of numbers near 1.45) is off by 4e-5. And an inverted F
+  // has the same stretches.
+  D[1][1] = 1e-6;
+  EXPECT_NEAR(smallest_stretch<2>(rotation_2d(0.4) * D * rotation_2d(-1.3)) /
+                1e-6,
+              1.,
+              1e-9);
+  D[1][1] = -0.05;
+  EXPECT_NEAR(smallest_stretch<2>(rotation_2d(0.4) * D * rotation_2d(-1.3)),
+              0.05,
+              1e-14);
+  EXPECT_NEAR(smallest_stretch_squared<2>(D), 0.05 * 0.05, 1e-15);
 
   // 3D: about z, then about x.
   Tensor<2, 3> Rz, Rx, D3;
