@@ -3,13 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#if defined(DEALMPM_HAVE_LIBMVEC) && defined(__AVX2__)
-#  include <immintrin.h>
-// glibc's vector log of four doubles (libmvec, the AVX2 variant; the
-// name is the vector ABI's, which GCC calls itself under -ffast-math).
-extern "C" __m256d _ZGVdN4v_log(__m256d);
-#endif
-
 namespace dealmpm
 {
   template <int dim>
@@ -21,17 +14,17 @@ namespace dealmpm
   {
     /** sigma = mu / J (B - I) + lambda ln(J) / J I, entry by entry in
      * scalars (the tensor expression's numbers; GCC's partial
-     * vectorization of that expression stalled on its own stores), from
-     * J = det F and its log. */
+     * vectorization of that expression stalled on its own stores). */
     template <int dim>
     inline SymmetricTensor<2, dim>
-    neo_hookean_stress(const LameParameters &lame,
-                       const Tensor<2, dim> &F,
-                       const double          J,
-                       const double          log_J)
+    neo_hookean_stress(const LameParameters &lame, const Tensor<2, dim> &F)
     {
+      const double J = determinant(F);
+      // A non-positive J makes log() NaN; the step's finiteness check
+      // then stops the run and names the particle (an FEM region checks J
+      // before).
       const double            shear = lame.mu / J;
-      const double            bulk  = lame.lambda * log_J / J;
+      const double            bulk  = lame.lambda * std::log(J) / J;
       SymmetricTensor<2, dim> stress;
       for (unsigned int a = 0; a < dim; ++a)
         for (unsigned int b = a; b < dim; ++b)
@@ -42,31 +35,6 @@ namespace dealmpm
             stress[a][b] = a == b ? shear * (B_ab - 1.) + bulk : shear * B_ab;
           }
       return stress;
-    }
-
-    template <int dim>
-    inline SymmetricTensor<2, dim>
-    neo_hookean_stress(const LameParameters &lame, const Tensor<2, dim> &F)
-    {
-      // A non-positive J makes log() NaN; the step's finiteness check
-      // then stops the run and names the particle (an FEM region checks J
-      // before).
-      const double J = determinant(F);
-      return neo_hookean_stress(lame, F, J, std::log(J));
-    }
-
-    /** y = ln x for four numbers: with glibc's vector log where the build
-     * has it (within 4 ulp of std::log, at about a quarter of the
-     * instructions), else std::log of each. */
-    inline void
-    log_of_four(const double *x, double *y)
-    {
-#if defined(DEALMPM_HAVE_LIBMVEC) && defined(__AVX2__)
-      _mm256_storeu_pd(y, _ZGVdN4v_log(_mm256_loadu_pd(x)));
-#else
-      for (unsigned int i = 0; i < 4; ++i)
-        y[i] = std::log(x[i]);
-#endif
     }
   } // namespace
 
@@ -90,18 +58,7 @@ namespace dealmpm
     const ArrayView<SymmetricTensor<2, dim>> &stress,
     const ArrayView<double> &) const
   {
-    // An FEM region's cell: the points' logs four at a time.
-    std::size_t q = 0;
-    for (; q + 4 <= F.size(); q += 4)
-      {
-        double J[4], log_J[4];
-        for (unsigned int i = 0; i < 4; ++i)
-          J[i] = determinant(F[q + i]);
-        log_of_four(J, log_J);
-        for (unsigned int i = 0; i < 4; ++i)
-          stress[q + i] = neo_hookean_stress(lame, F[q + i], J[i], log_J[i]);
-      }
-    for (; q < F.size(); ++q)
+    for (std::size_t q = 0; q < F.size(); ++q)
       stress[q] = neo_hookean_stress(lame, F[q]);
   }
 
