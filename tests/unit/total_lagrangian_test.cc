@@ -267,6 +267,12 @@ TEST(TotalLagrangian, SmallestStretch)
   D3[2][2]            = 0.3;
   EXPECT_NEAR(smallest_stretch<3>(Rz * D3 * Rx), 0.3, 1e-13);
   EXPECT_NEAR(smallest_stretch<3>(unit_symmetric_tensor<3>()), 1., 1e-14);
+  // As in 2D, a stretch of 1e-6 to 1e-9 (the smallest root of C itself,
+  // 1e-12 beside roots near 1, is off by 1e-3 here).
+  D3[2][2] = 1e-6;
+  EXPECT_NEAR(smallest_stretch<3>(Rz * D3 * Rx) / 1e-6, 1., 1e-9);
+  D3[2][2] = -0.3;
+  EXPECT_NEAR(smallest_stretch<3>(Rz * D3 * Rx), 0.3, 1e-13);
 }
 
 TEST(TotalLagrangian, BodiesApartShareNoNode)

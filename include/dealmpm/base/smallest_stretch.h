@@ -4,6 +4,7 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace dealmpm
@@ -12,10 +13,15 @@ namespace dealmpm
 
   /**
    * lambda_0 lambda_1 of a symmetric 3 x 3 @p T (its eigenvalues lambda_0
-   * >= lambda_1 >= lambda_2): deal.II's eigenvalues() (the trigonometric
-   * solution) inlined, operation for operation, without its sort and its
-   * temporaries: the same number, a third of the time an FEM region's
-   * step spent on it in 3D.
+   * >= lambda_1 >= lambda_2), from the smallest alone: lambda_0 lambda_1 =
+   * I2 - lambda_2 (I1 - lambda_2), with I1 the trace and I2 the sum of the
+   * principal 2 x 2 minors. lambda_2 is deal.II's trigonometric solution
+   * (eigenvalues(), operation for operation) for the smallest root only:
+   * one acos and one cos, where all three roots take two cosines and a
+   * sort. For T = F^T F the minors are squared areas (not negative), so
+   * I2 has no cancellation between them, and an error of lambda_2 of
+   * eps I1 moves the product by eps I1^2 at most: full relative accuracy
+   * also when lambda_2 is tiny.
    */
   DEAL_II_ALWAYS_INLINE inline double
   product_of_two_largest_eigenvalues(const SymmetricTensor<2, 3> &T)
@@ -23,14 +29,16 @@ namespace dealmpm
     const double t00 = T[0][0], t11 = T[1][1], t22 = T[2][2];
     const double t01 = T[0][1], t02 = T[0][2], t12 = T[1][2];
     const double upper_squares = t01 * t01 + t02 * t02 + t12 * t12;
-    double       e[3];
+    const double trace         = t00 + t11 + t22;
+    const double minors = (t00 * t11 - t01 * t01) + (t00 * t22 - t02 * t02) +
+                          (t11 * t22 - t12 * t12);
+    double smallest;
     if (upper_squares == 0.)
-      e[0] = t00, e[1] = t11, e[2] = t22;
+      smallest = std::min(t00, std::min(t11, t22));
     else
       {
         // T = p B + q I; det(lambda I - B) = lambda^3 - 3 lambda - det B.
-        const double trace = t00 + t11 + t22;
-        const double q     = trace / 3.0;
+        const double q = trace / 3.0;
         const double p =
           std::sqrt(((t00 - q) * (t00 - q) + (t11 - q) * (t11 - q) +
                      (t22 - q) * (t22 - q) + 2.0 * upper_squares) /
@@ -38,27 +46,20 @@ namespace dealmpm
         const double inverse_p = 1.0 / p;
         const double b00 = (t00 - q) * inverse_p, b11 = (t11 - q) * inverse_p,
                      b22 = (t22 - q) * inverse_p;
-        const double b01 = (t01 - 0.) * inverse_p, b02 = (t02 - 0.) * inverse_p,
-                     b12 = (t12 - 0.) * inverse_p;
+        const double b01 = t01 * inverse_p, b02 = t02 * inverse_p,
+                     b12 = t12 * inverse_p;
         const double tmp = b01 * b02 * b12;
         const double half_det_B =
           (tmp + tmp + b00 * b11 * b22 - b00 * b12 * b12 - b11 * b02 * b02 -
            b22 * b01 * b01) /
           2.0;
+        // phi in [0, pi / 3]: phi + 2 pi / 3 gives the smallest root.
         const double phi = half_det_B <= -1.0 ? numbers::PI / 3.0 :
                            half_det_B >= 1.0  ? 0.0 :
                                                 std::acos(half_det_B) / 3.0;
-        e[0]             = q + 2.0 * p * std::cos(phi);
-        e[2] = q + 2.0 * p * std::cos(phi + (2.0 / 3.0 * numbers::PI));
-        e[1] = trace - e[0] - e[2];
+        smallest = q + 2.0 * p * std::cos(phi + (2.0 / 3.0 * numbers::PI));
       }
-    // The two that are not the smallest (a product does not depend on
-    // the order of its factors).
-    const unsigned int smallest =
-      e[0] <= e[1] ? (e[0] <= e[2] ? 0 : 2) : (e[1] <= e[2] ? 1 : 2);
-    return smallest == 0 ? e[1] * e[2] :
-           smallest == 1 ? e[0] * e[2] :
-                           e[0] * e[1];
+    return minors - smallest * (trace - smallest);
   }
 
   /**
