@@ -1,11 +1,11 @@
-"""Pictures of the hard cases for README: each scene as shipped, its
+"""Pictures of the hard cases for the user guide (doc/guide/scenes.md): each scene as shipped, its
 particles coloured by a field at three times, from the program's own
 output. Needs ParaView's pvpython (Debian: paraview) and, without a
 display, xvfb-run:
 
     xvfb-run -a pvpython benchmarks/hard_case_pictures.py build/dealmpm [WORK [CASE,CASE]]
 
-writes doc/pictures/<case>_<k>.png (k = 0, 1, 2) and prints the README
+writes doc/pictures/<case>_<k>.png (k = 0, 1, 2) and prints the guide
 table that shows them (only the rows of the CASEs named, if any).
 """
 import os
@@ -119,7 +119,7 @@ def main():
         folder = os.path.join(work, name)
         run(dealmpm, scene, folder, times)
         files = render(folder, name, field, component, times, label, name in SIDE_VIEW)
-        cells = " ".join("![%s at t = %.3g s](doc/pictures/%s)" % (name, t, os.path.basename(p))
+        cells = " ".join("![%s at t = %.3g s](../pictures/%s)" % (name, t, os.path.basename(p))
                          for t, p in files)
         print("| %s | %s | %s |" % (name, label, cells))
 

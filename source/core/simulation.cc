@@ -154,7 +154,7 @@ namespace dealmpm
       state.fem_regions = &regions;
     state.previous_dt = loop.last_dt;
     // Not with APIC yet: its C = B D^-1 is not reliable with linear shape
-    // functions (README "Limits"), and a spinning APIC body went unstable
+    // functions (doc/guide/limits.md), and a spinning APIC body went unstable
     // with the weights.
     if (run_settings.method.scheme == UpdateScheme::USL &&
         !run_settings.method.particle_update.newmark &&

@@ -257,7 +257,7 @@ namespace dealmpm
                 << "' is reliable only when the particles take the grid's "
                    "velocity: set 'MPM/Velocity update = PIC' (under FLIP "
                    "the particles' own velocities ring, and friction that "
-                   "should hold lets bodies creep; see README, Effects)"
+                   "should hold lets bodies creep; see doc/guide/limits.md)"
                 << std::endl;
       }
   }

@@ -20,7 +20,7 @@ at_time() {
 }
 close_to() { awk -v a="$1" -v b="$2" -v tol="$3" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(d <= tol) }'; }
 
-# A block on an incline that friction holds: README's incline with mu =
+# A block on an incline that friction holds: the incline of doc/guide/effects.md with mu =
 # 0.6 > tan 30 deg, and tan theta = 0.466 < mu = 0.55. The friction work
 # is spent while the block settles and then stays; the energy does not
 # grow (the drift stays below 1 %; PIC dissipates while the block

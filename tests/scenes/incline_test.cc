@@ -239,7 +239,7 @@ TEST(Incline, FrictionlessBlockSlidesAtGSinTheta)
 // g (sin theta - mu cos theta) = 7.0242 m/s^2. (Rolling, at 30 deg with
 // mu >= tan(30 deg) / 3, wants 2/3 g sin theta; the disk does not roll:
 // it slides at the Coulomb rate while mu < tan theta and sticks above;
-// see README, Effects.)
+// see doc/guide/limits.md.)
 TEST(Incline, DiskSlipsAtTheCoulombRate)
 {
   const double end      = 0.4;
@@ -277,7 +277,7 @@ TEST(Incline, BlockSlidesOnABaseAtTheCoulombRate)
     }
   // mu = 0.6 > tan(30 deg) holds it under PIC (3e-5 m, the elastic
   // strain, at h = 1/40 and 1/80); FLIP's particle noise lets it creep
-  // (2.3 and 4.0 cm), see README, Effects.
+  // (2.3 and 4.0 cm), see doc/guide/limits.md.
   for (const double h : {0.025, 0.0125})
     {
       const Slide held = slide(

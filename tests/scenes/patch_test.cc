@@ -10,7 +10,7 @@
 //   there amplified the stress round-off about 100x per step. The nodal
 //   mass threshold is 0: the default 1e-9 leaves GIMP's and the B-spline's
 //   fringe nodes (a share below 1e-9) at v = 0, which strains a
-//   translating block by up to 2e-8 (README "Limits").
+//   translating block by up to 2e-8 (doc/guide/limits.md).
 // - Rotation (APIC, Cayley's F update, which is exactly orthogonal for a
 //   spin): APIC carries the rigid field v = W x to the grid exactly, but a
 //   spinning body is not rigid: it stretches by its centripetal load. A
@@ -21,7 +21,7 @@
 //   shape functions: APIC's C = B D^-1 takes B from the cell a particle
 //   left and D from the one it entered, and with multilinear weights D
 //   vanishes at cell faces, so C jumps by the ratio of the two distances
-//   to the face as a particle crosses (every scheme; README "Limits").
+//   to the face as a particle crosses (every scheme; doc/guide/limits.md).
 #include <dealmpm/transfer/stencil_order.h>
 
 #include <gtest/gtest.h>

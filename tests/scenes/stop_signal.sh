@@ -82,7 +82,7 @@ stop_with INT 130 int self "$dealmpm" "$scene"
 stop_with TERM 143 ranks children "$mpirun" "${flags[@]}" -np 2 "$dealmpm" "$scene"
 # mpirun forwards SIGTERM to the ranks and kills them a second later; its
 # own exit code is then 1. On a loaded machine the last output and the
-# checkpoint may not finish in that second (README): then the series on
+# checkpoint may not finish in that second (doc/guide/output.md): then the series on
 # disk must still be whole, up to the output before.
 "$mpirun" "${flags[@]}" -np 2 "$dealmpm" "$scene" -s "Output/Directory=mpirun" "${long[@]}" \
   > mpirun.log 2>&1 &
