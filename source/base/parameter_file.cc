@@ -4,19 +4,67 @@
 #include <dealmpm/base/parameter_file.h>
 #include <dealmpm/base/scene_reader.h>
 
+#include <cctype>
+#include <cstdlib>
 #include <fstream>
 #include <limits>
 #include <regex>
 #include <vector>
 
+#include "name_suggestions.h"
+
 namespace dealmpm
 {
   namespace
   {
+    // No std::regex on user text here or anywhere: libstdc++'s matcher
+    // recurses once per character, and a value of some 20 KB overflowed
+    // the stack (a SIGSEGV instead of an error line).
     std::string
     collapse_whitespace(const std::string &text)
     {
-      return std::regex_replace(text, std::regex("\\s+"), " ");
+      std::string out;
+      out.reserve(text.size());
+      bool in_space = false;
+      for (const char c : text)
+        {
+          const bool space = std::isspace(static_cast<unsigned char>(c));
+          if (!space)
+            out += c;
+          else if (!in_space)
+            out += ' ';
+          in_space = space;
+        }
+      return out;
+    }
+
+    /** deal.II quotes values in <...>: cut those over @p most characters
+     * (a 1 MB value) to their first @p most and "...". */
+    std::string
+    shorten_quoted(const std::string &text, const std::size_t most)
+    {
+      std::string out;
+      std::size_t i = 0;
+      while (i < text.size())
+        {
+          const std::size_t open  = text.find('<', i);
+          const std::size_t close = open == std::string::npos ?
+                                      open :
+                                      text.find_first_of("<>", open + 1);
+          if (close == std::string::npos)
+            return out + text.substr(i);
+          if (text[close] == '<' || close - open - 1 <= most)
+            {
+              out += text.substr(i, close - i);
+              i = close;
+              if (text[close] == '>')
+                out += '>', ++i;
+              continue;
+            }
+          out += text.substr(i, open + 1 + most - i) + "...>";
+          i = close + 1;
+        }
+      return out;
     }
   } // namespace
 
@@ -40,11 +88,7 @@ namespace dealmpm
         if (cut != std::string::npos)
           text = text.substr(0, cut);
       }
-    text = collapse_whitespace(text);
-    // deal.II quotes values in <...>: cut long ones (a 1 MB value).
-    text =
-      std::regex_replace(text, std::regex("<([^<>]{200})[^<>]+>"), "<$1...>");
-    return Utilities::trim(text);
+    return Utilities::trim(shorten_quoted(collapse_whitespace(text), 200));
   }
 
   namespace
@@ -133,6 +177,9 @@ namespace dealmpm
     const std::string number = number_pattern(description, false);
     if (!number.empty())
       return number;
+    const std::string choice = selection_choices(description, value);
+    if (!choice.empty())
+      return choice;
     std::smatch match;
     if (std::regex_match(description,
                          match,
@@ -224,6 +271,92 @@ namespace dealmpm
                        "for every entry");
   }
 
+  namespace
+  {
+    /** The number N of deal.II's "Line <N> of file", or 0. */
+    unsigned int
+    line_of(const std::string &text)
+    {
+      const std::size_t at = text.find("Line <");
+      return at == std::string::npos ?
+               0 :
+               std::strtoul(text.c_str() + at + 6, nullptr, 10);
+    }
+
+    /** The text after @p marker up to @p end (or the end), or "". */
+    std::string
+    after(const std::string &text, const std::string &marker, const char end)
+    {
+      const std::size_t at = text.find(marker);
+      if (at == std::string::npos)
+        return "";
+      const std::size_t from = at + marker.size();
+      return Utilities::trim(text.substr(from, text.find(end, from) - from));
+    }
+
+    /** deal.II's "no entry with name X" / "no such subsection X" for a
+     * line of @p file, as one line with the nearest declared names; "" for
+     * other errors. */
+    std::string
+    unknown_name_in_file(const std::exception   &e,
+                         const ParameterHandler &prm,
+                         const std::string      &file)
+    {
+      const std::string  text  = one_line(e);
+      const unsigned int line  = line_of(text);
+      const std::string  entry = after(text, "No entry with name <", '>');
+      const std::string  section =
+        after(text, "There is no such subsection to be entered:", '\n');
+      if (line == 0 || (entry.empty() && section.empty()))
+        return "";
+      const DeclaredNames names = declared_names(prm);
+      const std::string   where = file + ": line " + std::to_string(line);
+      const std::string   path  = section_at_line(file, line);
+      if (!entry.empty())
+        return where + ": '" + path + entry + "' is not an entry of this " +
+               "scene" + did_you_mean(path + entry, names.entries);
+      return where + ": 'subsection " + section + "'" +
+             (path.empty() ? "" :
+                             " in '" + path.substr(0, path.size() - 1) + "'") +
+             " is not a section of this scene" +
+             did_you_mean(path + section, names.sections);
+    }
+
+    /** The longest line of a parameter file and the longest -s override.
+     * A scene's lines are short (the longest shipped one is 122
+     * characters); bounding them keeps every path that formats user text
+     * (deal.II's messages and ours) on known sizes. */
+    constexpr std::size_t most_characters = 10000;
+
+    /** What deal.II's parser lets through unchecked: lines longer than
+     * most_characters, and values with '{', which deal.II takes for a
+     * parameter loop's variants and leaves unchecked (a Dimension of
+     * "2{" then failed as an internal error when read). */
+    void
+    check_lines(const std::string &file)
+    {
+      std::ifstream in(file, std::ios::binary);
+      std::string   line;
+      for (unsigned int number = 1; std::getline(in, line); ++number)
+        {
+          const std::string where = file + ": line " + std::to_string(number);
+          if (line.size() > most_characters)
+            throw InputError(where + " has " + std::to_string(line.size()) +
+                             " characters: expected at most " +
+                             std::to_string(most_characters) +
+                             " (is it a parameter file?)");
+          const std::string text =
+            Utilities::trim(line.substr(0, line.find('#')));
+          const std::size_t equal = text.find('=');
+          if (text.rfind("set ", 0) == 0 && equal != std::string::npos &&
+              text.find('{', equal) != std::string::npos)
+            throw InputError(where + ": '" +
+                             quote_value(Utilities::trim(text.substr(4))) +
+                             "': expected a value without '{'");
+        }
+    }
+  } // namespace
+
   void
   parse_parameter_file(ParameterHandler  &prm,
                        const std::string &file,
@@ -231,6 +364,7 @@ namespace dealmpm
   {
     if (!std::ifstream(file))
       throw InputError(file + ": cannot open the scene file");
+    check_lines(file);
     try
       {
         prm.parse_input(file,
@@ -240,7 +374,9 @@ namespace dealmpm
       }
     catch (const std::exception &e)
       {
-        const std::string plain = entry_mismatch(e, file);
+        std::string plain = entry_mismatch(e, file);
+        if (plain.empty())
+          plain = unknown_name_in_file(e, prm, file);
         throw InputError(plain.empty() ? file + ": " + one_line(e) : plain);
       }
   }
@@ -273,6 +409,11 @@ namespace dealmpm
   {
     for (const auto &item : overrides)
       {
+        if (item.size() > most_characters)
+          throw InputError("command line: -s '" + quote_value(item) + "' has " +
+                           std::to_string(item.size()) +
+                           " characters: expected at most " +
+                           std::to_string(most_characters));
         const auto equal = item.find('=');
         if (equal == std::string::npos)
           throw InputError("command line: -s '" + quote_value(item) +
@@ -296,6 +437,13 @@ namespace dealmpm
           {
             for (unsigned int i = 0; i + 1 < path.size(); ++i)
               prm.leave_subsection();
+            const std::string name = override_path(item);
+            if (collapsed_text(e).find("you have not yet declared") !=
+                std::string::npos)
+              throw InputError("command line: -s '" + quote_value(item) +
+                               "': '" + name +
+                               "' is not an entry of this scene" +
+                               did_you_mean(name, declared_names(prm).entries));
             throw InputError("command line: -s '" + quote_value(item) +
                              "': " + override_mismatch(e, value));
           }

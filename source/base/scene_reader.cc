@@ -77,8 +77,17 @@ namespace dealmpm
     const auto item = overridden.find(path_of(entry));
     if (item != overridden.end())
       return "command line: -s '" + quote_value(item->second) + "'";
+    // The entry may fail through others of its section (a body's Shape
+    // through its Center): name the command line's overrides there too,
+    // which the file does not show.
+    std::string       also;
+    const std::string section = path_of("");
+    for (const auto &[path, item] : overridden)
+      if (!section.empty() && path.rfind(section, 0) == 0)
+        also += (also.empty() ? " (with the command line's -s '" : ", -s '") +
+                quote_value(item) + "'";
     return file + ": entry '" + path_of(entry) + "' = '" +
-           quote_value(prm.get(entry)) + "'";
+           quote_value(prm.get(entry)) + "'" + (also.empty() ? "" : also + ")");
   }
 
   std::string

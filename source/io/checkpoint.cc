@@ -26,14 +26,15 @@ namespace dealmpm
     prm.declare_entry("Steps between checkpoints",
                       "0",
                       Patterns::Integer(0),
-                      "Save the run every this many steps (0: not by steps). "
-                      "Continue a saved run with 'dealmpm scene.prm "
-                      "--resume'.");
+                      "Save the run every this many steps (0: not by steps), "
+                      "and at its end. Continue a saved run with 'dealmpm "
+                      "scene.prm --resume' (after its end with a longer "
+                      "'Time/End time').");
     prm.declare_entry("Seconds between checkpoints",
                       "0",
                       Patterns::Double(),
                       "Save the run every this many seconds of wall time "
-                      "(0: not by time).");
+                      "(0: not by time), and at its end.");
     prm.declare_entry("On stop signal",
                       "true",
                       Patterns::Bool(),
@@ -213,9 +214,6 @@ namespace dealmpm
   {
     std::ostringstream printed;
     prm.print_parameters(printed, ParameterHandler::ShortPRM);
-    static const std::regex        set("\\s*set (.*?)\\s*=\\s?(.*)");
-    static const std::regex        enter("\\s*subsection (.*)");
-    static const std::regex        leave("\\s*end\\s*");
     const std::vector<std::string> free_sections = {"Output/",
                                                     "Checkpoint/",
                                                     "Load balance/",
@@ -224,19 +222,26 @@ namespace dealmpm
        "Time/End time", "Time/Maximum number of steps"};
     std::vector<std::string> sections, entries;
     std::istringstream       in(printed.str());
+    // String operations, no std::regex: its matcher recurses once per
+    // character of a (long) value.
     for (std::string line; std::getline(in, line);)
       {
-        std::smatch match;
-        if (std::regex_match(line, match, enter))
-          sections.push_back(match[1]);
-        else if (std::regex_match(line, leave) && !sections.empty())
+        const std::string text = Utilities::trim(line);
+        if (text.rfind("subsection ", 0) == 0)
+          sections.push_back(text.substr(11));
+        else if (text == "end" && !sections.empty())
           sections.pop_back();
-        else if (std::regex_match(line, match, set))
+        else if (text.rfind("set ", 0) == 0 &&
+                 text.find('=') != std::string::npos)
           {
-            std::string path;
+            const std::size_t equal = text.find('=');
+            std::string       path;
             for (const std::string &s : sections)
               path += s + "/";
-            path += match[1].str();
+            path += Utilities::trim(text.substr(4, equal - 4));
+            std::string value = text.substr(equal + 1);
+            if (!value.empty() && value[0] == ' ')
+              value.erase(0, 1);
             const auto starts = [&](const std::string &prefix) {
               return path.rfind(prefix, 0) == 0;
             };
@@ -245,7 +250,7 @@ namespace dealmpm
                              starts) &&
                 std::find(free_entries.begin(), free_entries.end(), path) ==
                   free_entries.end())
-              entries.push_back(path + " = " + match[2].str());
+              entries.push_back(path + " = " + value);
           }
       }
     return entries;

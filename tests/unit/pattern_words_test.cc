@@ -51,11 +51,23 @@ TEST(PatternWords, MultipleSelectionListsTheChoices)
             "a comma-separated list of: gravity, local damping");
 }
 
-// A Selection's own message names its choices; other patterns are left to
-// deal.II's text.
+// A Selection lists its choices and, for a value near one, suggests it.
+TEST(PatternWords, SelectionListsItsChoicesAndTheNearest)
+{
+  EXPECT_EQ(words(Patterns::Selection("box|ball|cylinder"), "bal"),
+            "one of 'box', 'ball', 'cylinder' (did you mean 'ball'?)");
+  EXPECT_EQ(words(Patterns::Selection("box|ball|cylinder"), "BOX"),
+            "one of 'box', 'ball', 'cylinder' (did you mean 'box'?)");
+  // Two choices as near: both; none near: no guess.
+  EXPECT_EQ(words(Patterns::Selection("USL|USF|MUSL"), "US"),
+            "one of 'USL', 'USF', 'MUSL' (did you mean 'USL' or 'USF'?)");
+  EXPECT_EQ(words(Patterns::Selection("USL|USF|MUSL"), "explicit"),
+            "one of 'USL', 'USF', 'MUSL'");
+}
+
+// Other patterns are left to deal.II's text.
 TEST(PatternWords, OthersHaveNoPlainForm)
 {
-  EXPECT_EQ(words(Patterns::Selection("a|b")), "");
   EXPECT_EQ(words(Patterns::Bool()), "");
   EXPECT_EQ(words(Patterns::List(Patterns::Selection("a|b"))), "");
   EXPECT_EQ(words(Patterns::FileName()), "");

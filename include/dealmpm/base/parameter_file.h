@@ -37,9 +37,9 @@ namespace dealmpm
    * What a typed pattern's description (Patterns::Double, Integer,
    * MultipleSelection, List of numbers) expects, in the words of the
    * program's other input messages ("a number >= 0", "a comma-separated list
-   * of: a, b"); empty for the others (a Selection's own message already lists
-   * its choices). For a list, @p value decides whether the count is named
-   * (only when the count is wrong).
+   * of: a, b", "one of 'a', 'b' (did you mean 'b'?)"); empty for the
+   * others. For a list, @p value decides whether the count is named (only
+   * when the count is wrong); for a Selection, which choice is suggested.
    */
   std::string
   plain_pattern(const std::string &description, const std::string &value);

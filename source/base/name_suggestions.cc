@@ -1,0 +1,107 @@
+#include "name_suggestions.h"
+
+#include <deal.II/base/utilities.h>
+
+#include <algorithm>
+#include <cctype>
+#include <sstream>
+
+namespace dealmpm
+{
+  DeclaredNames
+  declared_names(const ParameterHandler &prm)
+  {
+    std::ostringstream printed;
+    prm.print_parameters(printed, ParameterHandler::ShortPRM);
+    DeclaredNames            names;
+    std::vector<std::string> open;
+    std::istringstream       in(printed.str());
+    for (std::string line; std::getline(in, line);)
+      {
+        const std::string text = Utilities::trim(line);
+        std::string       path;
+        for (const std::string &s : open)
+          path += s + "/";
+        const std::size_t equal = text.find('=');
+        if (text.rfind("subsection ", 0) == 0)
+          {
+            open.push_back(Utilities::trim(text.substr(11)));
+            names.sections.push_back(path + open.back());
+          }
+        else if (text == "end" && !open.empty())
+          open.pop_back();
+        else if (text.rfind("set ", 0) == 0 && equal != std::string::npos)
+          names.entries.push_back(path +
+                                  Utilities::trim(text.substr(4, equal - 4)));
+      }
+    return names;
+  }
+
+  namespace
+  {
+    /** Levenshtein distance, case ignored. */
+    std::size_t
+    edit_distance(const std::string &a, const std::string &b)
+    {
+      std::vector<std::size_t> row(b.size() + 1);
+      for (std::size_t j = 0; j <= b.size(); ++j)
+        row[j] = j;
+      for (std::size_t i = 1; i <= a.size(); ++i)
+        {
+          std::size_t diagonal = row[0];
+          row[0]               = i;
+          for (std::size_t j = 1; j <= b.size(); ++j)
+            {
+              const bool same =
+                std::tolower(static_cast<unsigned char>(a[i - 1])) ==
+                std::tolower(static_cast<unsigned char>(b[j - 1]));
+              const std::size_t next =
+                std::min({row[j] + 1, row[j - 1] + 1, diagonal + !same});
+              diagonal = row[j];
+              row[j]   = next;
+            }
+        }
+      return row[b.size()];
+    }
+  } // namespace
+
+  std::string
+  did_you_mean(const std::string &wrong, const std::vector<std::string> &names)
+  {
+    // A typo is a few characters of a name; longer input is no name.
+    if (wrong.empty() || wrong.size() > 200)
+      return "";
+    std::size_t              best = std::string::npos;
+    std::vector<std::string> nearest;
+    for (const std::string &name : names)
+      {
+        const std::size_t d = edit_distance(wrong, name);
+        if (d < best)
+          best = d, nearest.clear();
+        if (d == best && nearest.size() < 3 &&
+            std::find(nearest.begin(), nearest.end(), name) == nearest.end())
+          nearest.push_back(name);
+      }
+    if (nearest.empty() || best > std::max<std::size_t>(2, wrong.size() / 3))
+      return "";
+    std::string text = " (did you mean '" + nearest[0] + "'";
+    for (std::size_t i = 1; i < nearest.size(); ++i)
+      text += (i + 1 == nearest.size() ? " or '" : ", '") + nearest[i] + "'";
+    return text + "?)";
+  }
+
+  std::string
+  selection_choices(const std::string &description, const std::string &value)
+  {
+    const std::string head = "[Selection ";
+    if (description.rfind(head, 0) != 0 || description.back() != ']')
+      return "";
+    const std::vector<std::string> choices = Utilities::split_string_list(
+      description.substr(head.size(), description.size() - head.size() - 1),
+      '|');
+    std::string text = "one of ";
+    for (std::size_t i = 0; i < choices.size(); ++i)
+      text += (i == 0 ? "'" : ", '") + choices[i] + "'";
+    return text + did_you_mean(Utilities::trim(value), choices);
+  }
+} // namespace dealmpm
