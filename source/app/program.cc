@@ -4,6 +4,7 @@
 #include <dealmpm/app/program.h>
 #include <dealmpm/base/errors.h>
 #include <dealmpm/base/parameter_file.h>
+#include <dealmpm/base/warnings.h>
 #include <dealmpm/core/simulation.h>
 #include <dealmpm/study/study.h>
 
@@ -15,6 +16,8 @@
 #include <iostream>
 #include <optional>
 #include <regex>
+
+#include "unused_sections.h"
 
 namespace dealmpm
 {
@@ -75,6 +78,8 @@ namespace dealmpm
       {
         Simulation<dim> simulation(
           prm, file, shape, MPI_COMM_WORLD, overrides, resume);
+        // After the scene was read whole: bad input gets its one line alone.
+        warn_unused_sections<dim>(prm, file, overrides, shape.n_materials);
         try
           {
             simulation.run();
@@ -85,6 +90,7 @@ namespace dealmpm
             error = std::current_exception();
           }
       }
+      summarize_warnings();
       if (error)
         std::rethrow_exception(error);
       return signal;

@@ -3,6 +3,7 @@
 #include <dealmpm/adaptivity/split_particles.h>
 #include <dealmpm/base/errors.h>
 #include <dealmpm/base/run_messages.h>
+#include <dealmpm/base/warnings.h>
 #include <dealmpm/core/run_report.h>
 #include <dealmpm/core/simulation.h>
 
@@ -75,10 +76,12 @@ namespace dealmpm
                                              comm});
       if (flag_cells(grid, levels, adaptivity.max_cells) && !cell_limit_warned)
         {
-          pcout << "warning: " << step_and_time(loop.step, loop.time)
-                << ": no cell refined: the grid would have more than "
-                   "'Adaptivity/Maximum cells' = "
-                << adaptivity.max_cells << " cells" << std::endl;
+          warn("adaptivity at its cell limit",
+               step_and_time(loop.step, loop.time) +
+                 ": no cell refined: the grid would have more than "
+                 "'Adaptivity/Maximum cells' = " +
+                 std::to_string(static_cast<long long>(adaptivity.max_cells)) +
+                 " cells");
           cell_limit_warned = true;
         }
       // Coarsening flags of incomplete families go, and the level rule

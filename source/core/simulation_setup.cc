@@ -3,6 +3,7 @@
 
 #include <dealmpm/base/errors.h>
 #include <dealmpm/base/run_messages.h>
+#include <dealmpm/base/warnings.h>
 #include <dealmpm/core/run_report.h>
 #include <dealmpm/core/simulation.h>
 #include <dealmpm/core/stop_signal.h>
@@ -253,12 +254,12 @@ namespace dealmpm
                           reader);
         if (effects[e]->wants_pic() && run_settings.method.flip_fraction > 0 &&
             !run_settings.method.apic)
-          pcout << "warning: " << reader.file_name() << ": '" << effect_names[e]
-                << "' is reliable only when the particles take the grid's "
-                   "velocity: set 'MPM/Velocity update = PIC' (under FLIP "
-                   "the particles' own velocities ring, and friction that "
-                   "should hold lets bodies creep; see doc/guide/limits.md)"
-                << std::endl;
+          warn("friction under FLIP",
+               reader.file_name() + ": '" + effect_names[e] +
+                 "' is reliable only when the particles take the grid's "
+                 "velocity: set 'MPM/Velocity update = PIC' (under FLIP "
+                 "the particles' own velocities ring, and friction that "
+                 "should hold lets bodies creep; see doc/guide/limits.md)");
       }
   }
 
@@ -374,12 +375,12 @@ namespace dealmpm
         std::string ids;
         for (const types::boundary_id id : untouched)
           ids += (ids.empty() ? "" : ", ") + std::to_string(id);
-        pcout << "warning: " << reader.file_name()
-              << ": no body touches the wall(s) of boundary id(s) " << ids
-              << " at the start; under 'MPM/Formulation = total Lagrangian' a "
-                 "wall holds only the material that starts on it, and a body "
-                 "reaching it would pass through"
-              << std::endl;
+        warn("walls no body touches",
+             reader.file_name() +
+               ": no body touches the wall(s) of boundary id(s) " + ids +
+               " at the start; under 'MPM/Formulation = total Lagrangian' a "
+               "wall holds only the material that starts on it, and a body "
+               "reaching it would pass through");
       }
   }
 

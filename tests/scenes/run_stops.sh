@@ -21,8 +21,9 @@ grep -q "particles_00000.pvtu" unstable/particles.pvd || fail "pvd lacks the fir
   -s "Time/End time=0.2" -s "Output/Write particles=false" > out.txt 2> err.txt
 code=$?
 [ $code = 0 ] || fail "warned run: exit $code"
-[ "$(grep -c "warning: step 1 .*particle CFL number .* of 0.65.*above 'Checks/CFL warning' = 0.5" out.txt)" = 1 ] \
-  || { fail "warned run: one warning expected"; cat out.txt; }
+[ "$(grep -c "^dealmpm: warning: step 1 .*particle CFL number .* of 0.65.*above 'Checks/CFL warning' = 0.5" err.txt)" = 1 ] \
+  || { fail "warned run: one warning on standard error expected"; cat err.txt; }
+grep -q "warning" out.txt && fail "warned run: a warning on standard output"
 
 # Energy that grows (the disks with the CFL step at 1, above USL's stable
 # c dt / h = 1 / sqrt(2) for linear shape functions in 2D: the energy grows
@@ -48,7 +49,13 @@ flying=(-s "Body 1/Velocity=-2, 0" -s "Body 2/Velocity=2, 0" -s "Time/End time=0
 "$dealmpm" "$scene" "${flying[@]}" -s "Output/Directory=removed" > out.txt 2> err.txt
 code=$?
 [ $code = 0 ] || fail "remove policy: exit $code"
-grep -q "warning: step .* particle(s) left the grid (first: id" out.txt || fail "remove policy: no warning"
+# Warnings go to standard error, once per kind, with a count at the end
+# (the disks leave over many steps; it was a line a step on stdout).
+[ "$(grep -c "^dealmpm: warning: step .* particle(s) left the grid (first: id" err.txt)" = 1 ] \
+  || { fail "remove policy: one warning on standard error expected"; cat err.txt; }
+grep -Eq "^dealmpm: warning: [0-9]+ more 'particles left the grid' warnings? after the first \(above\)$" err.txt \
+  || { fail "remove policy: no count of the later warnings"; cat err.txt; }
+grep -q "warning" out.txt && fail "remove policy: a warning on standard output"
 lost=$(tail -1 removed/statistics.csv | awk -F, '{print $(NF-1)}')
 particles=$(tail -1 removed/statistics.csv | awk -F, '{print $4}')
 [ "$lost" != 0 ] && [ "$((lost + particles))" = 416 ] || fail "remove policy: lost $lost + left $particles != 416"
@@ -92,5 +99,25 @@ for ranks in 1 2; do
     || { fail "bonded node off the grid on $ranks rank(s): message"; cat err.txt; }
   [ -s "bonded_$ranks/statistics.csv" ] || fail "bonded node off the grid: last good output missing"
 done
+
+# A section the scene sets but does not use is named, not ignored silently:
+# gravity's entry without gravity in 'Effects', a model's subsection other
+# than the material's model.
+"$dealmpm" "$scene" -s "Output/Directory=unused" -s "Time/Maximum number of steps=2" \
+  -s "Gravity/Acceleration=0, -9.81" -s "Material 1/neo-Hookean/Young's modulus=5" > out.txt 2> err.txt
+code=$?
+[ $code = 0 ] || fail "unused sections: exit $code"
+grep -q "^dealmpm: warning: command line: -s 'Gravity/Acceleration=0, -9.81': 'Gravity/Acceleration' is set, but 'gravity' is not in 'Effects': add it there, or the entry does nothing$" err.txt \
+  || { fail "unused sections: no warning for gravity"; cat err.txt; }
+grep -q "^dealmpm: warning: command line: -s 'Material 1/neo-Hookean/Young's modulus=5': 'Material 1/neo-Hookean/Young's modulus' is set, but 'Material 1/Model' is 'linear elastic': the entry does nothing$" err.txt \
+  || { fail "unused sections: no warning for the model"; cat err.txt; }
+sed 's/^set Effects.*//' "$scene" > no_effects.prm
+printf 'subsection Gravity\n  set Acceleration = 0, -9.81\nend\n' >> no_effects.prm
+"$dealmpm" no_effects.prm -s "Output/Directory=unused2" -s "Time/Maximum number of steps=2" > out.txt 2> err.txt
+grep -Eq "^dealmpm: warning: no_effects.prm: line [0-9]+: 'Gravity/Acceleration' is set, but 'gravity' is not in 'Effects'" err.txt \
+  || { fail "unused sections: no warning for the file's gravity"; cat err.txt; }
+# The shipped scene sets nothing it does not use: no warning.
+"$dealmpm" "$scene" -s "Output/Directory=used" -s "Time/Maximum number of steps=2" > out.txt 2> err.txt
+[ -s err.txt ] && { fail "the shipped scene warns"; cat err.txt; }
 
 finish run-stop
