@@ -3,6 +3,7 @@
 
 #include <dealmpm/base/errors.h>
 #include <dealmpm/base/run_messages.h>
+#include <dealmpm/base/warnings.h>
 #include <dealmpm/core/run_report.h>
 #include <dealmpm/core/simulation.h>
 #include <dealmpm/core/stop_signal.h>
@@ -19,13 +20,52 @@
 #include <dealmpm/transfer/stress_update.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <iomanip>
 #include <limits>
 #include <sstream>
 
+
 namespace dealmpm
 {
+  namespace
+  {
+    /** @p word as one shell word: quoted unless it is plain. */
+    std::string
+    shell_word(const std::string &word)
+    {
+      const bool plain =
+        !word.empty() && word.find_first_not_of(
+                           "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTU"
+                           "VWXYZ0123456789_./+-=,:@%") == std::string::npos;
+      if (plain)
+        return word;
+      std::string quoted = "'";
+      for (const char c : word)
+        quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+      return quoted + "'";
+    }
+
+    /** The command that resumes this run: the program as it was started
+     * (as typed: build/dealmpm or dealmpm), under mpirun when on several
+     * ranks, the scene, its overrides and --resume. */
+    std::string
+    resume_command_line(const std::string              &scene_file,
+                        const std::vector<std::string> &overrides,
+                        const MPI_Comm                  comm)
+    {
+      const unsigned int ranks = Utilities::MPI::n_mpi_processes(comm);
+      std::string        command =
+        ranks > 1 ? "mpirun -np " + std::to_string(ranks) + " " : "";
+      command +=
+        shell_word(program_invocation_name) + " " + shell_word(scene_file);
+      for (const std::string &item : overrides)
+        command += " -s " + shell_word(item);
+      return command + " --resume";
+    }
+  } // namespace
+
 
   template <int dim>
   Simulation<dim>::Simulation(ParameterHandler                 &prm,
@@ -41,6 +81,7 @@ namespace dealmpm
     , regions(effects)
     , output_writer(run_settings.output, comm)
   {
+    resume_command = resume_command_line(scene_file, overrides, comm);
     SceneReader reader(prm, scene_file, overrides);
     read_scene(reader, shape);
     scene_entry_list = scene_entries(prm);
@@ -299,7 +340,7 @@ namespace dealmpm
       throw RunError(message.str() +
                      "; set 'MPM/Particles leaving the grid = remove' "
                      "to drop such particles instead");
-    pcout << "warning: " << message.str() << "; removed" << std::endl;
+    warn("particles left the grid", message.str() + "; removed");
   }
 
   template class Simulation<2>;

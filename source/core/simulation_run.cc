@@ -3,6 +3,7 @@
 
 #include <dealmpm/base/errors.h>
 #include <dealmpm/base/run_messages.h>
+#include <dealmpm/base/warnings.h>
 #include <dealmpm/core/run_report.h>
 #include <dealmpm/core/simulation.h>
 #include <dealmpm/core/stop_signal.h>
@@ -24,21 +25,21 @@ namespace dealmpm
   namespace
   {
     /** The lines of a run stopped by @p signal: where its output is and,
-     * if it was @p saved, how to continue. */
+     * if it was @p saved, the command that continues it. */
     void
     print_stop(const ConditionalOStream &pcout,
                const int                 signal,
                const RunState           &loop,
                const RunSettings        &s,
                const std::string        &saved,
-               const std::string        &scene_file)
+               const std::string        &resume_command)
     {
       pcout << "dealmpm: stopped by " << signal_name(signal) << " at step "
             << loop.step << " (t = " << loop.time << "); output in "
             << s.output.directory << "/ is complete" << std::endl;
       if (!saved.empty())
-        pcout << "dealmpm: saved in " << saved << "/; continue with: dealmpm "
-              << scene_file << " --resume" << std::endl;
+        pcout << "dealmpm: saved in " << saved
+              << "/; continue with: " << resume_command << std::endl;
     }
 
     /** (m |g| + F) h / 1000: the work of gravity and of the loads (F:
@@ -76,7 +77,7 @@ namespace dealmpm
       });
     if (warning.empty())
       return;
-    pcout << "warning: " << warning << std::endl;
+    warn("fixed time step near the stable limit", warning);
     cfl_warned = true;
   }
 
@@ -281,23 +282,13 @@ namespace dealmpm
       }
     std::string saved;
     if (stopped_by_signal != 0)
-      {
-        if (loop.output.last_step != loop.step)
-          {
-            // This row reports the drift, but the monitor goes on as if
-            // it had not been written (its largest kinetic energy seen
-            // must not count this step, or a resume would differ).
-            const AccuracyMonitor before = loop.accuracy;
-            const Statistics      now    = statistics();
-            const double          work   = external_work();
-            loop.accuracy.observe(now, work);
-            write_output(dt, now, work, progress);
-            loop.accuracy = before;
-          }
-        if (s.checkpoint.on_stop_signal)
-          saved = last_checkpoint_step == loop.step ? s.checkpoint.directory :
-                                                      write_checkpoint();
-      }
+      saved = save_stopped_run(dt, progress);
+    else if ((s.checkpoint.step_interval > 0 ||
+              s.checkpoint.wall_interval > 0) &&
+             last_checkpoint_step != loop.step)
+      // A run that saves checkpoints saves its end too: a longer 'End
+      // time' with --resume then continues from there.
+      write_checkpoint();
     if (s.output.verbose)
       print_run_summary(pcout,
                         *computing_timer,
@@ -305,7 +296,30 @@ namespace dealmpm
                         grid.triangulation.n_global_active_cells(),
                         comm);
     if (stopped_by_signal != 0)
-      print_stop(pcout, stopped_by_signal, loop, s, saved, scene_file);
+      print_stop(pcout, stopped_by_signal, loop, s, saved, resume_command);
+  }
+
+  template <int dim>
+  std::string
+  Simulation<dim>::save_stopped_run(const double dt, const Progress &progress)
+  {
+    if (loop.output.last_step != loop.step)
+      {
+        // This row reports the drift, but the monitor goes on as if it had
+        // not been written (its largest kinetic energy seen must not count
+        // this step, or a resume would differ).
+        const AccuracyMonitor before = loop.accuracy;
+        const Statistics      now    = statistics();
+        const double          work   = external_work();
+        loop.accuracy.observe(now, work);
+        write_output(dt, now, work, progress);
+        loop.accuracy = before;
+      }
+    if (!run_settings.checkpoint.on_stop_signal)
+      return "";
+    return last_checkpoint_step == loop.step ?
+             run_settings.checkpoint.directory :
+             write_checkpoint();
   }
 
   template <int dim>
@@ -335,7 +349,7 @@ namespace dealmpm
     const std::string setup_time = setup_clock.report(comm);
     pcout << "dealmpm: " << setup_time << std::endl;
     if (!resume_warning.empty())
-      pcout << "warning: " << resume_warning << std::endl;
+      warn("resumed from an older checkpoint", resume_warning);
     if (!resumed_checkpoint.empty())
       pcout << "dealmpm: resumed from " << resumed_checkpoint << " at step "
             << loop.step << " (t = " << loop.time << ")" << std::endl;

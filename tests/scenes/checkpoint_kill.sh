@@ -24,7 +24,7 @@ flags=("${mpirun_flags[@]}")
 run=(-s "Body 1/Velocity=0.5, 0.5" -s "Body 2/Velocity=-0.3, -0.4" -s "Grid/Global refinements=2"
      -s "Time/End time=1" -s "Output/Interval=0.05" -s "Output/Progress interval=0"
      -s "Output/Particle CSV=true" -s "Output/Write particles=true"
-     -s "Checkpoint/Steps between checkpoints=40")
+     -s "Checkpoint/Steps between checkpoints=40" -s "Checkpoint/Keep=3")
 
 # The step of the checkpoint "latest" in $1 names, or 0.
 latest_step() {
@@ -112,7 +112,9 @@ same_run mid2 ref2 1e-9
   || fail "mid2: the resume on 1 rank failed"
 same_run mid2-on1 ref2 1e-9
 # And 1 rank's checkpoint on 2 ranks.
-cp -r ref1 from1 && rm -rf from1/checkpoints/checkpoint-00000320 from1/checkpoints/latest
+# (The run's end saved one too: the three newest are 280, 320 and the end.)
+cp -r ref1 from1 && rm -rf from1/checkpoints/checkpoint-00000320 \
+  "from1/checkpoints/$(cat ref1/checkpoints/latest)" from1/checkpoints/latest
 "$mpirun" "${flags[@]}" -np 2 "$dealmpm" "$scene" -s "Output/Directory=from1" "${run[@]}" --resume \
   > from1.log 2>&1 || fail "from1: the resume on 2 ranks failed"
 grep -q "warning: from1/checkpoints/latest is missing; resuming from the newest whole checkpoint, checkpoint-00000280" from1.log \
@@ -129,7 +131,8 @@ adaptive=(-s "Adaptivity/Criteria=particles" -s "Adaptivity/Steps between adapta
   > adapt2.log 2>&1 || fail "adapt2: the run failed"
 grep -q "grid adaptation(s)" adapt2.log || fail "adapt2: the grid was not adapted"
 for n in 3 1; do
-  cp -r adapt2 adapt2-on$n && rm -rf adapt2-on$n/checkpoints/checkpoint-00000320
+  cp -r adapt2 adapt2-on$n && rm -rf adapt2-on$n/checkpoints/checkpoint-00000320 \
+    "adapt2-on$n/checkpoints/$(cat adapt2/checkpoints/latest)"
   "$mpirun" "${flags[@]}" -np $n "$dealmpm" "$scene" -s "Output/Directory=adapt2-on$n" "${run[@]}" "${adaptive[@]}" \
     --resume > adapt2-on$n.log 2>&1 || fail "adapt2-on$n: the resume failed: $(tail -1 adapt2-on$n.log)"
   grep -q "resumed from adapt2-on$n/checkpoints/checkpoint-00000280 at step 280" adapt2-on$n.log \
@@ -168,10 +171,12 @@ done
 kill -TERM $pid
 wait $pid
 [ $? = 143 ] || fail "term: exit code $?, expected 143"
-grep -q "^dealmpm: saved in term/checkpoints/checkpoint-[0-9]*/; continue with: dealmpm .* --resume$" term.log \
-  || fail "term: no line saying where the run was saved: $(tail -1 term.log)"
-"$dealmpm" "$scene" -s "Output/Directory=term" "${run[@]}" -s "Checkpoint/Steps between checkpoints=0" --resume \
-  > term-resumed.log 2>&1 || fail "term: the resume failed"
+grep -q "^dealmpm: saved in term/checkpoints/checkpoint-[0-9]*/; continue with: .*dealmpm .* -s Output/Directory=term .* --resume$" term.log \
+  || fail "term: no line saying where the run was saved and how to go on: $(tail -1 term.log)"
+# The printed command resumes the run as it is (it kept the -s overrides,
+# without which the resume looks for the scene's own output folder).
+resume=$(sed -n 's/^dealmpm: saved in .*; continue with: //p' term.log)
+bash -c "$resume" > term-resumed.log 2>&1 || fail "term: the printed resume command failed: $resume"
 # The stop added an output at its step (unless it was an output step),
 # which the series keeps: without its row, the statistics are the
 # uninterrupted run's; the last particles are its last ones.
@@ -226,13 +231,33 @@ echo "clock: $n checkpoints by wall time"
 "$dealmpm" "$scene" -s "Output/Directory=none" "${run[@]}" --resume > none.log 2>&1
 [ $? = 2 ] && grep -q "error: none/checkpoints: no such folder of checkpoints" none.log || fail "none: $(cat none.log)"
 # The newest is damaged: the one before is taken, with a warning.
-rm killed/checkpoints/checkpoint-00000320/run_state.txt
+# (The newest is the one the finished run saved at its end.)
+newest=$(cat killed/checkpoints/latest)
+rm "killed/checkpoints/$newest/run_state.txt"
 "$dealmpm" "$scene" -s "Output/Directory=killed" "${run[@]}" --resume > damaged.log 2>&1 || fail "damaged: the resume failed"
-grep -q "warning: killed/checkpoints/latest names checkpoint-00000320, which is missing or damaged; resuming from checkpoint-00000280" damaged.log \
+grep -q "warning: killed/checkpoints/latest names $newest, which is missing or damaged; resuming from checkpoint-00000320" damaged.log \
   || fail "damaged: $(head -3 damaged.log)"
 same_run killed ref1 0
 # A run that does not resume removes the earlier checkpoints.
 "$dealmpm" "$scene" -s "Output/Directory=killed" "${run[@]}" -s "Checkpoint/Steps between checkpoints=0" > fresh.log 2>&1
 [ -z "$(ls killed/checkpoints)" ] || fail "fresh: earlier checkpoints left: $(ls killed/checkpoints)"
+
+# A run that ends saves a last checkpoint: a longer End time then
+# continues from the end (it went back to the last periodic checkpoint,
+# step 320 here, and said it removed an "interrupted" run's files).
+"$dealmpm" "$scene" -s "Output/Directory=ended" "${run[@]}" -s "Time/End time=0.5" > ended.log 2>&1 \
+  || fail "ended: the run failed"
+last=$(tail -1 ended/statistics.csv | cut -d, -f1)
+[ "$(latest_step ended)" = "$last" ] || fail "ended: the latest checkpoint is step $(latest_step ended), not the last step $last"
+cp ended/statistics.csv ended-statistics.csv
+"$dealmpm" "$scene" -s "Output/Directory=ended" "${run[@]}" --resume > extended.log 2>&1 \
+  || fail "extended: the resume failed: $(tail -2 extended.log)"
+grep -q "resumed from ended/checkpoints/checkpoint-$(printf %08d "$last") at step $last (t = 0.5)" extended.log \
+  || fail "extended: not resumed from the end: $(grep resumed extended.log)"
+grep -q "interrupted" extended.log && fail "extended: speaks of an interrupted run"
+head -n "$(wc -l < ended-statistics.csv)" ended/statistics.csv | cmp -s - ended-statistics.csv \
+  || fail "extended: the ended run's rows changed"
+[ "$(cut -d, -f1 ended/statistics.csv | sort | uniq -d | wc -l)" = 0 ] || fail "extended: a step has two rows"
+awk -F, 'END { exit !($2 > 0.999) }' ended/statistics.csv || fail "extended: did not reach t = 1"
 
 finish "checkpoint kill"

@@ -69,7 +69,9 @@ raw=$(du -b disks_vtu/particles_00002.1.vtu | cut -f1) packed=$(du -b disks_zlib
 resume=(-s "Time/End time=0.05" -s "Output/Interval=0.01" -s "Checkpoint/Steps between checkpoints=2")
 run 1 "$prm/colliding_disks.prm" resumed hdf5 "${resume[@]}"
 cp resumed/particles.xdmf uninterrupted.xdmf
-run 1 "$prm/colliding_disks.prm" resumed hdf5 "${resume[@]}" --resume
+# (The run saved its end too: resume from the older of the two kept.)
+older=$(ls -d resumed/checkpoints/checkpoint-* | head -1)
+run 1 "$prm/colliding_disks.prm" resumed hdf5 "${resume[@]}" --resume "$older"
 grep -q "removed [1-9][0-9]* files the interrupted run wrote" resumed.log || fail "resume removed nothing: $(grep 'output in' resumed.log)"
 cmp -s uninterrupted.xdmf resumed/particles.xdmf || fail "the resumed run's particles.xdmf differs"
 [ "$(ls resumed/particles_*.h5 | wc -l)" = "$(grep -c '<Time ' uninterrupted.xdmf)" ] || fail "resumed: not one .h5 per output"

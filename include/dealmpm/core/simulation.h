@@ -301,6 +301,11 @@ namespace dealmpm
     /** One step of the loop with its checks and, when due, an output. */
     void
     take_step(const double dt, Progress &progress);
+    /** A run stopped by a signal: its last output (unless its step had
+     * one) and, with 'On stop signal', a checkpoint; returns where the
+     * checkpoint is ("" without). */
+    std::string
+    save_stopped_run(const double dt, const Progress &progress);
     /** The output of the current state (statistics @p now, work @p work
      * of the effects), through the output writer; collective. */
     void
@@ -323,10 +328,13 @@ namespace dealmpm
     static constexpr unsigned int energy_check_interval = 50;
 
     /** First, so that it times the whole construction. */
-    SetupClock                                  setup_clock;
-    MPI_Comm                                    comm;
-    ConditionalOStream                          pcout;
-    std::string                                 scene_file;
+    SetupClock         setup_clock;
+    MPI_Comm           comm;
+    ConditionalOStream pcout;
+    std::string        scene_file;
+    /** The command line that continues this run from its checkpoint (the
+     * program as started, the scene, its -s overrides, --resume). */
+    std::string                                 resume_command;
     RunSettings                                 run_settings;
     AdaptivitySettings<dim>                     adaptivity;
     bool                                        cell_limit_warned = false;
