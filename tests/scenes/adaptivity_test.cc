@@ -389,9 +389,11 @@ TEST(Adaptivity, MarginChangesTheGridLessOftenAndKeepsParticlesOnFineCells)
             grid, simulation->particle_set());
           for (std::size_t i = 0; i < grid.cells.size(); ++i)
             if (!particles.empty(i))
-              ASSERT_EQ(grid.level(grid.cells[i].cell), 1)
-                << "margin " << margin << ", step "
-                << simulation->step_number();
+              {
+                ASSERT_EQ(grid.level(grid.cells[i].cell), 1)
+                  << "margin " << margin << ", step "
+                  << simulation->step_number();
+              }
         }
     }
   EXPECT_GT(changes[1], 0u);
