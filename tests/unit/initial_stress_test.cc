@@ -82,11 +82,13 @@ namespace
           // its confined compression yields.
           if (dynamic_cast<const DruckerPrager<dim> *>(material.get()) ==
               nullptr)
-            EXPECT_NEAR(confined_stress_ratio(*material,
-                                              n_internal(*material),
-                                              n),
-                        nu / (1 - nu),
-                        1e-5);
+            {
+              EXPECT_NEAR(confined_stress_ratio(*material,
+                                                n_internal(*material),
+                                                n),
+                          nu / (1 - nu),
+                          1e-5);
+            }
           // 10 m of soil at rho = 2000: sigma_v = -1.96e5 Pa.
           const SymmetricTensor<2, dim> target =
             geostatic_stress(-2000 * 9.81 * 10, n, 0.55);
