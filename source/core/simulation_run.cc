@@ -252,6 +252,8 @@ namespace dealmpm
         write_output(0., initial, 0., progress);
         loop.next_output = s.output.interval;
       }
+    // Not saved with a checkpoint: the scene says it, resumed or not.
+    loop.accuracy.set_momentum_conserved(conserves_momentum());
 
     double dt = 0;
     while (!run_settings.time.finished(loop.time, loop.step))
@@ -297,6 +299,18 @@ namespace dealmpm
                         comm);
     if (stopped_by_signal != 0)
       print_stop(pcout, stopped_by_signal, loop, s, saved, resume_command);
+  }
+
+  template <int dim>
+  bool
+  Simulation<dim>::conserves_momentum() const
+  {
+    if (!boundary_conditions.walls().empty() || !regions.empty())
+      return false;
+    for (const auto &effect : effects)
+      if (!effect->conserves_momentum())
+        return false;
+    return true;
   }
 
   template <int dim>

@@ -91,8 +91,12 @@ namespace dealmpm
     out << std::setprecision(3) << "accuracy: energy drift "
         << 100 * r.energy_drift << " % of "
         << (r.of_floor ? "(m |g| + F) h / 1000" : "the energy put in")
-        << ", momentum drift " << 100 * r.momentum_drift << " %, mass loss "
-        << 100 * r.mass_loss << " %, smallest J " << r.min_J
+        << ", momentum drift ";
+    if (r.momentum_conserved)
+      out << 100 * r.momentum_drift << " %";
+    else
+      out << "n/a (walls, loads or body forces act)";
+    out << ", mass loss " << 100 * r.mass_loss << " %, smallest J " << r.min_J
         << ", largest particle CFL " << r.max_cfl;
     if (r.has_error)
       out << ", displacement error L2 " << r.error_L2 << " max " << r.error_max;

@@ -306,6 +306,11 @@ namespace dealmpm
      * checkpoint is ("" without). */
     std::string
     save_stopped_run(const double dt, const Progress &progress);
+    /** Whether nothing acts on the scene from outside (no walls, no FEM
+     * regions, only effects that conserve momentum): the accuracy line
+     * checks momentum only then. */
+    bool
+    conserves_momentum() const;
     /** The output of the current state (statistics @p now, work @p work
      * of the effects), through the output writer; collective. */
     void

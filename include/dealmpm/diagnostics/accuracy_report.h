@@ -23,7 +23,8 @@ namespace dealmpm
    *   too. Measured against what went in, not against the largest
    *   energy seen, so energy a scheme creates cannot hide itself;
    * - momentum drift: |P - P_0| / sqrt(2 M max kinetic energy seen): zero
-   *   only without external forces and walls (the colliding disks);
+   *   only without external forces and walls (the colliding disks); the
+   *   printed line says "n/a" for a scene with them;
    * - mass loss: (M_0 - M) / M_0, from particles that left the grid;
    * - the smallest J and the largest particle CFL number dt (c + |v|) / h
    *   of any particle in any step;
@@ -42,6 +43,10 @@ namespace dealmpm
     bool   has_error = false;
     double error_L2  = 0;
     double error_max = 0;
+    /** Whether the scene conserves momentum (no walls, loads, body forces
+     * or FEM regions): else the printed line says "n/a" for its drift,
+     * which walls and gravity make large without anything being wrong. */
+    bool momentum_conserved = true;
 
     template <class Archive>
     void
@@ -89,6 +94,14 @@ namespace dealmpm
     report() const
     {
       return current;
+    }
+
+    /** Whether the scene conserves momentum (see AccuracyReport); set by
+     * the run before its first step, also after a resume. */
+    void
+    set_momentum_conserved(const bool conserved)
+    {
+      current.momentum_conserved = conserved;
     }
 
     template <class Archive>

@@ -66,6 +66,13 @@ namespace dealmpm
       return P;
     }
 
+    /** Erosion's momentum counts as removed. */
+    bool
+    conserves_momentum() const override
+    {
+      return true;
+    }
+
     std::vector<std::pair<std::string, double>>
     statistics_columns() const override;
 

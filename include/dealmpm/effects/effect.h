@@ -239,6 +239,15 @@ namespace dealmpm
       return {};
     }
 
+    /** Whether the effect's forces leave the total momentum as it was
+     * (contact between bodies; erosion, whose momentum counts as removed):
+     * then the accuracy line still checks momentum. No by default. */
+    virtual bool
+    conserves_momentum() const
+    {
+      return false;
+    }
+
     /** Columns of statistics.csv that the effect adds (name, this rank's
      * value; the values are summed over the ranks), the same names in
      * every call: friction work, a rigid body's reaction force. */

@@ -35,6 +35,13 @@ namespace dealmpm
   class FrictionalContact : public Effect<dim>
   {
   public:
+    /** Contact forces between bodies are equal and opposite. */
+    bool
+    conserves_momentum() const override
+    {
+      return true;
+    }
+
     enum class Normals
     {
       /** n_b along g_b = sum_{p in b} m_p grad N_i(x_p), which points out
