@@ -82,7 +82,10 @@ namespace dealmpm
             std::find(nearest.begin(), nearest.end(), name) == nearest.end())
           nearest.push_back(name);
       }
-    if (nearest.empty() || best > std::max<std::size_t>(2, wrong.size() / 3))
+    // Near enough to be a typo: a third of the last name's characters (a
+    // long path alone would let a far name pass).
+    const std::size_t leaf = wrong.size() - (wrong.rfind('/') + 1);
+    if (nearest.empty() || best > std::max<std::size_t>(2, leaf / 3))
       return "";
     std::string text = " (did you mean '" + nearest[0] + "'";
     for (std::size_t i = 1; i < nearest.size(); ++i)

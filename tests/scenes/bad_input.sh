@@ -238,8 +238,9 @@ expect 2 "typo_choice.prm: entry 'Body 1/Shape' = 'bal': expected one of 'box', 
 expect 2 "command line: -s 'Time/End tme=1': 'Time/End tme' is not an entry of this scene \(did you mean 'Time/End time'\?\)$" "$scene" "${s[@]}" -s "Time/End tme=1"
 expect 2 "command line: -s 'Tme/End time=1': 'Tme/End time' is not an entry of this scene \(did you mean 'Time/End time'\?\)$" "$scene" "${s[@]}" -s "Tme/End time=1"
 expect 2 "command line: -s 'Body 1/Shape=bal': expected one of 'box', 'ball', 'cylinder', 'mesh' \(did you mean 'ball'\?\)$" "$scene" "${s[@]}" -s "Body 1/Shape=bal"
-# Far from every name: no guess.
+# Far from every name: no guess, also deep in a long path.
 expect 2 "command line: -s 'Time/Frobnicate=1': 'Time/Frobnicate' is not an entry of this scene$" "$scene" "${s[@]}" -s "Time/Frobnicate=1"
+expect 2 "command line: -s 'Material 1/linear elastic/Stiffness=1': 'Material 1/linear elastic/Stiffness' is not an entry of this scene$" "$scene" "${s[@]}" -s "Material 1/linear elastic/Stiffness=1"
 touch afile
 expect 2 "Output/Directory.*expected a folder that can be created and written" "$scene" -s "Output/Directory=afile/sub"
 # The same under MPI must not hang (only rank 0 makes folders).
