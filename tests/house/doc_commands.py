@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""The documentation cannot drift from the program: every command README.md
-and the user guide (doc/guide/*.md) give in a ```sh block runs as written.
+"""The documentation cannot drift from the program: every command README.md,
+the user guide (doc/guide/*.md) and the tutorials (doc/tutorials/*.md) give
+in a ```sh block runs as written.
 
     doc_commands.py SOURCE_DIR BUILD_DIR [FILE.md ...]
 
@@ -13,6 +14,8 @@ nothing else is changed:
 - a study (--study file) runs a copy of its study file with each axis cut
   to its first value and 3 steps a run;
 - ./build.sh is what CI runs itself: only checked to exist.
+The lines after a run (a tutorial's pvpython picture, its plot of
+statistics.csv) run unchanged on the shortened run's output.
 Under root, mpirun gets Open MPI's root variables in its environment (what
 the README tells root to set); nothing adds --oversubscribe, so an mpirun
 line asking for more ranks than this machine's cores fails, as it would
@@ -45,6 +48,12 @@ def sh_lines(path):
             if inside and line.strip() and not line.strip().startswith("#"):
                 out.append((number, line.rstrip("\n")))
     return out
+
+
+def markdown_files(folder):
+    """The .md files of @p folder, sorted (none if it is missing)."""
+    names = os.listdir(folder) if os.path.isdir(folder) else []
+    return sorted(os.path.join(folder, f) for f in names if f.endswith(".md"))
 
 
 def scratch_root(source, build):
@@ -118,11 +127,9 @@ def main():
     failures = []
     if not os.path.isdir(guide):
         failures.append("doc/guide/ is missing: the user guide lives there")
-    files = sys.argv[3:] or (
-        [os.path.join(source, "README.md")] +
-        sorted(os.path.join(guide, f) for f in
-               (os.listdir(guide) if os.path.isdir(guide) else [])
-               if f.endswith(".md")))
+    tutorials = os.path.join(source, "doc", "tutorials")
+    files = sys.argv[3:] or ([os.path.join(source, "README.md")] +
+                             markdown_files(guide) + markdown_files(tutorials))
     readme = os.path.join(source, "README.md")
     with open(readme, encoding="utf-8") as f:
         n = sum(1 for _ in f)
