@@ -166,24 +166,46 @@ def colour_range(all_values, text):
     return (low, high) if high > low else (low - 0.5, low + 0.5)
 
 
-def main():
-    args = arguments()
-    plane = AXES[args.axes]
+def load(args):
+    """The series (and --also) at the chosen time, each with its field's values."""
     main_data, time = fetch(args.series, args.time)
-    sets = [main_data] + ([fetch(args.also, time)[0]] if args.also else [])
     if main_data.GetNumberOfPoints() == 0:
         sys.exit(f"{args.series}: no points at t = {time:g}")
+    sets = [main_data] + ([fetch(args.also, time)[0]] if args.also else [])
     values = [values_of(d, args.field, args.component) for d in sets]
     if values[0] is None:
-        names = [main_data.GetPointData().GetArrayName(i)
-                 for i in range(main_data.GetPointData().GetNumberOfArrays())]
+        data = main_data.GetPointData()
+        names = [data.GetArrayName(i) for i in range(data.GetNumberOfArrays())]
         sys.exit(f"{args.series}: no point field '{args.field}' (the fields: {', '.join(names)})")
-    dimension = 3 if numpy.ptp(vtk_to_numpy(main_data.GetPoints().GetData())[:, 2]) > 0 else 2
+    return sets, values, time
+
+
+def field_label(data, args):
+    """The colour bar's title: the field, |field| for a magnitude, field [k] for a component."""
+    if data.GetPointData().GetArray(args.field).GetNumberOfComponents() == 1:
+        return args.field
+    return f"|{args.field}|" if args.component is None else f"{args.field} [{args.component}]"
+
+
+def empty_axis(sets, plane):
+    """A figure whose axis fits every data set, one length unit the same along both."""
     low, high = bounds([d for d in sets if d.GetNumberOfPoints()], plane)
     figure, axis = plt.subplots(figsize=(6.4, 4.0), dpi=100)
     axis.set_xlim(low[0], high[0])
     axis.set_ylim(low[1], high[1])
     axis.set_aspect("equal")
+    axis.set_xlabel("xyz"[plane[0]])
+    axis.set_ylabel("xyz"[plane[1]])
+    return figure, axis
+
+
+def main():
+    """Load, draw (the --also series first, underneath) and save the picture."""
+    args = arguments()
+    plane = AXES[args.axes]
+    sets, values, time = load(args)
+    dimension = 3 if numpy.ptp(vtk_to_numpy(sets[0].GetPoints().GetData())[:, 2]) > 0 else 2
+    figure, axis = empty_axis(sets, plane)
     vmin, vmax = colour_range(values, args.range)
     colours = {"cmap": "coolwarm", "vmin": vmin, "vmax": vmax}
     mappable, drawn = None, []
@@ -191,16 +213,12 @@ def main():
         if data.GetNumberOfPoints():
             drawn.append(draw(axis, data, v, plane, dimension, colours))
             mappable = drawn[-1] if v is not None else mappable
-    vector = main_data.GetPointData().GetArray(args.field).GetNumberOfComponents() > 1
-    label = (args.field if not vector else f"|{args.field}|" if args.component is None
-             else f"{args.field} [{args.component}]")
+    label = field_label(sets[0], args)
     figure.colorbar(mappable, ax=axis, shrink=0.8, label=label)
     axis.set_title(f"{args.series}, t = {time:.4g}")
-    axis.set_xlabel("xyz"[plane[0]])
-    axis.set_ylabel("xyz"[plane[1]])
     size_markers(figure, axis, drawn)
     figure.savefig(args.output, bbox_inches="tight")
-    print(f"{args.output}: {label} at t = {time:.4g} ({main_data.GetNumberOfPoints()} points)")
+    print(f"{args.output}: {label} at t = {time:.4g} ({sets[0].GetNumberOfPoints()} points)")
 
 
 main()
