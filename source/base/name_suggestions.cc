@@ -6,6 +6,8 @@
 #include <cctype>
 #include <sstream>
 
+#include "parameter_text.h"
+
 namespace dealmpm
 {
   DeclaredNames
@@ -13,27 +15,14 @@ namespace dealmpm
   {
     std::ostringstream printed;
     prm.print_parameters(printed, ParameterHandler::ShortPRM);
-    DeclaredNames            names;
-    std::vector<std::string> open;
-    std::istringstream       in(printed.str());
-    for (std::string line; std::getline(in, line);)
-      {
-        const std::string text = Utilities::trim(line);
-        std::string       path;
-        for (const std::string &s : open)
-          path += s + "/";
-        const std::size_t equal = text.find('=');
-        if (text.rfind("subsection ", 0) == 0)
-          {
-            open.push_back(Utilities::trim(text.substr(11)));
-            names.sections.push_back(path + open.back());
-          }
-        else if (text == "end" && !open.empty())
-          open.pop_back();
-        else if (text.rfind("set ", 0) == 0 && equal != std::string::npos)
-          names.entries.push_back(path +
-                                  Utilities::trim(text.substr(4, equal - 4)));
-      }
+    DeclaredNames      names;
+    std::istringstream in(printed.str());
+    walk_parameter_text(in, false, [&](const ParameterLine &line) {
+      if (line.kind == ParameterLine::subsection)
+        names.sections.push_back(line.section + line.name);
+      else if (line.kind == ParameterLine::entry)
+        names.entries.push_back(line.section + line.name);
+    });
     return names;
   }
 

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "name_suggestions.h"
+#include "parameter_text.h"
 
 namespace dealmpm
 {
@@ -149,24 +150,12 @@ namespace dealmpm
     std::string
     section_at_line(const std::string &file, const unsigned int line)
     {
-      std::ifstream            in(file);
-      std::vector<std::string> open;
-      std::string              text;
-      const std::regex         subsection("\\s*subsection\\s+(.*\\S)\\s*");
-      const std::regex         end("\\s*end\\s*");
-      for (unsigned int number = 1; number < line && std::getline(in, text);
-           ++number)
-        {
-          text = text.substr(0, text.find('#'));
-          std::smatch match;
-          if (std::regex_match(text, match, subsection))
-            open.push_back(match[1]);
-          else if (std::regex_match(text, end) && !open.empty())
-            open.pop_back();
-        }
-      std::string path;
-      for (const auto &s : open)
-        path += s + "/";
+      std::ifstream in(file);
+      std::string   path;
+      walk_parameter_text(in, true, [&](const ParameterLine &l) {
+        if (l.number == line)
+          path = l.section;
+      });
       return path;
     }
   } // namespace

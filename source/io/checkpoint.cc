@@ -15,6 +15,8 @@
 #include <regex>
 #include <sstream>
 
+#include "../base/parameter_text.h"
+
 namespace dealmpm
 {
   namespace fs = std::filesystem;
@@ -220,39 +222,19 @@ namespace dealmpm
                                                     "Checks/"};
     const std::vector<std::string> free_entries  = {
        "Time/End time", "Time/Maximum number of steps"};
-    std::vector<std::string> sections, entries;
+    std::vector<std::string> entries;
     std::istringstream       in(printed.str());
-    // String operations, no std::regex: its matcher recurses once per
-    // character of a (long) value.
-    for (std::string line; std::getline(in, line);)
-      {
-        const std::string text = Utilities::trim(line);
-        if (text.rfind("subsection ", 0) == 0)
-          sections.push_back(text.substr(11));
-        else if (text == "end" && !sections.empty())
-          sections.pop_back();
-        else if (text.rfind("set ", 0) == 0 &&
-                 text.find('=') != std::string::npos)
-          {
-            const std::size_t equal = text.find('=');
-            std::string       path;
-            for (const std::string &s : sections)
-              path += s + "/";
-            path += Utilities::trim(text.substr(4, equal - 4));
-            std::string value = text.substr(equal + 1);
-            if (!value.empty() && value[0] == ' ')
-              value.erase(0, 1);
-            const auto starts = [&](const std::string &prefix) {
-              return path.rfind(prefix, 0) == 0;
-            };
-            if (std::none_of(free_sections.begin(),
-                             free_sections.end(),
-                             starts) &&
-                std::find(free_entries.begin(), free_entries.end(), path) ==
-                  free_entries.end())
-              entries.push_back(path + " = " + value);
-          }
-      }
+    walk_parameter_text(in, false, [&](const ParameterLine &line) {
+      const std::string path   = line.section + line.name;
+      const auto        starts = [&](const std::string &prefix) {
+        return path.rfind(prefix, 0) == 0;
+      };
+      if (line.kind == ParameterLine::entry &&
+          std::none_of(free_sections.begin(), free_sections.end(), starts) &&
+          std::find(free_entries.begin(), free_entries.end(), path) ==
+            free_entries.end())
+        entries.push_back(path + " = " + line.value);
+    });
     return entries;
   }
 
