@@ -1,8 +1,10 @@
 #include <deal.II/base/array_view.h>
 #include <deal.II/base/utilities.h>
 
+#include <dealmpm/base/run_messages.h>
 #include <dealmpm/core/run_report.h>
 
+#include <algorithm>
 #include <iomanip>
 #include <sstream>
 #include <utility>
@@ -93,7 +95,10 @@ namespace dealmpm
             << " time(s) a particle was put back on a wall";
     if (loop.lost_particles > 0)
       pcout << ", " << static_cast<long long>(loop.lost_particles)
-            << " particle(s) left the grid";
+            << " particle(s) left the grid ("
+            << short_number(100 * loop.lost_mass /
+                            std::max(loop.initial_mass, 1e-300))
+            << " % of the mass)";
     pcout << std::endl;
   }
 } // namespace dealmpm

@@ -312,21 +312,25 @@ namespace dealmpm
                                      const unsigned int held)
   {
     lost_this_step.clear();
-    const bool sorted = !particles->finish_relocation(grid, everywhere);
+    lost_mass_this_step = 0;
+    const bool sorted   = !particles->finish_relocation(grid, everywhere);
     // Particles are lost only in deal.II's sort; the counts need a sum
     // only when it ran or some rank held particles at a wall.
     if (!sorted && !held_anywhere)
       return;
-    const double local[2] = {double(held), double(lost_this_step.size())};
-    double       counts[2];
-    Utilities::MPI::sum(ArrayView<const double>(local, 2),
+    const double local[3] = {double(held),
+                             double(lost_this_step.size()),
+                             lost_mass_this_step};
+    double       counts[3];
+    Utilities::MPI::sum(ArrayView<const double>(local, 3),
                         comm,
-                        ArrayView<double>(counts, 2));
+                        ArrayView<double>(counts, 3));
     loop.held_particles += counts[0];
     const double n_lost = counts[1];
     if (n_lost == 0)
       return;
     loop.lost_particles += n_lost;
+    loop.lost_mass += counts[2];
     const std::string first =
       first_message(lost_this_step.empty() ?
                       "" :
@@ -340,6 +344,19 @@ namespace dealmpm
       throw RunError(message.str() +
                      "; set 'MPM/Particles leaving the grid = remove' "
                      "to drop such particles instead");
+    const double limit = run_settings.checks.mass_loss_limit;
+    const double lost  = loop.lost_mass / loop.initial_mass;
+    if (limit > 0 && loop.initial_mass > 0 && lost > limit)
+      {
+        std::ostringstream stop;
+        stop << std::setprecision(3) << message.str()
+             << "; the particles removed so far carried " << 100 * lost
+             << " % of the mass (limit 'Checks/Mass loss limit' = "
+             << 100 * limit
+             << " %): enlarge the grid, put a wall where they leave, or raise "
+                "the limit";
+        throw RunError(stop.str());
+      }
     warn("particles left the grid", message.str() + "; removed");
   }
 

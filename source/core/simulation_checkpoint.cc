@@ -149,9 +149,9 @@ namespace dealmpm
   unsigned int
   Simulation<dim>::open_output(const Statistics &initial)
   {
-    const bool   resumed   = !resumed_checkpoint.empty();
-    unsigned int n_removed = output_writer.open(
-      scene_file, initial, resumed ? &loop.output : nullptr, loop.step);
+    const bool   resumed = !resumed_checkpoint.empty();
+    unsigned int n_removed =
+      output_writer.open(scene_file, initial, resumed ? &loop.output : nullptr);
     // An earlier run's checkpoints, or those the resumed run wrote after
     // the one it continues from (their future is being computed again).
     std::string problem;

@@ -249,6 +249,7 @@ namespace dealmpm
         if (s.output.write_grid)
           map_particles_for_grid_output();
         loop.accuracy.start(initial, load_energy_floor(initial, effects, grid));
+        loop.initial_mass = initial.mass;
         write_output(0., initial, 0., progress);
         loop.next_output = s.output.interval;
       }
@@ -317,23 +318,24 @@ namespace dealmpm
   std::string
   Simulation<dim>::save_stopped_run(const double dt, const Progress &progress)
   {
+    // The checkpoint comes before the stop's output, so that it holds the
+    // run as the uninterrupted one had it at this step: a resumed run
+    // drops the stop's row and files (they are not in the saved output
+    // record), and the regions' support forces, means over a row's steps,
+    // go on over the whole row.
+    std::string saved;
+    if (run_settings.checkpoint.on_stop_signal)
+      saved = last_checkpoint_step == loop.step ?
+                run_settings.checkpoint.directory :
+                write_checkpoint();
     if (loop.output.last_step != loop.step)
       {
-        // This row reports the drift, but the monitor goes on as if it had
-        // not been written (its largest kinetic energy seen must not count
-        // this step, or a resume would differ).
-        const AccuracyMonitor before = loop.accuracy;
-        const Statistics      now    = statistics();
-        const double          work   = external_work();
+        const Statistics now  = statistics();
+        const double     work = external_work();
         loop.accuracy.observe(now, work);
         write_output(dt, now, work, progress);
-        loop.accuracy = before;
       }
-    if (!run_settings.checkpoint.on_stop_signal)
-      return "";
-    return last_checkpoint_step == loop.step ?
-             run_settings.checkpoint.directory :
-             write_checkpoint();
+    return saved;
   }
 
   template <int dim>

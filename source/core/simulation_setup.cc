@@ -294,6 +294,7 @@ namespace dealmpm
       [this](const typename Particles::ParticleIterator<dim> &p,
              const typename Triangulation<dim>::active_cell_iterator &) {
         lost_this_step.emplace_back(p->get_id(), p->get_location());
+        lost_mass_this_step += p->get_properties()[FixedCore<dim>::mass];
       });
     if (saved != nullptr)
       {

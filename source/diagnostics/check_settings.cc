@@ -16,6 +16,14 @@ namespace dealmpm
       "forces, potential energy released): energy a scheme creates. Checked "
       "at every output and every few steps; 0: off.");
     prm.declare_entry(
+      "Mass loss limit",
+      "0.01",
+      Patterns::Double(),
+      "Stop the run (exit code 3) when the particles that left the grid "
+      "('MPM/Particles leaving the grid = remove') have carried away more "
+      "than this fraction of the particles' initial mass; 0: off. Particles "
+      "that erosion removes ('Damage') do not count.");
+    prm.declare_entry(
       "Memory limit",
       "0",
       Patterns::Double(),
@@ -41,6 +49,9 @@ namespace dealmpm
     s.energy_growth_limit = reader.get_nonnegative("Energy growth limit");
     s.cfl_warning         = reader.get_double("CFL warning");
     s.memory_limit        = reader.get_nonnegative("Memory limit") * 1e9;
+    s.mass_loss_limit     = reader.get_nonnegative("Mass loss limit");
+    if (s.mass_loss_limit > 1)
+      reader.fail("Mass loss limit", "a fraction in [0, 1]");
     if (!(s.cfl_warning > 0 && s.cfl_warning <= 1))
       reader.fail("CFL warning", "a number in (0, 1]");
     return s;

@@ -14,7 +14,7 @@ grep -Eq "stopped: step 1 \(t = 0\): particle [0-9]+ at \(.*\): the fixed time s
   || { fail "unstable run: message"; cat err.txt; }
 [ -s unstable/particles.pvd ] && [ -s unstable/statistics.csv ] \
   || fail "unstable run: last good output missing"
-grep -q "particles_00000.pvtu" unstable/particles.pvd || fail "pvd lacks the first output"
+grep -q "steps/particles_00000.pvtu" unstable/particles.pvd || fail "pvd lacks the first output"
 
 # Between 'Checks/CFL warning' and 1: one warning, the run goes on.
 "$dealmpm" "$scene" -s "Output/Directory=warned" -s "Time/Time step method=fixed" -s "Time/Time step=0.025" \
@@ -46,9 +46,25 @@ awk -v d="$most" 'BEGIN { exit !(d > 0.1) }' \
 # Disks flying out of a grid with free boundaries.
 flying=(-s "Body 1/Velocity=-2, 0" -s "Body 2/Velocity=2, 0" -s "Time/End time=0.1"
         -s "Output/Write particles=false")
-"$dealmpm" "$scene" "${flying[@]}" -s "Output/Directory=removed" > out.txt 2> err.txt
+# By default a run that loses more than 1 % of its mass stops (exit 3),
+# at the first step past it, and says how much went: it exited 0 after
+# losing half its mass.
+"$dealmpm" "$scene" "${flying[@]}" -s "Output/Directory=mass_lost" > out.txt 2> err.txt
+code=$?
+[ $code = 3 ] || fail "mass loss limit: exit $code, expected 3"
+line=$(grep "^dealmpm: stopped: .*particle(s) left the grid .*the particles removed so far carried [0-9.e+-]* % of the mass (limit 'Checks/Mass loss limit' = 1 %)" err.txt)
+[ -n "$line" ] || { fail "mass loss limit: no line naming the limit"; cat err.txt; }
+# Past 1 %, by at most the particles of one step (a row of a disk, 16 of 416).
+percent=$(echo "$line" | sed 's/.*carried \([0-9.e+-]*\) % of the mass.*/\1/')
+awk -v p="$percent" 'BEGIN { exit !(p > 1 && p <= 1 + 100 * 16 / 416) }' \
+  || fail "mass loss limit: stopped at $percent % of the mass"
+# A limit the run stays under: it runs to its end, and the summary says
+# how much mass went.
+"$dealmpm" "$scene" "${flying[@]}" -s "Output/Directory=removed" -s "Checks/Mass loss limit=0.9" > out.txt 2> err.txt
 code=$?
 [ $code = 0 ] || fail "remove policy: exit $code"
+grep -Eq "particle\(s\) left the grid \([0-9.e+-]+ % of the mass\)" out.txt \
+  || fail "remove policy: the summary does not say how much mass left"
 # Warnings go to standard error, once per kind, with a count at the end
 # (the disks leave over many steps; it was a line a step on stdout).
 [ "$(grep -c "^dealmpm: warning: step .* particle(s) left the grid (first: id" err.txt)" = 1 ] \
@@ -68,7 +84,7 @@ grep -q "left the grid (first: id [0-9]* at (" err.txt || fail "stop policy: mes
 
 # When the last particle has left, the run stops and says so.
 "$dealmpm" "$scene" "${flying[@]}" -s "Time/End time=1" -s "Output/Directory=empty" \
-  -s "Time/Time step method=CFL" > out.txt 2> err.txt
+  -s "Time/Time step method=CFL" -s "Checks/Mass loss limit=0" > out.txt 2> err.txt
 code=$?
 [ $code = 3 ] || fail "all particles gone: exit $code, expected 3"
 grep -q "no particles are left in the grid" err.txt || { fail "all particles gone: message"; cat err.txt; }

@@ -301,8 +301,8 @@ namespace dealmpm
     /** One step of the loop with its checks and, when due, an output. */
     void
     take_step(const double dt, Progress &progress);
-    /** A run stopped by a signal: its last output (unless its step had
-     * one) and, with 'On stop signal', a checkpoint; returns where the
+    /** A run stopped by a signal: with 'On stop signal', a checkpoint,
+     * then its last output (unless its step had one); returns where the
      * checkpoint is ("" without). */
     std::string
     save_stopped_run(const double dt, const Progress &progress);
@@ -377,7 +377,8 @@ namespace dealmpm
     ParticleCheck<dim> particle_check; ///< this rank's, of the last step
     bool               cfl_warned = false;
     std::vector<std::pair<types::particle_index, Point<dim>>> lost_this_step;
-    int               stopped_by_signal = 0;
+    double            lost_mass_this_step = 0; ///< of lost_this_step, this rank
+    int               stopped_by_signal   = 0;
     OutputWriter<dim> output_writer;
     /** The scene's entries a resume must keep (scene_entries()). */
     std::vector<std::string>              scene_entry_list;

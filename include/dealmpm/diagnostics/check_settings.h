@@ -17,6 +17,7 @@ namespace dealmpm
     double energy_growth_limit = 0.1; ///< fraction of the energy put in; 0: off
     double cfl_warning  = 0.5; ///< fixed step: particle CFL number that warns
     double memory_limit = 0;   ///< bytes; 0: what the machines have
+    double mass_loss_limit = 0.01; ///< fraction of the mass; 0: off
 
     /** Declare the section's entries. */
     static void

@@ -35,16 +35,15 @@ namespace dealmpm
      * made, OutputError on every rank when a file cannot be written.
      * Returns the number of files removed (rank 0).
      *
-     * A resumed run gives the @p resumed record of its checkpoint at step
-     * @p step instead: the folder keeps the earlier outputs, statistics.csv
-     * its rows up to that step, the series their entries up to the record's
-     * (rewritten at once), and the files the interrupted run wrote after
-     * the checkpoint are removed. */
+     * A resumed run gives the @p resumed record of its checkpoint instead:
+     * the folder keeps the outputs that record lists (statistics.csv its
+     * rows up to the record's last step, the series their entries, rewritten
+     * at once), and the files the interrupted run wrote after them (after
+     * the checkpoint, or at the stop that saved it) are removed. */
     unsigned int
     open(const std::string  &scene_file,
          const Statistics   &first,
-         const OutputRecord *resumed = nullptr,
-         const unsigned int  step    = 0);
+         const OutputRecord *resumed = nullptr);
 
     /** The parts of a run an output shows. */
     struct Scene
