@@ -47,7 +47,7 @@ def read_csv(path):
 
 
 def particles(folder, k):
-    rows = read_csv(os.path.join(folder, "particles_%05d.csv" % k))
+    rows = read_csv(os.path.join(folder, "steps", "particles_%05d.csv" % k))
     return [{key: (float(v) if key != "id" else int(v)) for key, v in r.items()}
             for r in rows]
 
@@ -95,7 +95,7 @@ def rigid_motion(run, speeds):
     for k in range(n_out):
         ps = particles(run.folder, k)
         t = run.rows[k]["time"]
-        for body, speed in enumerate(speeds):
+        for body, speed in enumerate(speeds, start=1):  # 'Body N' counts from 1
             mine = [p for p in ps if p["body"] == body]
             if not mine:
                 return float("inf"), float("inf")
@@ -189,8 +189,9 @@ def static_stress_answer(run):
     -rho g (H - Y) (rho = 1000, g = 9.81, H = 1), over rho g H."""
     _, last = vtk_files.pvd_files(os.path.join(run.folder, "particles.pvd"))[-1]
     worst, scale = 0.0, 1000 * 9.81 * 1.0
-    for piece in vtk_files.pvtu_pieces(os.path.join(run.folder, last)):
-        d = vtk_files.read_vtu(os.path.join(run.folder, piece))
+    record = os.path.join(run.folder, last)
+    for piece in vtk_files.pvtu_pieces(record):
+        d = vtk_files.read_vtu(os.path.join(os.path.dirname(record), piece))
         u, stress = d["arrays"]["displacement"][2], d["arrays"]["stress"][2]
         for i in range(d["n_points"]):
             Y = d["points"][3 * i + 1] - u[3 * i + 1]
@@ -209,8 +210,9 @@ def rod_outline(run, spacing):
     1 mm of the wall."""
     _, last = vtk_files.pvd_files(os.path.join(run.folder, "particles.pvd"))[-1]
     length, radius = 0.0, 0.0
-    for piece in vtk_files.pvtu_pieces(os.path.join(run.folder, last)):
-        d = vtk_files.read_vtu(os.path.join(run.folder, piece))
+    record = os.path.join(run.folder, last)
+    for piece in vtk_files.pvtu_pieces(record):
+        d = vtk_files.read_vtu(os.path.join(os.path.dirname(record), piece))
         F = d["arrays"]["deformation gradient"][2]
         for i in range(d["n_points"]):
             x, y, z = d["points"][3 * i:3 * i + 3]

@@ -17,6 +17,7 @@
 #include <optional>
 #include <regex>
 
+#include "run_log.h"
 #include "unused_sections.h"
 
 namespace dealmpm
@@ -78,7 +79,13 @@ namespace dealmpm
       {
         Simulation<dim> simulation(
           prm, file, shape, MPI_COMM_WORLD, overrides, resume);
-        // After the scene was read whole: bad input gets its one line alone.
+        // After the scene was read whole: bad input gets its one line alone,
+        // and an output folder only a scene that runs.
+        start_run_files(prm,
+                        prm.get({"Output"}, "Directory"),
+                        file,
+                        overrides,
+                        resume.has_value());
         warn_unused_sections<dim>(prm, file, overrides, shape.n_materials);
         try
           {

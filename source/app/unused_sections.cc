@@ -10,6 +10,9 @@
 #include <algorithm>
 #include <fstream>
 
+#include "../base/parameter_text.h"
+#include "run_log.h"
+
 namespace dealmpm
 {
   namespace
@@ -26,28 +29,20 @@ namespace dealmpm
     entries_set(const std::string              &file,
                 const std::vector<std::string> &overrides)
     {
-      std::vector<SetEntry>    set;
-      std::vector<std::string> open;
-      std::ifstream            in(file);
-      std::string              line;
-      for (unsigned int number = 1; std::getline(in, line); ++number)
-        {
-          const std::string text =
-            Utilities::trim(line.substr(0, line.find('#')));
-          const std::size_t equal = text.find('=');
-          if (text.rfind("subsection ", 0) == 0)
-            open.push_back(Utilities::trim(text.substr(11)));
-          else if (text == "end" && !open.empty())
-            open.pop_back();
-          else if (text.rfind("set ", 0) == 0 && equal != std::string::npos)
-            {
-              std::string path;
-              for (const std::string &s : open)
-                path += s + "/";
-              set.push_back({path + Utilities::trim(text.substr(4, equal - 4)),
-                             file + ": line " + std::to_string(number)});
-            }
-        }
+      std::vector<SetEntry> set;
+      std::ifstream         in(file);
+      std::string           first;
+      // A scene as it ran (run.prm) sets every entry on purpose; the run
+      // that wrote it warned about those that mattered.
+      if (std::getline(in, first) && first.rfind(scene_as_run_mark, 0) == 0)
+        in.setstate(std::ios::eofbit);
+      else
+        in.seekg(0);
+      walk_parameter_text(in, true, [&](const ParameterLine &line) {
+        if (line.kind == ParameterLine::entry)
+          set.push_back({line.section + line.name,
+                         file + ": line " + std::to_string(line.number)});
+      });
       for (const std::string &item : overrides)
         set.push_back({override_path(item),
                        "command line: -s '" + quote_value(item) + "'"});

@@ -17,29 +17,54 @@ namespace dealmpm
     return std::regex_match(file_name, pattern);
   }
 
+  namespace
+  {
+    /** The run output files (is_run_output_file()) in @p directory and its
+     * step_folder. */
+    std::vector<std::filesystem::path>
+    run_output_files(const std::string &directory)
+    {
+      namespace fs = std::filesystem;
+      std::vector<fs::path> files;
+      for (const std::string &folder :
+           {directory, directory + "/" + step_folder})
+        {
+          std::error_code error;
+          if (!fs::is_directory(folder, error))
+            continue;
+          for (const fs::directory_entry &entry :
+               fs::directory_iterator(folder, error))
+            {
+              std::error_code type_error;
+              if (entry.is_regular_file(type_error) &&
+                  is_run_output_file(entry.path().filename().string()))
+                files.push_back(entry.path());
+            }
+          if (error)
+            throw OutputError("cannot list " + folder + ": " + error.message());
+        }
+      return files;
+    }
+  } // namespace
+
   unsigned int
   remove_earlier_output(const std::string &directory)
   {
     namespace fs = std::filesystem;
     std::vector<fs::path> series, others;
-    std::error_code       error;
-    for (const fs::directory_entry &entry :
-         fs::directory_iterator(directory, error))
+    for (const fs::path &file : run_output_files(directory))
       {
-        std::error_code   type_error;
-        const std::string name = entry.path().filename().string();
-        if (entry.is_regular_file(type_error) && is_run_output_file(name))
-          (name.find(".pvd") != std::string::npos ||
-               name.find(".xdmf") != std::string::npos ?
-             series :
-             others)
-            .push_back(entry.path());
+        const std::string name = file.filename().string();
+        (name.find(".pvd") != std::string::npos ||
+             name.find(".xdmf") != std::string::npos ?
+           series :
+           others)
+          .push_back(file);
       }
-    if (error)
-      throw OutputError("cannot list " + directory + ": " + error.message());
     // The series (.pvd, .xdmf) go first: a run killed while removing must not
     // leave a series that lists removed files.
     series.insert(series.end(), others.begin(), others.end());
+    std::error_code error;
     for (const fs::path &file : series)
       if (!fs::remove(file, error) && error)
         throw OutputError("cannot remove " + file.string() +
@@ -55,19 +80,15 @@ namespace dealmpm
     static const std::regex numbered(
       "(particles|grid|fem_region_[0-9]+)_([0-9]+)\\..*");
     std::vector<fs::path> later;
-    std::error_code       error;
-    for (const fs::directory_entry &entry :
-         fs::directory_iterator(directory, error))
+    for (const fs::path &file : run_output_files(directory))
       {
-        const std::string name = entry.path().filename().string();
+        const std::string name = file.filename().string();
         std::smatch       match;
-        if (is_run_output_file(name) &&
-            std::regex_match(name, match, numbered) &&
+        if (std::regex_match(name, match, numbered) &&
             std::stoul(match[2]) >= first_counter)
-          later.push_back(entry.path());
+          later.push_back(file);
       }
-    if (error)
-      throw OutputError("cannot list " + directory + ": " + error.message());
+    std::error_code error;
     for (const fs::path &file : later)
       if (!fs::remove(file, error) && error)
         throw OutputError("cannot remove " + file.string() + ": " +

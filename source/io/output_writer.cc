@@ -8,6 +8,7 @@
 #include <dealmpm/io/particle_csv.h>
 #include <dealmpm/io/region_output.h>
 
+#include <cctype>
 #include <filesystem>
 #include <iomanip>
 #include <sstream>
@@ -61,6 +62,30 @@ namespace dealmpm
       std::vector<std::string> regions;
     };
 
+    /** A series entry of a file in the step_folder, as the series at the
+     * folder's top refers to it: a .pvd entry (a file name) or an XDMF Grid
+     * element (whose DataItems name "file.h5:/dataset"). */
+    std::string
+    from_series_folder(const std::string &entry)
+    {
+      const std::string prefix = step_folder + "/";
+      if (entry.find("<Grid") == std::string::npos)
+        return prefix + entry;
+      std::string       out = entry;
+      const std::string h5  = ".h5:/";
+      for (std::size_t at = out.find(h5); at != std::string::npos;
+           at             = out.find(h5, at + prefix.size() + h5.size()))
+        {
+                      // The file name starts after the '>' or the white space before it.
+          std::size_t name = at;
+          while (name > 0 && out[name - 1] != '>' &&
+                 !std::isspace(static_cast<unsigned char>(out[name - 1])))
+            --name;
+          out.insert(name, prefix);
+        }
+      return out;
+    }
+
     /** Adds the step's files at @p time to the @p record's series and
      * rewrites those (rank 0). */
     void
@@ -72,18 +97,19 @@ namespace dealmpm
       const std::string dir = settings.directory + "/";
       const std::string ext = settings.series_extension();
       if (!files.particles.empty())
-        record.particle_series.add_and_write(time,
-                                             files.particles,
-                                             dir + "particles" + ext);
+        record.particle_series.add_and_write(
+          time, from_series_folder(files.particles), dir + "particles" + ext);
       if (!files.grid.empty())
-        record.grid_series.add_and_write(time, files.grid, dir + "grid" + ext);
+        record.grid_series.add_and_write(time,
+                                         from_series_folder(files.grid),
+                                         dir + "grid" + ext);
       record.region_series.resize(files.regions.size());
       for (unsigned int r = 0; r < files.regions.size(); ++r)
         if (!files.regions[r].empty())
-          record.region_series[r].add_and_write(time,
-                                                files.regions[r],
-                                                dir + "fem_region_" +
-                                                  std::to_string(r + 1) + ext);
+          record.region_series[r].add_and_write(
+            time,
+            from_series_folder(files.regions[r]),
+            dir + "fem_region_" + std::to_string(r + 1) + ext);
     }
 
     /** Writes the files of output @p counter that the @p settings ask for,
@@ -98,7 +124,7 @@ namespace dealmpm
                 const MPI_Comm                           comm,
                 Attempts                                &attempt)
     {
-      const std::string &dir    = settings.directory;
+      const std::string  dir    = settings.directory + "/" + step_folder;
       const OutputFormat format = settings.format;
       StepFiles          files;
       if (settings.write_particles)
@@ -175,8 +201,7 @@ namespace dealmpm
   unsigned int
   OutputWriter<dim>::open(const std::string  &scene_file,
                           const Statistics   &first,
-                          const OutputRecord *resumed,
-                          const unsigned int  step)
+                          const OutputRecord *resumed)
   {
     // Every rank learns whether rank 0 could make the folder: a rank that
     // throws alone would leave the others waiting. The broadcast also keeps
@@ -190,7 +215,7 @@ namespace dealmpm
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       try
         {
-          std::filesystem::create_directories(dir);
+          std::filesystem::create_directories(dir + "/" + step_folder);
           try
             {
               // An earlier run's series beside the new one (its later
@@ -219,7 +244,7 @@ namespace dealmpm
                         dir + "/fem_region_" + std::to_string(r + 1) + ext);
                   n_removed       = remove_later_output(dir, resumed->counter);
                   statistics_file = std::make_unique<StatisticsFile>(
-                    dir + "/statistics.csv", dim, first, step);
+                    dir + "/statistics.csv", dim, first, resumed->last_step);
                 }
             }
           catch (const OutputError &e)

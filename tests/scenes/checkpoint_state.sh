@@ -33,10 +33,10 @@ resumes_exactly() { # name tolerance scene overrides...
   "$compare" "$name/statistics.csv" "$name-resumed/statistics.csv" "$tolerance" \
     || fail "$name: the statistics differ"
   if [ "$tolerance" = 0 ]; then
-    cmp -s "$name/particles_00001.csv" "$name-resumed/particles_00001.csv" \
+    cmp -s "$name/steps/particles_00001.csv" "$name-resumed/steps/particles_00001.csv" \
       || fail "$name: the final particles differ"
   else
-    python3 "$here/same_particles.py" "$name/particles_00001.csv" "$name-resumed/particles_00001.csv" \
+    python3 "$here/same_particles.py" "$name/steps/particles_00001.csv" "$name-resumed/steps/particles_00001.csv" \
       "$tolerance" || fail "$name: the final particles differ"
   fi
 }

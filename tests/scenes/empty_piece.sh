@@ -26,17 +26,21 @@ def check(condition, what):
 check(len(pvd_files("out/particles.pvd")) == 3, "particles.pvd should list 3 outputs")
 check(not check_series("out", "particles.pvd"), "series incomplete: %s" % check_series("out", "particles.pvd"))
 for counter in range(3):
-    pieces = [read_vtu("out/particles_%05d.%d.vtu" % (counter, r)) for r in (0, 1)]
+    pieces = [read_vtu("out/steps/particles_%05d.%d.vtu" % (counter, r)) for r in (0, 1)]
     sizes = sorted(p["n_points"] for p in pieces)
     check(sizes[0] == 0 and sizes[1] > 0, "output %d: piece sizes %s" % (counter, sizes))
     kinds = [{k: a[:2] for k, a in p["arrays"].items()} for p in pieces]
     check(kinds[0] == kinds[1], "output %d: the pieces declare different arrays: %s" % (counter, kinds))
     check(kinds[0].get("stress") == ("Float32", 9), "output %d: stress %s" % (counter, kinds[0].get("stress")))
+    # Each piece's particles name the rank that wrote it.
+    for r, p in enumerate(pieces):
+        ranks = set(p["arrays"].get("mpi_rank", (0, 0, [-1]))[2]) if p["n_points"] else {r}
+        check(ranks == {r}, "output %d: piece %d has mpi_rank %s" % (counter, r, ranks))
     for p in pieces:
         check(p["points_declared"] == 3, "output %d: Points not declared with 3 components" % counter)
         check(all(len(a[2]) == p["n_points"] * a[1] for a in p["arrays"].values()),
               "output %d: array lengths" % counter)
-    record = parse_xml("out/particles_%05d.pvtu" % counter)
+    record = parse_xml("out/steps/particles_%05d.pvtu" % counter)
     check(declared_arrays(record.find("PUnstructuredGrid/PPointData")) == kinds[0],
           "output %d: the .pvtu declares other arrays" % counter)
 for f in failures:

@@ -55,10 +55,10 @@ case "$mode" in
     "$dealmpm" "$scene" -s "Output/Directory=disk/out" "${run[@]}" > out.txt 2> err.txt
     code=$?
     check_stop disk/out "No space left on device"
-    grep -q "particles_00000.pvtu" disk/out/particles.pvd || fail "the outputs before the disk was full are not listed"
+    grep -q "steps/particles_00000.pvtu" disk/out/particles.pvd || fail "the outputs before the disk was full are not listed"
     ;;
   occupied)
-    mkdir -p out/particles_00003.0.vtu
+    mkdir -p out/steps/particles_00003.0.vtu
     "$dealmpm" "$scene" -s "Output/Directory=out" "${run[@]}" > out.txt 2> err.txt
     code=$?
     check_stop out "Is a directory"

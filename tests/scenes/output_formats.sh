@@ -29,9 +29,9 @@ compare() { # folder_vtu folder_hdf5 series...
   for s in "$@"; do
     [ -s "$h5/$s.xdmf" ] || fail "$h5/$s.xdmf missing"
   done
-  if ls "$h5"/*.vtu "$h5"/*.pvtu > /dev/null 2>&1; then fail "$h5 has .vtu files"; fi
+  if ls "$h5"/steps/*.vtu "$h5"/steps/*.pvtu > /dev/null 2>&1; then fail "$h5 has .vtu files"; fi
   local n_outputs; n_outputs=$(grep -c DataSet "$vtu/particles.pvd")
-  [ "$(ls "$h5"/particles_*.h5 | wc -l)" = "$n_outputs" ] || fail "$h5: not one particles .h5 per output"
+  [ "$(ls "$h5"/steps/particles_*.h5 | wc -l)" = "$n_outputs" ] || fail "$h5: not one particles .h5 per output"
   timeout 300 pvpython "$here/same_series.py" "$vtu" "$h5" "$@" > "$h5.compare" 2>&1 \
     || fail "$h5: $(cat "$h5.compare")"
   grep -qi "warning\|error" "$h5.compare" && fail "$h5: ParaView says: $(grep -i 'warning\|error' "$h5.compare" | head -3)"
@@ -59,8 +59,8 @@ run 2 "$prm/colliding_disks.prm" disks_zlib vtu "${short[@]}" "${adaptive[@]}" -
 timeout 300 pvpython "$here/same_series.py" disks_vtu disks_zlib particles > zlib.compare 2>&1 \
   || fail "zlib: $(cat zlib.compare)"
 cat zlib.compare
-grep -q 'compressor="vtkZLibDataCompressor"' disks_zlib/particles_00002.1.vtu || fail "zlib: not compressed"
-raw=$(du -b disks_vtu/particles_00002.1.vtu | cut -f1) packed=$(du -b disks_zlib/particles_00002.1.vtu | cut -f1)
+grep -q 'compressor="vtkZLibDataCompressor"' disks_zlib/steps/particles_00002.1.vtu || fail "zlib: not compressed"
+raw=$(du -b disks_vtu/steps/particles_00002.1.vtu | cut -f1) packed=$(du -b disks_zlib/steps/particles_00002.1.vtu | cut -f1)
 [ "$packed" -lt "$raw" ] || fail "zlib: $packed bytes, not fewer than the raw $raw"
 
 # A resumed run continues the .xdmf series: from a checkpoint before the
@@ -74,7 +74,7 @@ older=$(ls -d resumed/checkpoints/checkpoint-* | head -1)
 run 1 "$prm/colliding_disks.prm" resumed hdf5 "${resume[@]}" --resume "$older"
 grep -q "removed [1-9][0-9]* files the interrupted run wrote" resumed.log || fail "resume removed nothing: $(grep 'output in' resumed.log)"
 cmp -s uninterrupted.xdmf resumed/particles.xdmf || fail "the resumed run's particles.xdmf differs"
-[ "$(ls resumed/particles_*.h5 | wc -l)" = "$(grep -c '<Time ' uninterrupted.xdmf)" ] || fail "resumed: not one .h5 per output"
+[ "$(ls resumed/steps/particles_*.h5 | wc -l)" = "$(grep -c '<Time ' uninterrupted.xdmf)" ] || fail "resumed: not one .h5 per output"
 # ... but not in the other format: its series could not go on.
 if "$dealmpm" "$prm/colliding_disks.prm" -s "Output/Directory=resumed" -s "Output/Format=vtu" \
      "${resume[@]}" --resume > other_format.log 2>&1; then
@@ -85,5 +85,5 @@ grep -q "entry 'Output/Format' = 'vtu': the saved run wrote hdf5" other_format.l
 
 # A vtu run in the hdf5 run's folder removes its files and series.
 run 1 "$prm/colliding_disks.prm" disks_hdf5 vtu -s "Time/End time=0.01" -s "Output/Interval=0.01"
-if ls disks_hdf5/*.h5 disks_hdf5/*.xdmf > /dev/null 2>&1; then fail "an earlier run's .h5/.xdmf files stayed"; fi
+if ls disks_hdf5/*.xdmf disks_hdf5/steps/*.h5 > /dev/null 2>&1; then fail "an earlier run's .h5/.xdmf files stayed"; fi
 finish "output format"

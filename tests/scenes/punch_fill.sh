@@ -34,13 +34,13 @@ push() {
   local code=$?
   [ $code = 0 ] || { fail "$name: exit $code"; cat err.txt; return; }
   local last
-  last=$(ls "$name"/particles_*.csv | tail -1)
+  last=$(ls "$name"/steps/particles_*.csv | tail -1)
   python3 - "$last" "$(awk -v s="$speed" -v t="$end" 'BEGIN { print 0.425 - s * t }')" \
     $h "$ppc" "$name" <<'PY' || fail "$name"
 import csv, sys
 f, tip, h, ppc, name = sys.argv[1], float(sys.argv[2]), float(sys.argv[3]), int(sys.argv[4]), sys.argv[5]
 sand = [(float(r['x']), float(r['y']), float(r['J']))
-        for r in csv.DictReader(open(f)) if r['body'] == '0']
+        for r in csv.DictReader(open(f)) if r['body'] == '1']
 V0 = (h / ppc) ** 2
 # The box under the tip, half a cell in from its sides, from half a cell
 # to three cells down. Counting particles by their centres cuts the

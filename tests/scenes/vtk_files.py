@@ -133,7 +133,8 @@ def check_series(folder, pvd):
         if not os.path.isfile(record):
             problems.append("missing " + name)
             continue
+        # A .pvtu names its pieces relative to its own folder.
         for piece in pvtu_pieces(record):
-            if not os.path.isfile(os.path.join(folder, piece)):
+            if not os.path.isfile(os.path.join(os.path.dirname(record), piece)):
                 problems.append("missing " + piece)
     return problems
