@@ -30,7 +30,7 @@ namespace dealmpm
           line << ',' << props[f.displacement + d];
         line << ','
              << determinant(read_tensor<dim>(&props[f.deformation_gradient]))
-             << ',' << particles.body_of(props);
+             << ',' << particles.body_of(props) + 1; // as 'Body N' counts
         rows.emplace_back(p.get_id(), line.str());
       }
     const auto gathered = Utilities::MPI::gather(comm, rows, 0);

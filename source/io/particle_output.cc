@@ -11,7 +11,7 @@ namespace dealmpm
     /** The arrays every particle has, by index into cloud.arrays. */
     struct CoreArrays
     {
-      unsigned int id, body, material, velocity, displacement, stress,
+      unsigned int id, body, material, rank, velocity, displacement, stress,
         deformation_gradient, J, volume, mass;
     };
 
@@ -25,6 +25,7 @@ namespace dealmpm
       a.id           = cloud.add_array("id", VtuType::Int64, 1);
       a.body         = cloud.add_array("body", VtuType::Int32, 1);
       a.material     = cloud.add_array("material", VtuType::Int32, 1);
+      a.rank         = cloud.add_array("mpi_rank", VtuType::Int32, 1);
       a.velocity     = cloud.add_array("velocity", VtuType::Float32, 3);
       a.displacement = cloud.add_array("displacement", VtuType::Float32, 3);
       a.stress       = cloud.add_array("stress", VtuType::Float32, 9);
@@ -45,14 +46,16 @@ namespace dealmpm
 
     /** Every field of the layout after the core ones: the materials'
      * internal variables and the kernels' and transfers' own (apic_B,
-     * domain_half_length), named as in the layout. */
+     * domain_half_length), named as in the layout; but not a 2D
+     * material's stress_zz, which 'stress' shows as its zz component. */
     template <int dim>
     std::vector<ExtraArray>
     add_extra_arrays(VtuPointCloud &cloud, const ParticleSet<dim> &particles)
     {
       std::vector<ExtraArray> extra;
       for (const auto &field : particles.layout.fields())
-        if (field.offset >= particles.fields.n_core)
+        if (field.offset >= particles.fields.n_core &&
+            !(dim == 2 && field.name == "stress_zz"))
           extra.push_back({field,
                            cloud.add_array(field.name,
                                            VtuType::Float32,
@@ -99,12 +102,16 @@ namespace dealmpm
             cloud.arrays[a.deformation_gradient].reals[9 * i + 3 * r + c] =
               (r < dim && c < dim) ? F[r][c] : (r == c ? 1. : 0.);
           }
-      cloud.arrays[a.id].integers[i]       = p.get_id();
-      cloud.arrays[a.body].integers[i]     = particles.body_of(props);
-      cloud.arrays[a.material].integers[i] = m;
-      cloud.arrays[a.J].reals[i]           = det_F;
-      cloud.arrays[a.volume].reals[i]      = det_F * props[f.initial_volume];
-      cloud.arrays[a.mass].reals[i]        = props[f.mass];
+      cloud.arrays[a.id].integers[i] = p.get_id();
+      // Counted from 1, as the scene's 'Body N' and 'Material N' are.
+      cloud.arrays[a.body].integers[i]     = particles.body_of(props) + 1;
+      cloud.arrays[a.material].integers[i] = m + 1;
+      // The rank that owns the particle's cell owns the particle.
+      cloud.arrays[a.rank].integers[i] =
+        p.get_surrounding_cell()->subdomain_id();
+      cloud.arrays[a.J].reals[i]      = det_F;
+      cloud.arrays[a.volume].reals[i] = det_F * props[f.initial_volume];
+      cloud.arrays[a.mass].reals[i]   = props[f.mass];
     }
 
     /** Point @p i: the extra fields' components. */

@@ -6,7 +6,11 @@
 # with the plane-strain sigma_zz in 2D (nu (sigma_xx + sigma_yy) for the
 # linear elastic disks), symmetric in 3D, the deformation gradient as a
 # 9-component tensor (det F = J, plane strain in 2D), and the materials' internal
-# variables by name.
+# variables by name. Body and material count from 1, as 'Body N' and
+# 'Material N' do, and each particle names its rank (mpi_rank). A 2D
+# Drucker-Prager soil shows its sigma_zz in 'stress' only (it also wrote a
+# separate stress_zz), and an FEM region's stress is the particles' kind
+# of tensor (it was six cell scalars stress_xx ... stress_xz).
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/check_lib.sh"
 export PYTHONPATH="$here"
@@ -22,6 +26,9 @@ export PYTHONPATH="$here"
   -s "Body 2/Lower corner=0.8, 0.8, 0.8" -s "Body 2/Upper corner=0.84, 0.84, 0.84" \
   -s "Body 2/Particles per cell=10" -s "Body 2/Material=1" -s "Output/Particle CSV=true" \
   -s "Output/Progress interval=0" > ids.log 2>&1 || fail "ids run: exit code $?"
+"$dealmpm" "$(dirname "$scene")/pile_in_sand.prm" -s "Output/Directory=pile" \
+  -s "Time/Maximum number of steps=20" -s "Output/Interval=1e-9" -s "Output/Progress interval=0" \
+  > pile.log 2>&1 || fail "pile run: exit code $?"
 "$dealmpm" "$(dirname "$scene")/elastic_column_3d.prm" -s "Output/Directory=column" \
   -s "Time/End time=0.05" -s "Output/Interval=0.05" -s "Output/Progress interval=0" \
   > column.log 2>&1 || fail "3D run: exit code $?"
@@ -36,14 +43,14 @@ def check(condition, what):
         failures.append(what)
 
 def common(folder, counter, dim):
-    v = read_vtu("%s/particles_%05d.0.vtu" % (folder, counter))
+    v = read_vtu("%s/steps/particles_%05d.0.vtu" % (folder, counter))
     a = v["arrays"]
     n = v["n_points"]
     expected = {"id": ("Int64", 1), "body": ("Int32", 1), "material": ("Int32", 1),
                 "velocity": ("Float32", 3), "displacement": ("Float32", 3),
                 "stress": ("Float32", 9), "deformation gradient": ("Float32", 9),
                 "J": ("Float32", 1), "volume": ("Float32", 1),
-                "mass": ("Float32", 1)}
+                "mass": ("Float32", 1), "mpi_rank": ("Int32", 1)}
     if folder != "ids":  # linear elastic
         expected["stress_work"] = ("Float32", 1)
     for name, kind in expected.items():
@@ -52,6 +59,8 @@ def common(folder, counter, dim):
     if any(name not in a for name in expected):
         return v
     check(n > 0 and v["n_cells"] == n, "%s: one cell per point" % folder)
+    check(set(a["material"][2]) == {1}, "%s: material values %s, expected 1 (Material 1)" % (folder, set(a["material"][2])))
+    check(set(a["mpi_rank"][2]) == {0}, "%s: mpi_rank on one rank" % folder)
     check(v["points_declared"] == 3 and len(v["points"]) == 3 * n, "%s: 3D points" % folder)
     cells = v.get("cells", {})
     if "connectivity" not in cells:
@@ -61,7 +70,7 @@ def common(folder, counter, dim):
     check(list(cells["offsets"]) == list(range(1, n + 1)), "%s: offsets" % folder)
     check(set(cells["types"]) == {1}, "%s: VTK_VERTEX cells" % folder)
     check(not check_series(folder, "particles.pvd"), "%s: series" % folder)
-    record = parse_xml("%s/particles_%05d.pvtu" % (folder, counter))
+    record = parse_xml("%s/steps/particles_%05d.pvtu" % (folder, counter))
     declared = declared_arrays(record.find("PUnstructuredGrid/PPointData"))
     check(declared == {k: a[k][:2] for k in a}, "%s: .pvtu arrays differ" % folder)
     # det F is J, and in 2D F is plane strain (F_zz = 1, no z coupling).
@@ -98,7 +107,7 @@ if "stress" in v["arrays"]:
     check(len(s) == 9 * v["n_points"] and max(abs(x) for x in s[8::9]) > 0.1 * largest,
           "disks: sigma_zz is missing")
     # The CSV (text, exact) against the binary file, point by point.
-    rows = {int(r["id"]): r for r in csv.DictReader(open("disks/particles_00001.csv"))}
+    rows = {int(r["id"]): r for r in csv.DictReader(open("disks/steps/particles_00001.csv"))}
     a = v["arrays"]
     for i, pid in enumerate(a["id"][2]):
         r = rows[int(pid)]
@@ -112,11 +121,26 @@ if "stress" in v["arrays"]:
 v = common("ids", 1, 3)
 if "id" in v["arrays"]:
     ids = [int(i) for i in v["arrays"]["id"][2]]
-    csv_ids = [int(r["id"]) for r in csv.DictReader(open("ids/particles_00001.csv"))]
+    csv_ids = [int(r["id"]) for r in csv.DictReader(open("ids/steps/particles_00001.csv"))]
     check(max(ids) > 2**24, "ids: the largest id %d should pass 2^24" % max(ids))
     check(len(set(ids)) == len(ids), "ids: %d of %d ids are unique" % (len(set(ids)), len(ids)))
     check(sorted(ids) == sorted(csv_ids), "ids: not the CSV's ids")
-    check(set(v["arrays"]["body"][2]) == {0, 1}, "ids: body values")
+    check(set(v["arrays"]["body"][2]) == {1, 2}, "ids: body values (from 1, as Body 1 and Body 2)")
+
+# 2D Drucker-Prager sand: sigma_zz (compressive under the sand's weight)
+# only as the stress's zz component. The pile's region: "stress", nine
+# components, point data.
+v = read_vtu("pile/steps/particles_00020.0.vtu")
+check("stress_zz" not in v["arrays"], "pile: the particles still carry stress_zz")
+check("plastic_strain" in v["arrays"], "pile: the soil's internal variables are missing")
+check(min(v["arrays"]["stress"][2][8::9]) < 0, "pile: sigma_zz should be compressive")
+r = read_vtu("pile/steps/fem_region_1_00020.0.vtu")
+check(r["arrays"].get("stress", (0, 0))[:2] == ("Float32", 9) and len(r["arrays"]["stress"][2]) == 9 * r["n_points"],
+      "pile region: stress %s, expected a 9-component point array" % (r["arrays"].get("stress", (None, None))[:2],))
+check(not {"stress_xx", "stress_yy", "stress_xy"} & set(r["arrays"]), "pile region: stress as scalars too")
+# In 2D deal.II pads the 2 x 2 tensor with zeros; sigma_zz is its own field.
+check("stress_zz" in r["arrays"] and max(abs(x) for x in r["arrays"]["stress_zz"][2]) > 0,
+      "pile region: no stress_zz")
 
 # 3D: symmetric tensor, compressed column (sigma_zz < 0).
 v = common("column", 1, 3)
