@@ -16,6 +16,8 @@ with <quantity> one of
     mean <column> after t = T  mean over the output rows from time T on
     mean <column> from t = A to B  mean over the output rows in [A, B]
     steps                      the number of steps to the end
+    cells at end               the grid's cells the closing summary gives
+                               after adaptations ("(N cells now)")
 and <column> any statistics.csv column. The scene must run to its end
 (exit code 0); particle output is switched off for the check.
 """
@@ -59,6 +61,11 @@ with open(os.path.join(folder, "statistics.csv")) as f:
 def measure(quantity):
     if quantity == "steps":
         return rows[-1]["step"]
+    if quantity == "cells at end":
+        cells = re.search(r"\((\d+) cells now\)", run.stdout)
+        if not cells:
+            raise KeyError("the summary names no cells (no adaptation?)")
+        return float(cells.group(1))
     match = re.fullmatch(r"time of max (\w+)", quantity)
     if match:
         return max(rows, key=lambda r: r[match.group(1)])["time"]
