@@ -83,6 +83,8 @@ namespace dealmpm
                 const std::vector<std::string> &overrides)
     {
       std::ofstream out(path);
+      if (!out)
+        return;
       out << scene_as_run_mark << " (every entry, defaults included)\n"
           << "# scene: " << scene_file << "\n";
       for (const std::string &item : overrides)
@@ -104,11 +106,23 @@ namespace dealmpm
     if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0 ||
         run_log.out != nullptr)
       return;
+    // A folder that cannot be made is the output writer's to report, on
+    // every rank at once (an error here, on rank 0 alone, would leave the
+    // others waiting).
     std::error_code error;
     fs::create_directories(folder, error);
+    if (!fs::is_directory(folder, error))
+      return;
     const std::string scene = folder + "/run.prm";
     if (!fs::equivalent(scene, scene_file, error))
-      write_scene(prm, scene, scene_file, overrides);
+      try
+        {
+          write_scene(prm, scene, scene_file, overrides);
+        }
+      catch (const std::exception &)
+        {
+          // A full disk: the output writer says so at its first file.
+        }
     const auto mode = resumed ? std::ios::out | std::ios::app : std::ios::out;
     if (run_log.file.open(folder + "/run.log", mode) == nullptr)
       return;

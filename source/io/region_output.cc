@@ -1,7 +1,4 @@
 #include <deal.II/base/utilities.h>
-#include <deal.II/dofs/dof_handler.h>
-#include <deal.II/fe/fe_dgq.h>
-#include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping_q_eulerian.h>
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/data_out.h>
@@ -14,38 +11,6 @@
 
 namespace dealmpm
 {
-  namespace
-  {
-    /** The cells' mean stress (one per locally owned cell, in order) as
-     * the particles show theirs: one tensor named "stress", point data
-     * constant in each cell (a DG0 field of dim x dim components on
-     * @p dofs), so that one ParaView colour setting serves both. deal.II
-     * writes a 2D tensor padded to 3 x 3 with zeros; 2D regions give their
-     * plane-strain sigma_zz as the cell data @p zz. */
-    template <int dim>
-    Vector<double>
-    stress_tensor_field(const std::vector<SymmetricTensor<2, 3>> &stress,
-                        DoFHandler<dim>                          &dofs,
-                        Vector<float>                            &zz)
-    {
-      dofs.distribute_dofs(FESystem<dim>(FE_DGQ<dim>(0), dim * dim));
-      Vector<double> values(dofs.n_dofs());
-      zz.reinit(dofs.get_triangulation().n_active_cells());
-      std::vector<types::global_dof_index> index(dim * dim);
-      std::size_t                          c = 0;
-      for (const auto &cell : dofs.active_cell_iterators())
-        if (cell->is_locally_owned())
-          {
-            cell->get_dof_indices(index);
-            for (unsigned int k = 0; k < dim * dim; ++k)
-              values[index[k]] = stress[c][k / dim][k % dim];
-            zz[cell->active_cell_index()] = stress[c][2][2];
-            ++c;
-          }
-      return values;
-    }
-  } // namespace
-
   template <int dim>
   std::string
   write_region_output(const SolidRegion<dim> &region,
@@ -63,12 +28,12 @@ namespace dealmpm
     std::vector<double>                von_mises;
     std::vector<std::vector<double>>   internal;
     region.cell_means(stress, von_mises, internal);
-    const unsigned int   n_active = region.get_triangulation().n_active_cells();
-    DoFHandler<dim>      tensor_dofs(region.get_triangulation());
-    Vector<float>        stress_zz;
-    const Vector<double> stress_data =
-      stress_tensor_field(stress, tensor_dofs, stress_zz);
-    Vector<float> von_mises_data(n_active), rank(n_active);
+    const unsigned int n_active = region.get_triangulation().n_active_cells();
+    static const char *names[6] = {"xx", "yy", "zz", "xy", "yz", "xz"};
+    static const std::array<std::array<unsigned int, 2>, 6> index = {
+      {{{0, 0}}, {{1, 1}}, {{2, 2}}, {{0, 1}}, {{1, 2}}, {{0, 2}}}};
+    std::vector<Vector<float>> stress_data(6, Vector<float>(n_active));
+    Vector<float>              von_mises_data(n_active), rank(n_active);
     const std::vector<FieldDescription> fields =
       region.get_material().internal_variables();
     unsigned int n_internal = 0;
@@ -81,8 +46,10 @@ namespace dealmpm
       if (cell->is_locally_owned())
         {
           const unsigned int a = cell->active_cell_index();
-          von_mises_data[a]    = von_mises[c];
-          rank[a]              = cell->subdomain_id();
+          for (unsigned int k = 0; k < 6; ++k)
+            stress_data[k][a] = stress[c][index[k][0]][index[k][1]];
+          von_mises_data[a] = von_mises[c];
+          rank[a]           = cell->subdomain_id();
           for (unsigned int j = 0; j < n_internal; ++j)
             internal_data[j][a] = internal[c][j];
           ++c;
@@ -100,15 +67,9 @@ namespace dealmpm
                              std::vector<std::string>(dim, "velocity"),
                              DataOut<dim>::type_dof_data,
                              vector);
-    data_out.add_data_vector(
-      tensor_dofs,
-      stress_data,
-      std::vector<std::string>(dim * dim, "stress"),
-      std::vector<DataComponentInterpretation::DataComponentInterpretation>(
-        dim * dim, DataComponentInterpretation::component_is_part_of_tensor));
-    if (dim == 2)
-      data_out.add_data_vector(stress_zz,
-                               "stress_zz",
+    for (unsigned int k = 0; k < 6; ++k)
+      data_out.add_data_vector(stress_data[k],
+                               std::string("stress_") + names[k],
                                DataOut<dim>::type_cell_data);
     data_out.add_data_vector(von_mises_data,
                              "von_mises",

@@ -36,7 +36,7 @@ PY
 check_stop() {
   [ "$code" = 5 ] || fail "exit code $code, expected 5"
   [ "$(wc -l < err.txt)" = 1 ] || fail "expected one line on stderr, got: $(cat err.txt)"
-  grep -Eq "^dealmpm: output error: cannot write $1/[a-z_0-9.]+: $2" err.txt \
+  grep -Eq "^dealmpm: output error: cannot write $1/(steps/)?[a-z_0-9.]+: $2" err.txt \
     || fail "message: $(cat err.txt)"
   consistent "$1" || fail "inconsistent output"
 }

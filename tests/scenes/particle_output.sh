@@ -9,8 +9,7 @@
 # variables by name. Body and material count from 1, as 'Body N' and
 # 'Material N' do, and each particle names its rank (mpi_rank). A 2D
 # Drucker-Prager soil shows its sigma_zz in 'stress' only (it also wrote a
-# separate stress_zz), and an FEM region's stress is the particles' kind
-# of tensor (it was six cell scalars stress_xx ... stress_xz).
+# separate stress_zz).
 here=$(cd "$(dirname "$0")" && pwd)
 source "$here/check_lib.sh"
 export PYTHONPATH="$here"
@@ -128,19 +127,11 @@ if "id" in v["arrays"]:
     check(set(v["arrays"]["body"][2]) == {1, 2}, "ids: body values (from 1, as Body 1 and Body 2)")
 
 # 2D Drucker-Prager sand: sigma_zz (compressive under the sand's weight)
-# only as the stress's zz component. The pile's region: "stress", nine
-# components, point data.
+# only as the stress's zz component.
 v = read_vtu("pile/steps/particles_00020.0.vtu")
 check("stress_zz" not in v["arrays"], "pile: the particles still carry stress_zz")
 check("plastic_strain" in v["arrays"], "pile: the soil's internal variables are missing")
 check(min(v["arrays"]["stress"][2][8::9]) < 0, "pile: sigma_zz should be compressive")
-r = read_vtu("pile/steps/fem_region_1_00020.0.vtu")
-check(r["arrays"].get("stress", (0, 0))[:2] == ("Float32", 9) and len(r["arrays"]["stress"][2]) == 9 * r["n_points"],
-      "pile region: stress %s, expected a 9-component point array" % (r["arrays"].get("stress", (None, None))[:2],))
-check(not {"stress_xx", "stress_yy", "stress_xy"} & set(r["arrays"]), "pile region: stress as scalars too")
-# In 2D deal.II pads the 2 x 2 tensor with zeros; sigma_zz is its own field.
-check("stress_zz" in r["arrays"] and max(abs(x) for x in r["arrays"]["stress_zz"][2]) > 0,
-      "pile region: no stress_zz")
 
 # 3D: symmetric tensor, compressed column (sigma_zz < 0).
 v = common("column", 1, 3)
