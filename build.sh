@@ -51,7 +51,7 @@ if [ "$mode" = run ]; then
   say "building the library and the program on $jobs cores (the first time about 23 minutes on 2 cores; later only what changed)"
   cmake --build build -j "$jobs" --target dealmpm_program
 else
-  say "building the library, the program, the examples and the tests on $jobs cores (the first time about 45 minutes on 2 cores; later only what changed)"
+  say "building the library, the program, the examples and the tests on $jobs cores (the first time about 40 minutes on 2 cores; later only what changed)"
   # The build prints no compiler warning: the suite (and CI) fails on one.
   cmake --build build -j "$jobs" 2>&1 | tee build/build.log
   if grep -q "warning:" build/build.log; then
