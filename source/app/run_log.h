@@ -9,7 +9,7 @@ namespace dealmpm
 {
   using namespace dealii;
 
-  /** The first line of a scene that write_scene_as_run() wrote: such a
+  /** The first line of the run.prm that start_run_files() writes: such a
    * scene sets every entry, those of unused sections too, on purpose. */
   inline const std::string scene_as_run_mark = "# dealmpm: the scene as it ran";
 
@@ -21,8 +21,8 @@ namespace dealmpm
    *   command line's @p overrides included, which `dealmpm run.prm` runs
    *   again (not when @p scene_file is that file itself);
    * - run.log: from now on, a copy of everything the program prints on
-   *   standard output and error (appended to on a resumed run, with a line
-   *   that says so), until the program ends.
+   *   standard output and error (a resumed run appends, after a blank
+   *   line), until the program ends.
    */
   void
   start_run_files(const ParameterHandler         &prm,
