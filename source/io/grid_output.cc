@@ -8,6 +8,7 @@
 
 #include <dealmpm/io/grid_output.h>
 #include <dealmpm/io/output_file.h>
+#include <dealmpm/io/output_folder.h>
 
 #include <cerrno>
 #include <cstdio>
@@ -124,7 +125,7 @@ namespace dealmpm
         problem = "output file " + path + ": " + std::strerror(errno);
       agree_on_output_error(problem, "", comm);
       std::string grid =
-        data_out.create_xdmf_entry(filter, name, time, comm)
+        data_out.create_xdmf_entry(filter, step_folder + "/" + name, time, comm)
           .get_xdmf_content(3, ReferenceCells::get_hypercube<dim>());
       // deal.II writes the time with 6 digits: not enough to tell apart
       // outputs a step apart, nor to match the particles' series.

@@ -7,6 +7,8 @@
 #include <hdf5.h>
 #include <iomanip>
 #include <sstream>
+#include <stdexcept>
+#include <vector>
 
 namespace dealmpm
 {
@@ -68,6 +70,36 @@ namespace dealmpm
             return "Tensor6";
         }
       return "Matrix";
+    }
+
+    /** XDMF's topology of a VTK cell type. */
+    const char *
+    topology_type(const std::uint8_t vtk_type)
+    {
+      switch (vtk_type)
+        {
+          case 5:
+            return "Triangle";
+          case 9:
+            return "Quadrilateral";
+          case 12:
+            return "Hexahedron";
+          case 13:
+            return "Wedge";
+        }
+      throw std::logic_error("no XDMF topology for VTK cell type " +
+                             std::to_string(vtk_type));
+    }
+
+    /** The /cells rows of this rank: its connectivity, shifted past the
+     * points of the ranks before it. */
+    std::vector<std::int64_t>
+    shifted_cells(const VtuPointCloud &cloud, const std::int64_t offset)
+    {
+      std::vector<std::int64_t> cells = cloud.connectivity;
+      for (std::int64_t &i : cells)
+        i += offset;
+      return cells;
     }
 
     /** The HDF5 calls of one file on every rank, each call made on every
@@ -162,28 +194,92 @@ namespace dealmpm
     };
   } // namespace
 
+  namespace
+  {
+    /** A rank's rows of a dataset of all ranks: how many in all, where its
+     * own start and how many it has. */
+    struct Rows
+    {
+      hsize_t total, offset, n;
+    };
+
+    /** Collective: the rows when this rank has @p n of them, in rank
+     * order. */
+    Rows
+    rows_of(const unsigned long long n, const MPI_Comm comm)
+    {
+      unsigned long long before = 0;
+      MPI_Exscan(&n, &before, 1, MPI_UNSIGNED_LONG_LONG, MPI_SUM, comm);
+      if (Utilities::MPI::this_mpi_process(comm) == 0)
+        before = 0; // MPI leaves rank 0's undefined
+      return {Utilities::MPI::sum(n, comm), before, n};
+    }
+
+    /** The XDMF Grid element of a file @p name written by
+     * Hdf5PointCloud::write(). */
+    std::string
+    xdmf_grid(const VtuPointCloud &cloud,
+              const std::string   &name,
+              const std::string   &grid_name,
+              const double         time,
+              const Rows          &points,
+              const Rows          &cells)
+    {
+      const hsize_t      total = points.total;
+      std::ostringstream grid;
+      grid << std::setprecision(17);
+      grid << "   <Grid Name=\"" << xml_escaped(grid_name)
+           << "\" GridType=\"Uniform\">\n"
+           << "    <Time Value=\"" << time << "\"/>\n"
+           << "    <Geometry GeometryType=\"XYZ\">\n"
+           << "     <DataItem Dimensions=\"" << total
+           << " 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">"
+           << xml_escaped(name) << ":/points</DataItem>\n"
+           << "    </Geometry>\n";
+      if (cloud.cell_type != 1)
+        grid << "    <Topology TopologyType=\""
+             << topology_type(cloud.cell_type) << "\" NumberOfElements=\""
+             << cells.total << "\">\n"
+             << "     <DataItem Dimensions=\"" << cells.total << " "
+             << cloud.points_per_cell
+             << "\" NumberType=\"Int\" Precision=\"8\" Format=\"HDF\">"
+             << xml_escaped(name) << ":/cells</DataItem>\n"
+             << "    </Topology>\n";
+      else
+        grid << "    <Topology TopologyType=\"Polyvertex\" NumberOfElements=\""
+             << total << "\" NodesPerElement=\"1\"/>\n";
+      for (const VtuArray &a : cloud.arrays)
+        grid << "    <Attribute Name=\"" << xml_escaped(a.name)
+             << "\" AttributeType=\"" << attribute_type(a.n_components)
+             << "\" Center=\"Node\">\n"
+             << "     <DataItem Dimensions=\"" << total << " " << a.n_components
+             << "\" " << xdmf_type(a.type) << " Format=\"HDF\">"
+             << xml_escaped(name) << ":/" << xml_escaped(a.name)
+             << "</DataItem>\n"
+             << "    </Attribute>\n";
+      grid << "   </Grid>\n";
+      return grid.str();
+    }
+  } // namespace
+
   std::string
   Hdf5PointCloud::write(const VtuPointCloud &cloud,
                         const std::string   &path,
                         const std::string   &name,
                         const double         time,
-                        const MPI_Comm       comm)
+                        const MPI_Comm       comm,
+                        const std::string   &grid_name)
   {
-    // This rank's first row: the points of the ranks before it.
-    unsigned long long n = cloud.n_points(), before = 0;
-    MPI_Exscan(&n, &before, 1, MPI_UNSIGNED_LONG_LONG, MPI_SUM, comm);
-    const hsize_t offset =
-      Utilities::MPI::this_mpi_process(comm) == 0 ? 0 : before;
-    const hsize_t     total     = Utilities::MPI::sum(n, comm);
+    const Rows        points    = rows_of(cloud.n_points(), comm);
     const std::string temporary = path + ".tmp";
     ParallelFile      file(temporary, comm);
     file.write("points",
                H5T_IEEE_F64LE,
                H5T_NATIVE_DOUBLE,
                cloud.points.data(),
-               total,
-               offset,
-               n,
+               points.total,
+               points.offset,
+               points.n,
                3);
     for (const VtuArray &a : cloud.arrays)
       {
@@ -194,38 +290,31 @@ namespace dealmpm
                    integers ? H5T_NATIVE_INT64 : H5T_NATIVE_DOUBLE,
                    integers ? static_cast<const void *>(a.integers.data()) :
                               static_cast<const void *>(a.reals.data()),
-                   total,
-                   offset,
-                   n,
+                   points.total,
+                   points.offset,
+                   points.n,
                    a.n_components);
       }
+    // Cells or not is the same on every rank (cell_type), also on one
+    // without points.
+    const bool has_cells = cloud.cell_type != 1;
+    const Rows cells =
+      rows_of(has_cells ? cloud.connectivity.size() / cloud.points_per_cell : 0,
+              comm);
+    if (has_cells)
+      file.write("cells",
+                 H5T_STD_I64LE,
+                 H5T_NATIVE_INT64,
+                 shifted_cells(cloud, points.offset).data(),
+                 cells.total,
+                 cells.offset,
+                 cells.n,
+                 cloud.points_per_cell);
     std::string problem = file.close();
     if (problem.empty() && Utilities::MPI::this_mpi_process(comm) == 0 &&
         std::rename(temporary.c_str(), path.c_str()) != 0)
       problem = "output file " + path + ": " + std::strerror(errno);
     agree_on_output_error(problem, "", comm);
-
-    std::ostringstream grid;
-    grid << std::setprecision(17);
-    grid << "   <Grid Name=\"particles\" GridType=\"Uniform\">\n"
-         << "    <Time Value=\"" << time << "\"/>\n"
-         << "    <Geometry GeometryType=\"XYZ\">\n"
-         << "     <DataItem Dimensions=\"" << total
-         << " 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">"
-         << xml_escaped(name) << ":/points</DataItem>\n"
-         << "    </Geometry>\n"
-         << "    <Topology TopologyType=\"Polyvertex\" NumberOfElements=\""
-         << total << "\" NodesPerElement=\"1\"/>\n";
-    for (const VtuArray &a : cloud.arrays)
-      grid << "    <Attribute Name=\"" << xml_escaped(a.name)
-           << "\" AttributeType=\"" << attribute_type(a.n_components)
-           << "\" Center=\"Node\">\n"
-           << "     <DataItem Dimensions=\"" << total << " " << a.n_components
-           << "\" " << xdmf_type(a.type) << " Format=\"HDF\">"
-           << xml_escaped(name) << ":/" << xml_escaped(a.name)
-           << "</DataItem>\n"
-           << "    </Attribute>\n";
-    grid << "   </Grid>\n";
-    return grid.str();
+    return xdmf_grid(cloud, name, grid_name, time, points, cells);
   }
 } // namespace dealmpm

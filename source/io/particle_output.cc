@@ -2,6 +2,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <dealmpm/io/hdf5_points.h>
+#include <dealmpm/io/output_folder.h>
 #include <dealmpm/io/particle_output.h>
 
 namespace dealmpm
@@ -159,20 +160,12 @@ namespace dealmpm
   {
     const std::string base =
       "particles_" + Utilities::int_to_string(counter, 5);
-    const auto piece = [&](const unsigned int rank) {
-      return base + "." + Utilities::int_to_string(rank) + ".vtu";
-    };
-    cloud.write_vtu(directory + "/" +
-                      piece(Utilities::MPI::this_mpi_process(comm)),
-                    zlib);
-    if (Utilities::MPI::this_mpi_process(comm) == 0)
-      {
-        std::vector<std::string> pieces;
-        for (unsigned int r = 0; r < Utilities::MPI::n_mpi_processes(comm); ++r)
-          pieces.push_back(piece(r));
-        cloud.write_pvtu(directory + "/" + base + ".pvtu", pieces);
-      }
-    return base + ".pvtu";
+    return write_vtu_pieces(cloud,
+                            directory,
+                            base,
+                            Utilities::MPI::this_mpi_process(comm),
+                            Utilities::MPI::n_mpi_processes(comm),
+                            zlib);
   }
 
   template <int dim>
@@ -185,7 +178,7 @@ namespace dealmpm
     const std::string name =
       "particles_" + Utilities::int_to_string(counter, 5) + ".h5";
     return Hdf5PointCloud::write(
-      cloud, directory + "/" + name, name, time, comm);
+      cloud, directory + "/" + name, step_folder + "/" + name, time, comm);
   }
 
   template class ParticleOutput<2>;

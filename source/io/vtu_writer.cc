@@ -199,14 +199,22 @@ namespace dealmpm
             break;
         }
     bytes(points);
-    // Cell i is the vertex of point i: connectivity i, end offset i + 1,
-    // type VTK_VERTEX (1).
-    std::vector<std::int64_t> indices(n_points());
-    std::iota(indices.begin(), indices.end(), std::int64_t(0));
-    bytes(indices);
-    std::iota(indices.begin(), indices.end(), std::int64_t(1));
-    bytes(indices);
-    bytes(std::vector<std::uint8_t>(n_points(), 1));
+    // Without connectivity, cell i is the vertex of point i: connectivity
+    // i, end offset i + 1, type VTK_VERTEX (1).
+    std::vector<std::int64_t> ends(n_cells());
+    for (std::size_t c = 0; c < ends.size(); ++c)
+      ends[c] = (c + 1) * (connectivity.empty() ? 1 : points_per_cell);
+    if (connectivity.empty())
+      {
+        std::vector<std::int64_t> indices(n_points());
+        std::iota(indices.begin(), indices.end(), std::int64_t(0));
+        bytes(indices);
+      }
+    else
+      bytes(connectivity);
+    bytes(ends);
+    bytes(std::vector<std::uint8_t>(n_cells(),
+                                    connectivity.empty() ? 1 : cell_type));
   }
 
   void
@@ -222,6 +230,10 @@ namespace dealmpm
                                  "' does not have one value per point and "
                                  "component");
       }
+    for (const std::int64_t i : connectivity)
+      if (i < 0 || static_cast<std::size_t>(i) >= n ||
+          connectivity.size() % points_per_cell != 0)
+        throw std::logic_error("VTU cells that name no point of the piece");
 
     // Each block's size in the file: raw, known from the counts; zlib,
     // known once compressed (the compressed blocks are kept until written).
@@ -236,11 +248,12 @@ namespace dealmpm
       {
         for (const VtuArray &a : arrays)
           file_bytes.push_back(n * a.n_components * type_size(a.type));
-        for (const std::size_t per_point : {3 * sizeof(double),
-                                            sizeof(std::int64_t),
-                                            sizeof(std::int64_t),
-                                            sizeof(std::uint8_t)})
-          file_bytes.push_back(n * per_point);
+        const std::size_t n_indices =
+          connectivity.empty() ? n : connectivity.size();
+        file_bytes.push_back(n * 3 * sizeof(double));
+        file_bytes.push_back(n_indices * sizeof(std::int64_t));
+        file_bytes.push_back(n_cells() * sizeof(std::int64_t));
+        file_bytes.push_back(n_cells() * sizeof(std::uint8_t));
         for (std::size_t &b : file_bytes)
           b += sizeof(std::uint64_t);
       }
@@ -268,7 +281,8 @@ namespace dealmpm
     const auto  offset = [&] { return blocks.add(file_bytes.at(next++)); };
     std::string xml    = file_header("UnstructuredGrid", zlib);
     xml += "  <UnstructuredGrid>\n    <Piece NumberOfPoints=\"" + n +
-           "\" NumberOfCells=\"" + n + "\">\n      <PointData>\n";
+           "\" NumberOfCells=\"" + std::to_string(n_cells()) +
+           "\">\n      <PointData>\n";
     for (const VtuArray &a : arrays)
       xml += "        <DataArray " +
              array_attributes(a.name, a.type, a.n_components) + offset() +
@@ -304,5 +318,27 @@ namespace dealmpm
     OutputFile file(path);
     file.write(xml);
     file.commit();
+  }
+
+  std::string
+  write_vtu_pieces(const VtuPointCloud &cloud,
+                   const std::string   &directory,
+                   const std::string   &base,
+                   const unsigned int   rank,
+                   const unsigned int   n_ranks,
+                   const bool           zlib)
+  {
+    const auto piece = [&](const unsigned int r) {
+      return base + "." + std::to_string(r) + ".vtu";
+    };
+    cloud.write_vtu(directory + "/" + piece(rank), zlib);
+    if (rank == 0)
+      {
+        std::vector<std::string> pieces;
+        for (unsigned int r = 0; r < n_ranks; ++r)
+          pieces.push_back(piece(r));
+        cloud.write_pvtu(directory + "/" + base + ".pvtu", pieces);
+      }
+    return base + ".pvtu";
   }
 } // namespace dealmpm

@@ -19,7 +19,7 @@ def outputs(reader):
         merged.UpdatePipeline(t)
         data = dsa.WrapDataObject(servermanager.Fetch(merged))
         arrays = {k: np.array(data.PointData[k]) for k in data.PointData.keys()}
-        yield t, np.array(data.Points), arrays
+        yield t, np.array(data.Points), arrays, data.GetNumberOfCells()
 
 
 def stop(text):
@@ -37,9 +37,9 @@ for name in names:
     times_v, times_h = list(pvd.TimestepValues), list(xdmf.TimestepValues)
     if len(times_v) != len(times_h) or not np.allclose(times_v, times_h, rtol=1e-12):
         stop("%s: times %s and %s" % (name, times_v, times_h))
-    for (t, pv, av), (_, ph, ah) in zip(outputs(pvd), outputs(xdmf)):
-        if pv.shape != ph.shape:
-            stop("%s at t = %g: %s points and %s" % (name, t, pv.shape, ph.shape))
+    for (t, pv, av, cv), (_, ph, ah, ch) in zip(outputs(pvd), outputs(xdmf)):
+        if pv.shape != ph.shape or cv != ch:
+            stop("%s at t = %g: %s points and %s, %d cells and %d" % (name, t, pv.shape, ph.shape, cv, ch))
         if name == "particles":
             # The same particles with the same values, bit for bit.
             ov, oh = np.argsort(av["id"]), np.argsort(ah["id"])
@@ -51,7 +51,8 @@ for name in names:
                 if k not in ah or not np.array_equal(av[k][ov], ah[k][oh]):
                     stop("particles at t = %g: array %s differs or is missing" % (t, k))
         else:
-            # deal.II's .vtu stores Float32, its .h5 doubles.
+            # The same cells and values (the grid's .vtu, written by
+            # deal.II, stores Float32 and its .h5 doubles).
             for k in av:
                 if k not in ah:
                     stop("%s: array %s missing" % (name, k))

@@ -97,6 +97,20 @@ def read_vtu(path):
 
     def values(a):
         vtk_type = a.get("type")
+        if a.get("format") == "appended" and compressed:
+            # (n_blocks, block size, last block size, compressed sizes),
+            # then the blocks.
+            start = appended + int(a.get("offset"))
+            code = "<" + TYPES[header_type]
+            (n_blocks,) = struct.unpack(code, data[start:start + header_size])
+            sizes = struct.unpack("<" + TYPES[header_type] * (3 + n_blocks),
+                                  data[start:start + (3 + n_blocks) * header_size])
+            start += (3 + n_blocks) * header_size
+            raw = b""
+            for size in sizes[3:]:
+                raw += zlib.decompress(data[start:start + size])
+                start += size
+            return _values(raw, vtk_type)
         if a.get("format") == "appended":
             start = appended + int(a.get("offset"))
             (n_bytes,) = struct.unpack(
@@ -132,6 +146,8 @@ def check_series(folder, pvd):
         record = os.path.join(folder, name)
         if not os.path.isfile(record):
             problems.append("missing " + name)
+            continue
+        if record.endswith(".vtu"):  # one piece (a rigid body)
             continue
         # A .pvtu names its pieces relative to its own folder.
         for piece in pvtu_pieces(record):

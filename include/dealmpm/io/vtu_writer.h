@@ -35,7 +35,8 @@ namespace dealmpm
   };
 
   /**
-   * One rank's piece of a point cloud as a VTK XML UnstructuredGrid, and the
+   * One rank's piece of a point cloud (or of a mesh: see connectivity) as
+   * a VTK XML UnstructuredGrid, and the
    * .pvtu record over all pieces. We write it ourselves because deal.II's
    * writer stores every field as Float32, which cannot tell particle ids
    * past 2^24 apart. Points are Float64 (x, y, z; z = 0 in 2D), each point
@@ -66,6 +67,15 @@ namespace dealmpm
       return points.size() / 3;
     }
 
+    /** Its cells: those of @p connectivity, or one VTK_VERTEX per point
+     * when that is empty. */
+    std::size_t
+    n_cells() const
+    {
+      return connectivity.empty() ? n_points() :
+                                    connectivity.size() / points_per_cell;
+    }
+
     /** Write this piece to @p path, each array compressed with zlib if
      * @p zlib (VTK's vtkZLibDataCompressor, one block per array). */
     void
@@ -82,6 +92,15 @@ namespace dealmpm
 
     std::vector<VtuArray> arrays;
 
+    /** Cells of one VTK type (an FEM region's quads or hexahedra, a rigid
+     * body's outline), @p points_per_cell point indices each, cell after
+     * cell; empty: each point is a cell of its own (VTK_VERTEX). The type
+     * and count are the same in every rank's piece, also in one without
+     * points. */
+    std::uint8_t              cell_type       = 1;
+    unsigned int              points_per_cell = 1;
+    std::vector<std::int64_t> connectivity;
+
   private:
     /** Call @p block(data, n_bytes) for each appended block in file order:
      * the arrays, the points, the cells' connectivity, offsets and
@@ -95,4 +114,15 @@ namespace dealmpm
     header_xml(const std::vector<std::size_t> &file_bytes,
                const bool                      zlib) const;
   };
+
+  /** This rank's piece <base>.<rank>.vtu of @p cloud in @p directory and,
+   * on rank 0 of @p n_ranks, the record <base>.pvtu that lists every
+   * rank's piece; returns the record's name. */
+  std::string
+  write_vtu_pieces(const VtuPointCloud &cloud,
+                   const std::string   &directory,
+                   const std::string   &base,
+                   const unsigned int   rank,
+                   const unsigned int   n_ranks,
+                   const bool           zlib);
 } // namespace dealmpm
