@@ -88,9 +88,13 @@ namespace dealmpm
                                 const double      work,
                                 const Progress   &progress)
   {
-    TimerOutput::Scope t(*computing_timer, "output");
+    TimerOutput::Scope          t(*computing_timer, "output");
+    std::vector<DrawnBody<dim>> bodies;
+    for (const auto &effect : effects)
+      for (DrawnBody<dim> &body : effect->drawn_bodies(grid.bounding_box))
+        bodies.push_back(std::move(body));
     output_writer.write(
-      {*particles, materials, grid, nodal.core, regions.list()},
+      {*particles, materials, grid, nodal.core, regions.list(), bodies},
       loop.time,
       loop.step,
       loop.output,
@@ -249,7 +253,6 @@ namespace dealmpm
         if (s.output.write_grid)
           map_particles_for_grid_output();
         loop.accuracy.start(initial, load_energy_floor(initial, effects, grid));
-        loop.initial_mass = initial.mass;
         write_output(0., initial, 0., progress);
         loop.next_output = s.output.interval;
       }

@@ -83,6 +83,142 @@ namespace dealmpm
       }
   }
 
+  namespace
+  {
+    /** The corners of the box [lower, upper] in VTK's order of a quad or
+     * hexahedron (counter-clockwise in x-y, then the same at upper z). */
+    template <int dim>
+    std::vector<Point<dim>>
+    box_corners(const Point<dim> &lower, const Point<dim> &upper)
+    {
+      static const unsigned int x_upper[4] = {0, 1, 1, 0},
+                                y_upper[4] = {0, 0, 1, 1};
+      std::vector<Point<dim>> corners;
+      for (unsigned int k = 0; k < (dim == 3 ? 2u : 1u); ++k)
+        for (unsigned int c = 0; c < 4; ++c)
+          {
+            Point<dim> p = lower;
+            p[0]         = x_upper[c] ? upper[0] : lower[0];
+            p[1]         = y_upper[c] ? upper[1] : lower[1];
+            if (dim == 3)
+              p[dim - 1] = k ? upper[dim - 1] : lower[dim - 1];
+            corners.push_back(p);
+          }
+      return corners;
+    }
+
+    /** A disk (2D, triangles around its centre) or a cylinder along z
+     * from @p grid_box's bottom to its top (3D, wedges), of @p n sides. */
+    template <int dim>
+    void
+    draw_cylinder(const Point<dim>       &centre,
+                  const double            radius,
+                  const BoundingBox<dim> &grid_box,
+                  DrawnBody<dim>         &body)
+    {
+      const unsigned int n = 64;
+      for (unsigned int k = 0; k < (dim == 3 ? 2u : 1u); ++k)
+        {
+          Point<dim> c = centre;
+          if (dim == 3)
+            c[dim - 1] = (k ? grid_box.get_boundary_points().second :
+                              grid_box.get_boundary_points().first)[dim - 1];
+          body.points.push_back(c);
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              Point<dim>   p     = c;
+              const double angle = 2 * numbers::PI * i / n;
+              p[0] += radius * std::cos(angle);
+              p[1] += radius * std::sin(angle);
+              body.points.push_back(p);
+            }
+        }
+      body.cell_type =
+        dim == 2 ? DrawnBody<dim>::triangle : DrawnBody<dim>::wedge;
+      for (unsigned int i = 0; i < n; ++i)
+        for (unsigned int k = 0; k < (dim == 3 ? 2u : 1u); ++k)
+          {
+            const unsigned int centre = k * (n + 1), next = (i + 1) % n;
+            // Counter-clockwise in 2D; a wedge's first triangle faces away
+            // from its second (VTK's rule).
+            for (const unsigned int v :
+                 {0u, 1 + (dim == 2 ? i : next), 1 + (dim == 2 ? next : i)})
+              body.connectivity.push_back(centre + v);
+          }
+    }
+
+    /** A half-space as a slab behind its face through @p point with
+     * outward unit @p normal, centred on @p grid_box's centre. */
+    template <int dim>
+    void
+    draw_half_space(const Point<dim>       &point,
+                    const Tensor<1, dim>   &normal,
+                    const BoundingBox<dim> &grid_box,
+                    DrawnBody<dim>         &body)
+    {
+      const auto  &corners  = grid_box.get_boundary_points();
+      const double diagonal = corners.first.distance(corners.second);
+      Point<dim>   centre   = grid_box.center();
+      centre -= ((centre - point) * normal) * normal;
+      // Directions along the face.
+      std::array<Tensor<1, dim>, dim - 1> along;
+      along[0][0] = -normal[1];
+      along[0][1] = normal[0];
+      if constexpr (dim == 3)
+        {
+          Tensor<1, dim> e; // the axis least parallel to the normal
+          unsigned int   axis = 0;
+          for (unsigned int d = 1; d < dim; ++d)
+            if (std::abs(normal[d]) < std::abs(normal[axis]))
+              axis = d;
+          e[axis]  = 1.;
+          along[0] = e - (e * normal) * normal;
+          along[0] /= along[0].norm();
+          along[dim - 2] = cross_product_3d(normal, along[0]);
+        }
+      static const double s[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+      for (const double depth : {0.1 * diagonal, 0.})
+        for (unsigned int c = 0; c < (dim == 2 ? 2u : 4u); ++c)
+          {
+            Point<dim> p = centre - depth * normal;
+            for (unsigned int a = 0; a < dim - 1; ++a)
+              p += 0.5 * diagonal *
+                   s[dim == 2 ? (depth > 0 ? c : 1 - c) : c][a] * along[a];
+            body.points.push_back(p);
+          }
+      body.cell_type =
+        dim == 2 ? DrawnBody<dim>::quad : DrawnBody<dim>::hexahedron;
+    }
+  } // namespace
+
+  template <int dim>
+  DrawnBody<dim>
+  RigidShape<dim>::drawn(const Tensor<1, dim>   &shift,
+                         const BoundingBox<dim> &grid_box) const
+  {
+    DrawnBody<dim> body;
+    switch (kind)
+      {
+        case Kind::box:
+          body.points = box_corners(lower, upper);
+          body.cell_type =
+            dim == 2 ? DrawnBody<dim>::quad : DrawnBody<dim>::hexahedron;
+          break;
+        case Kind::cylinder:
+          draw_cylinder(centre, radius, grid_box, body);
+          break;
+        case Kind::half_space:
+        default:
+          draw_half_space(centre, face_normal, grid_box, body);
+      }
+    if (body.connectivity.empty()) // one cell of all points
+      for (unsigned int i = 0; i < body.points.size(); ++i)
+        body.connectivity.push_back(i);
+    for (Point<dim> &p : body.points)
+      p += shift;
+    return body;
+  }
+
   template <int dim>
   RigidBody<dim>::RigidBody(const Settings &settings, const SceneReader &reader)
     : settings(settings)

@@ -12,7 +12,8 @@ namespace dealmpm
   is_run_output_file(const std::string &file_name)
   {
     static const std::regex pattern(
-      "(((particles|grid|fem_region_[0-9]+)_[0-9]+(\\.[0-9]+)?\\.(vtu|pvtu|h5))|"
+      "(((particles|grid|fem_region_[0-9]+|rigid_body_[0-9]+)_[0-9]+(\\.[0-9]+)?"
+      "\\.(vtu|pvtu|h5))|"
       "particles_[0-9]+\\.csv|statistics\\.csv|.+\\.(pvd|xdmf))(\\.tmp)?");
     return std::regex_match(file_name, pattern);
   }
@@ -78,7 +79,7 @@ namespace dealmpm
   {
     namespace fs = std::filesystem;
     static const std::regex numbered(
-      "(particles|grid|fem_region_[0-9]+)_([0-9]+)\\..*");
+      "(particles|grid|fem_region_[0-9]+|rigid_body_[0-9]+)_([0-9]+)\\..*");
     std::vector<fs::path> later;
     for (const fs::path &file : run_output_files(directory))
       {

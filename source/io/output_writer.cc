@@ -8,7 +8,6 @@
 #include <dealmpm/io/particle_csv.h>
 #include <dealmpm/io/region_output.h>
 
-#include <cctype>
 #include <filesystem>
 #include <iomanip>
 #include <sstream>
@@ -59,31 +58,19 @@ namespace dealmpm
     struct StepFiles
     {
       std::string              particles, grid;
-      std::vector<std::string> regions;
+      std::vector<std::string> regions, bodies;
     };
 
     /** A series entry of a file in the step_folder, as the series at the
-     * folder's top refers to it: a .pvd entry (a file name) or an XDMF Grid
-     * element (whose DataItems name "file.h5:/dataset"). */
+     * folder's top refers to it: a .pvd entry is the file's name, which
+     * gets the folder; an XDMF Grid element names its "file.h5:/dataset"s
+     * from the top already (the writers know the step_folder). */
     std::string
     from_series_folder(const std::string &entry)
     {
-      const std::string prefix = step_folder + "/";
-      if (entry.find("<Grid") == std::string::npos)
-        return prefix + entry;
-      std::string       out = entry;
-      const std::string h5  = ".h5:/";
-      for (std::size_t at = out.find(h5); at != std::string::npos;
-           at             = out.find(h5, at + prefix.size() + h5.size()))
-        {
-                      // The file name starts after the '>' or the white space before it.
-          std::size_t name = at;
-          while (name > 0 && out[name - 1] != '>' &&
-                 !std::isspace(static_cast<unsigned char>(out[name - 1])))
-            --name;
-          out.insert(name, prefix);
-        }
-      return out;
+      if (entry.find("<Grid") != std::string::npos)
+        return entry;
+      return step_folder + "/" + entry;
     }
 
     /** Adds the step's files at @p time to the @p record's series and
@@ -110,6 +97,12 @@ namespace dealmpm
             time,
             from_series_folder(files.regions[r]),
             dir + "fem_region_" + std::to_string(r + 1) + ext);
+      record.body_series.resize(files.bodies.size());
+      for (unsigned int b = 0; b < files.bodies.size(); ++b)
+        record.body_series[b].add_and_write(time,
+                                            from_series_folder(files.bodies[b]),
+                                            dir + "rigid_body_" +
+                                              std::to_string(b + 1) + ext);
     }
 
     /** Writes the files of output @p counter that the @p settings ask for,
@@ -154,6 +147,18 @@ namespace dealmpm
                                 format,
                                 time);
         });
+      files.bodies.resize(scene.bodies.size());
+      for (unsigned int b = 0; b < scene.bodies.size(); ++b)
+        attempt([&] {
+          files.bodies[b] =
+            write_drawn_body(scene.bodies[b],
+                             dir,
+                             "rigid_body_" + std::to_string(b + 1) + "_" +
+                               Utilities::int_to_string(counter, 5),
+                             format,
+                             time,
+                             comm);
+        });
       if (settings.write_particle_csv)
         attempt([&] {
           std::ostringstream name;
@@ -185,6 +190,8 @@ namespace dealmpm
       std::vector<const OutputSeries *> series = {&resumed.particle_series,
                                                   &resumed.grid_series};
       for (const OutputSeries &s : resumed.region_series)
+        series.push_back(&s);
+      for (const OutputSeries &s : resumed.body_series)
         series.push_back(&s);
       const bool hdf5 = settings.format == OutputFormat::hdf5;
       for (const OutputSeries *s : series)
@@ -242,6 +249,10 @@ namespace dealmpm
                     if (!resumed->region_series[r].empty())
                       resumed->region_series[r].write(
                         dir + "/fem_region_" + std::to_string(r + 1) + ext);
+                  for (unsigned int b = 0; b < resumed->body_series.size(); ++b)
+                    if (!resumed->body_series[b].empty())
+                      resumed->body_series[b].write(
+                        dir + "/rigid_body_" + std::to_string(b + 1) + ext);
                   n_removed       = remove_later_output(dir, resumed->counter);
                   statistics_file = std::make_unique<StatisticsFile>(
                     dir + "/statistics.csv", dim, first, resumed->last_step);

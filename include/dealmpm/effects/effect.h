@@ -3,6 +3,7 @@
 #include <deal.II/base/point.h>
 
 #include <dealmpm/base/registry.h>
+#include <dealmpm/effects/drawn_body.h>
 #include <dealmpm/grid/background_grid.h>
 #include <dealmpm/grid/boundary_conditions.h>
 #include <dealmpm/grid/nodal_exchange.h>
@@ -279,6 +280,15 @@ namespace dealmpm
     virtual void
     restore_state(const std::vector<double> & /*state*/)
     {}
+
+    /** The solids the effect moves, as the output draws them (a rigid
+     * body's outline, each written as its own series), at the end of
+     * the last step; @p grid_box is the grid's extent. None by default. */
+    virtual std::vector<DrawnBody<dim>>
+    drawn_bodies(const BoundingBox<dim> & /*grid_box*/) const
+    {
+      return {};
+    }
 
     /** The body force per unit mass at reference position X, position x
      * and velocity v at time t (gravity, a rotating frame's), which FEM

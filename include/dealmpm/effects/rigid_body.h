@@ -36,6 +36,13 @@ namespace dealmpm
     /** Outward unit normal of the surface nearest to @p x. */
     Tensor<1, dim>
     normal(const Point<dim> &x) const;
+
+    /** Its outline moved by @p shift, for the output: a box as one cell,
+     * a cylinder as 64 triangles (2D) or wedges (3D, as long as
+     * @p grid_box is high), a half-space as a slab behind its face, as
+     * wide as @p grid_box's diagonal and a tenth of it deep. */
+    DrawnBody<dim>
+    drawn(const Tensor<1, dim> &shift, const BoundingBox<dim> &grid_box) const;
   };
 
   /**
@@ -127,6 +134,16 @@ namespace dealmpm
 
     void
     restore_state(const std::vector<double> &state) override;
+
+    /** Its outline at the end of the last step, and that step's
+     * velocity. */
+    std::vector<DrawnBody<dim>>
+    drawn_bodies(const BoundingBox<dim> &grid_box) const override
+    {
+      DrawnBody<dim> body = settings.shape.drawn(moved, grid_box);
+      body.velocity       = V_now;
+      return {body};
+    }
 
     /** How far it has moved. */
     const Tensor<1, dim> &

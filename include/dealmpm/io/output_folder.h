@@ -12,7 +12,8 @@ namespace dealmpm
   /**
    * Whether @p file_name is one of the files a run writes into its output
    * folder: particles_NNNNN.pvtu, particles_NNNNN.R.vtu, particles_NNNNN.csv,
-   * grid_NNNNN.pvtu, grid_NNNNN.R.vtu, the .h5 files of the same names,
+   * grid_NNNNN.pvtu, grid_NNNNN.R.vtu, fem_region_R_NNNNN.pvtu and .R.vtu,
+   * rigid_body_B_NNNNN.vtu, the .h5 files of the same names,
    * statistics.csv, *.pvd, *.xdmf, and the temporary files (".tmp") a killed
    * run may have left of these.
    */
@@ -30,9 +31,9 @@ namespace dealmpm
 
   /**
    * Remove the numbered output files (particles_NNNNN*, grid_NNNNN*,
-   * fem_region_R_NNNNN*) from @p first_counter on, in @p directory and its
-   * step_folder: a resumed run's files after its checkpoint, which
-   * it writes again. Returns how many; throws OutputError.
+   * fem_region_R_NNNNN*, rigid_body_B_NNNNN*) from @p first_counter on, in @p
+   * directory and its step_folder: a resumed run's files after its checkpoint,
+   * which it writes again. Returns how many; throws OutputError.
    */
   unsigned int
   remove_later_output(const std::string &directory,

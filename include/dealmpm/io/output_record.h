@@ -21,6 +21,8 @@ namespace dealmpm
     OutputSeries grid_series;
     /** One per FEM region. */
     std::vector<OutputSeries> region_series;
+    /** One per solid the effects draw (rigid_body_N). */
+    std::vector<OutputSeries> body_series;
 
     template <class Archive>
     void
@@ -28,7 +30,7 @@ namespace dealmpm
     {
       // Needs <boost/serialization/vector.hpp>.
       archive &counter &last_time &last_step &particle_series &grid_series;
-      archive                                                 &region_series;
+      archive &region_series                                  &body_series;
     }
   };
 } // namespace dealmpm

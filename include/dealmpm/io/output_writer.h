@@ -1,5 +1,6 @@
 #pragma once
 
+#include <dealmpm/effects/drawn_body.h>
 #include <dealmpm/fem/fem_region.h>
 #include <dealmpm/grid/background_grid.h>
 #include <dealmpm/grid/nodal_fields.h>
@@ -53,6 +54,8 @@ namespace dealmpm
       const BackgroundGrid<dim>                         &grid;
       const NodalFields<dim>                            &fields;
       const std::vector<FemRegion<dim>>                 &regions;
+      /** The solids the effects draw (Effect::drawn_bodies()). */
+      const std::vector<DrawnBody<dim>> &bodies;
     };
 
     /** Write the output of the state at @p time, step @p step, counted in
