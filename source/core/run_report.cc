@@ -97,7 +97,7 @@ namespace dealmpm
       pcout << ", " << static_cast<long long>(loop.lost_particles)
             << " particle(s) left the grid ("
             << short_number(100 * loop.lost_mass /
-                            std::max(loop.initial_mass, 1e-300))
+                            std::max(loop.accuracy.initial_mass(), 1e-300))
             << " % of the mass)";
     pcout << std::endl;
   }

@@ -344,9 +344,10 @@ namespace dealmpm
       throw RunError(message.str() +
                      "; set 'MPM/Particles leaving the grid = remove' "
                      "to drop such particles instead");
-    const double limit = run_settings.checks.mass_loss_limit;
-    const double lost  = loop.lost_mass / loop.initial_mass;
-    if (limit > 0 && loop.initial_mass > 0 && lost > limit)
+    const double limit   = run_settings.checks.mass_loss_limit;
+    const double initial = loop.accuracy.initial_mass();
+    const double lost    = loop.lost_mass / initial;
+    if (limit > 0 && initial > 0 && lost > limit)
       {
         std::ostringstream stop;
         stop << std::setprecision(3) << message.str()

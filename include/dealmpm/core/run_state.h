@@ -26,7 +26,6 @@ namespace dealmpm
     double          stepping_time  = 0; ///< wall seconds of steps + checks
     double          lost_particles = 0; ///< all ranks
     double          lost_mass      = 0; ///< their mass, all ranks
-    double          initial_mass   = 0; ///< of all particles at t = 0
     double          held_particles = 0; ///< put back on a wall, all ranks
     double          last_dt = 0; ///< the last step's size (Newmark needs it)
     double          repartitions     = 0; ///< of the grid among the ranks
@@ -49,7 +48,7 @@ namespace dealmpm
       archive &time &step &next_output &particle_steps &stepping_time;
       archive &lost_particles &held_particles &last_dt &repartitions &output;
       archive &adaptations &split_particles &merged_particles;
-      archive &lost_mass                    &initial_mass;
+      archive                               &lost_mass;
       archive                               &accuracy;
       archive                               &effect_states;
       archive                               &effect_states_by_rank;

@@ -96,6 +96,13 @@ namespace dealmpm
       return current;
     }
 
+    /** The particles' mass at the start (given to start()). */
+    double
+    initial_mass() const
+    {
+      return initial.mass;
+    }
+
     /** Whether the scene conserves momentum (see AccuracyReport); set by
      * the run before its first step, also after a resume. */
     void
