@@ -94,6 +94,26 @@ namespace dealmpm
               "Lagrangian keeps every particle's neighbours)");
     }
 
+    /** F-bar averages the step's volume change over the particles a cell
+     * holds now: the updated Lagrangian sweeps, and not Newmark's. */
+    template <int dim>
+    void
+    anti_locking_rule(SceneReader &reader, const SceneChoices<dim> &scene)
+    {
+      if (scene.method.anti_locking == AntiLocking::none)
+        return;
+      SectionScope mpm(reader, "MPM");
+      if (total_lagrangian(scene))
+        reader.fail("Anti-locking",
+                    "'none' under 'MPM/Formulation = total Lagrangian' (F "
+                    "advances there from the reference cell's gradient, and "
+                    "an F-bar would have to average the total volume change "
+                    "over the reference cell: not built)");
+      if (scene.method.particle_update.newmark)
+        reader.fail("Anti-locking",
+                    "'none' with 'MPM/Particle update = Newmark' (not built)");
+    }
+
     /** Refined cells make hanging nodes and move particles between
      * cells of other sizes. */
     template <int dim>
@@ -165,6 +185,7 @@ namespace dealmpm
     body_fields_rules(reader, scene);
     region_coupling_rule(reader, scene);
     total_lagrangian_rule(reader, scene);
+    anti_locking_rule(reader, scene);
   }
 
   template <int dim>

@@ -114,6 +114,18 @@ namespace dealmpm
         "2): second order, and a rotation for a spin, so that rigid rotation "
         "keeps J = 1 exactly) or 'subcycle' ((I + dt L / N)^N, N = "
         "'Subcycles').");
+      prm.declare_entry(
+        "Anti-locking",
+        "none",
+        Patterns::Selection("none|F-bar"),
+        "Volumetric locking: a linear cell with 2^dim particles gives each "
+        "its own volume change, which a material that flows at constant "
+        "volume (plasticity, nu near 0.5) cannot follow, so that failure "
+        "loads come out high and unstable slopes stand. 'F-bar' gives the "
+        "particles of each body in a cell the cell's volume-weighted mean "
+        "volume change and keeps their own change of shape (Coombs et al. "
+        "2018, CMAME 333); 'none' leaves each particle its own. "
+        "Updated Lagrangian and the explicit particle update only.");
       prm.declare_entry("Taylor terms",
                         "4",
                         Patterns::Integer(1, 20),
@@ -236,6 +248,9 @@ namespace dealmpm
       DeformationUpdate::parse(reader.get("Deformation gradient update"));
     s.deformation_update.taylor_terms = reader.get_integer("Taylor terms");
     s.deformation_update.subcycles    = reader.get_integer("Subcycles");
+    s.anti_locking                    = reader.get("Anti-locking") == "F-bar" ?
+                                          AntiLocking::f_bar :
+                                          AntiLocking::none;
     s.particle_update.newmark = reader.get("Particle update") == "Newmark";
     if (s.particle_update.newmark)
       read_newmark(reader, s);

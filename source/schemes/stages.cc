@@ -2,6 +2,7 @@
 #include <dealmpm/grid/grid_update.h>
 #include <dealmpm/materials/linear_elastic.h>
 #include <dealmpm/schemes/stages.h>
+#include <dealmpm/transfer/f_bar.h>
 #include <dealmpm/transfer/grid_to_particle.h>
 #include <dealmpm/transfer/newmark_update.h>
 #include <dealmpm/transfer/particle_to_grid.h>
@@ -417,7 +418,8 @@ namespace dealmpm
                              const Adjust         &adjust,
                              const Increment      &increment)
     {
-      const auto sweep = [&](auto &&after_deformation) {
+      const auto sweep = [&](auto      &&after_deformation,
+                             const auto &adjust_gradient) {
         return grid_to_particle<what, decltype(formulation)::value>(
           s.grid,
           s.stencil,
@@ -426,9 +428,20 @@ namespace dealmpm
           s.method.flip_fraction,
           s.particles,
           after_deformation,
-          adjust,
+          adjust_gradient,
           increment);
       };
+      if constexpr (FormulationType::value == Formulation::updated_lagrangian)
+        if (s.method.anti_locking == AntiLocking::f_bar)
+          {
+            FBar<dim, StressUpdate<dim>, Increment> f_bar(s.stress_update,
+                                                          increment,
+                                                          s.dt,
+                                                          s.particles);
+            const bool left = sweep(f_bar, f_bar.adjusting(adjust));
+            f_bar.flush();
+            return left;
+          }
       constexpr bool plain =
         FormulationType::value == Formulation::updated_lagrangian &&
         std::is_same_v<Adjust, NoGradientAdjustment> &&
@@ -438,8 +451,9 @@ namespace dealmpm
       if constexpr (plain)
         if (s.stress_update.template all_materials_are<Elastic>())
           return sweep(
-            typename StressUpdate<dim>::template Of<Elastic>{s.stress_update});
-      return sweep(s.stress_update);
+            typename StressUpdate<dim>::template Of<Elastic>{s.stress_update},
+            adjust);
+      return sweep(s.stress_update, adjust);
     }
 
     template <int dim>

@@ -21,6 +21,13 @@ namespace dealmpm
    * particles that leave the grid, cells of mixed materials, the
    * deformation gradient update and the particle update.
    */
+  /** The volumetric anti-locking of the particles ('MPM/Anti-locking'). */
+  enum class AntiLocking
+  {
+    none,
+    f_bar
+  };
+
   struct MethodSettings
   {
     Formulation  formulation   = Formulation::updated_lagrangian;
@@ -36,6 +43,8 @@ namespace dealmpm
     bool split_mixed_cells = true;
     /** How F advances over a step. */
     DeformationUpdate deformation_update;
+    /** A cell's particles share its volume change (FBar) or not. */
+    AntiLocking anti_locking = AntiLocking::none;
     /** How particles advance from the grid's acceleration. */
     ParticleUpdate particle_update;
 

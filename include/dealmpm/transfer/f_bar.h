@@ -1,0 +1,260 @@
+#pragma once
+
+#include <deal.II/base/tensor.h>
+#include <deal.II/particles/particle.h>
+
+#include <dealmpm/grid/background_grid.h>
+#include <dealmpm/particles/particle_set.h>
+
+#include <cmath>
+#include <vector>
+
+namespace dealmpm
+{
+  /**
+   * Anti-locking by a cell-averaged volume change (F-bar; Coombs et al.
+   * 2018, "Overcoming volumetric locking in material point methods", CMAME
+   * 333, after de Souza Neto et al. 1996 for finite elements).
+   *
+   * A linear cell with 2^dim particles gives each of them its own volume
+   * change, and a material that flows without changing volume (plasticity,
+   * nearly incompressible elasticity) cannot meet that many constraints:
+   * it locks, and failure loads come out too high. F-bar lets the cell
+   * carry one volume change: with dF_p = increment(dt L_p) the step's
+   * deformation increment of particle p, dJ_p = det dF_p and V_p = V0_p det
+   * F_p the volume at the step's start, each body's particles in a cell
+   * share
+   *   dJbar = sum V_p dJ_p / sum V_p
+   * and take dFbar_p = (dJbar / dJ_p)^(1/dim) dF_p: their shape change is
+   * their own, their volume change the cell's (in 2D the in-plane block,
+   * so that F_zz stays 1: plane strain), and the cell's volume is what it
+   * was (sum V_p dJ_p). The rate models see Lbar_p = L_p + (s_p - 1) / dt I
+   * with s_p the factor, which differs from the increment's at O(dt).
+   *
+   * Used as a deforming sweep's gradient adjustment (adjusting(), which
+   * records each particle's dJ_p and V_p after the scene's own adjustment)
+   * and its after-deformation callback (which holds each particle until its
+   * cell is done): the sweeps visit the particles cell by cell, so that
+   * when a new cell begins the previous one's particles get their dFbar and
+   * then, through @p Inner (the stress update), their stress. flush() ends
+   * the last cell. Particles whose own or whose cell's dJ is not positive
+   * keep their F (the stress update then reports J <= 0). Nothing is kept
+   * between steps, and a cell's particles are on its owner's rank: no
+   * communication, the same numbers on any number of ranks.
+   */
+  template <int dim, typename Inner, typename Increment>
+  class FBar
+  {
+  public:
+    FBar(Inner                  &inner,
+         const Increment        &increment,
+         const double            dt,
+         const ParticleSet<dim> &particles)
+      : inner(inner)
+      , increment(increment)
+      , dt(dt)
+      , particles(particles)
+    {}
+
+    /** The gradient adjustment of the sweep: @p adjust's, then the
+     * particle's record. */
+    template <typename Adjust>
+    struct Adjusting
+    {
+      const Adjust &adjust;
+      FBar         &f_bar;
+
+      DEAL_II_ALWAYS_INLINE void
+      operator()(const GridCell<dim>     &cell,
+                 const ArrayView<double> &props,
+                 Tensor<2, dim>          &L) const
+      {
+        adjust(cell, props, L);
+        f_bar.record(cell, props, L);
+      }
+    };
+
+    template <typename Adjust>
+    Adjusting<Adjust>
+    adjusting(const Adjust &adjust)
+    {
+      return {adjust, *this};
+    }
+
+    /** The after-deformation callback of the sweep: holds the particle
+     * with its new F until its cell is done. */
+    template <typename Particle>
+    void
+    operator()(const Particle          &p,
+               const ArrayView<double> &props,
+               const Tensor<2, dim>    &L,
+               const Tensor<2, dim>    &F,
+               const double             h)
+    {
+      Held &held    = cell_particles.back();
+      held.id       = p.get_id();
+      held.location = p.get_location();
+      held.props    = props.data();
+      held.L        = L;
+      held.F        = F;
+      held.h        = h;
+    }
+
+    /** End the last cell (after the sweep). */
+    void
+    flush()
+    {
+      if (cell_particles.empty())
+        return;
+      average();
+      for (const Held &held : cell_particles)
+        finish(held);
+      share_mean_stress();
+      cell_particles.clear();
+      cell = nullptr;
+    }
+
+  private:
+    /** What the stress update asks of a particle (its id and place, for
+     * reports). */
+    struct Reported
+    {
+      types::particle_index id;
+      Point<dim>            location;
+
+      types::particle_index
+      get_id() const
+      {
+        return id;
+      }
+      const Point<dim> &
+      get_location() const
+      {
+        return location;
+      }
+    };
+
+    /** A particle of the cell in hand. */
+    struct Held
+    {
+      unsigned int          body;
+      double                volume, dJ, dJ_bar = 0;
+      types::particle_index id = 0;
+      Point<dim>            location;
+      double               *props = nullptr;
+      Tensor<2, dim>        L, F;
+      double                h = 0;
+    };
+
+    void
+    record(const GridCell<dim>     &c,
+           const ArrayView<double> &props,
+           const Tensor<2, dim>    &L)
+    {
+      if (&c != cell)
+        {
+          flush();
+          cell = &c;
+        }
+      Held held;
+      held.body   = particles.body_of(props);
+      held.dJ     = determinant(increment(dt * L));
+      held.volume = props[FixedCore<dim>::initial_volume] *
+                    determinant(read_tensor<dim>(
+                      &props[FixedCore<dim>::deformation_gradient]));
+      cell_particles.push_back(held);
+    }
+
+    /** Each body's dJbar in the cell (a cell holds few bodies). */
+    void
+    average()
+    {
+      for (std::size_t i = 0; i < cell_particles.size(); ++i)
+        {
+          Held &first = cell_particles[i];
+          if (first.dJ_bar != 0)
+            continue; // its body is done
+          double volume = 0, changed = 0;
+          for (std::size_t j = i; j < cell_particles.size(); ++j)
+            if (cell_particles[j].body == first.body)
+              {
+                volume += cell_particles[j].volume;
+                changed += cell_particles[j].volume * cell_particles[j].dJ;
+              }
+          const double mean = volume > 0 ? changed / volume : 0.;
+          for (std::size_t j = i; j < cell_particles.size(); ++j)
+            if (cell_particles[j].body == first.body)
+              cell_particles[j].dJ_bar = mean != 0 ? mean : -1.;
+        }
+    }
+
+    /** Each body's particles in the cell take the volume-weighted mean of
+     * their mean (in-plane in 2D) normal stress, so that the grid's
+     * internal force does the work the materials count: with one volume
+     * change per cell, a particle's pressure works on the cell's mean
+     * volume rate (B-bar's internal force), not on its own. */
+    void
+    share_mean_stress()
+    {
+      const unsigned int stress = FixedCore<dim>::stress;
+      for (std::size_t i = 0; i < cell_particles.size(); ++i)
+        {
+          if (cell_particles[i].dJ_bar == 0) // its body is done
+            continue;
+          const unsigned int body   = cell_particles[i].body;
+          double             volume = 0, weighted = 0;
+          for (std::size_t j = i; j < cell_particles.size(); ++j)
+            if (cell_particles[j].body == body)
+              {
+                volume += cell_particles[j].volume;
+                weighted += cell_particles[j].volume * mean_stress(j);
+              }
+          const double mean = weighted / volume;
+          for (std::size_t j = i; j < cell_particles.size(); ++j)
+            if (cell_particles[j].body == body)
+              {
+                const double shift = mean - mean_stress(j);
+                // The symmetric tensor's first dim entries are its diagonal.
+                for (unsigned int d = 0; d < dim; ++d)
+                  cell_particles[j].props[stress + d] += shift;
+                cell_particles[j].dJ_bar = 0;
+              }
+        }
+    }
+
+    /** The mean of particle @p j's in-plane (2D) or full normal stress. */
+    double
+    mean_stress(const std::size_t j) const
+    {
+      double sum = 0;
+      for (unsigned int d = 0; d < dim; ++d)
+        sum += cell_particles[j].props[FixedCore<dim>::stress + d];
+      return sum / dim;
+    }
+
+    /** The particle's Fbar and Lbar, then its stress update. */
+    void
+    finish(const Held &held)
+    {
+      const double         ratio = held.dJ_bar / held.dJ;
+      const double         s     = (held.dJ > 0 && held.dJ_bar > 0) ?
+                                     (dim == 2 ? std::sqrt(ratio) : std::cbrt(ratio)) :
+                                     1.;
+      const Tensor<2, dim> F     = s * held.F;
+      Tensor<2, dim>       L     = held.L;
+      for (unsigned int d = 0; d < dim; ++d)
+        L[d][d] += (s - 1.) / dt;
+      const ArrayView<double> props(
+        held.props, particles.handler.n_properties_per_particle());
+      write_tensor<dim>(&props[FixedCore<dim>::deformation_gradient], F);
+      inner(Reported{held.id, held.location}, props, L, F, held.h);
+    }
+
+    Inner                  &inner;
+    const Increment        &increment;
+    const double            dt;
+    const ParticleSet<dim> &particles;
+    const GridCell<dim>    *cell = nullptr;
+    std::vector<Held>       cell_particles;
+  };
+} // namespace dealmpm
