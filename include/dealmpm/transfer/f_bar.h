@@ -104,13 +104,11 @@ namespace dealmpm
     void
     flush()
     {
-      if (cell_particles.empty())
-        return;
-      average();
       for (const Held &held : cell_particles)
         finish(held);
       share_mean_stress();
       cell_particles.clear();
+      groups.clear();
       cell = nullptr;
     }
 
@@ -134,11 +132,28 @@ namespace dealmpm
       }
     };
 
+    /** One body's particles in the cell in hand: their volume, their
+     * volume after the step's change and their volume-weighted mean
+     * normal stress. */
+    struct Group
+    {
+      unsigned int body;
+      double       volume = 0, changed = 0, stress = 0;
+
+      /** The volume-weighted mean volume change dJbar (0 if the group
+       * has no volume: its particles then keep their F). */
+      double
+      dJ_bar() const
+      {
+        return volume > 0 ? changed / volume : 0.;
+      }
+    };
+
     /** A particle of the cell in hand. */
     struct Held
     {
-      unsigned int          body;
-      double                volume, dJ, dJ_bar = 0;
+      unsigned int          group;
+      double                volume, dJ;
       types::particle_index id = 0;
       Point<dim>            location;
       double               *props = nullptr;
@@ -157,35 +172,26 @@ namespace dealmpm
           cell = &c;
         }
       Held held;
-      held.body   = particles.body_of(props);
       held.dJ     = determinant(increment(dt * L));
       held.volume = props[FixedCore<dim>::initial_volume] *
                     determinant(read_tensor<dim>(
                       &props[FixedCore<dim>::deformation_gradient]));
+      held.group = group_of(particles.body_of(props));
+      groups[held.group].volume += held.volume;
+      groups[held.group].changed += held.volume * held.dJ;
       cell_particles.push_back(held);
     }
 
-    /** Each body's dJbar in the cell (a cell holds few bodies). */
-    void
-    average()
+    /** The index of @p body's group in the cell in hand (a cell holds
+     * few bodies). */
+    unsigned int
+    group_of(const unsigned int body)
     {
-      for (std::size_t i = 0; i < cell_particles.size(); ++i)
-        {
-          Held &first = cell_particles[i];
-          if (first.dJ_bar != 0)
-            continue; // its body is done
-          double volume = 0, changed = 0;
-          for (std::size_t j = i; j < cell_particles.size(); ++j)
-            if (cell_particles[j].body == first.body)
-              {
-                volume += cell_particles[j].volume;
-                changed += cell_particles[j].volume * cell_particles[j].dJ;
-              }
-          const double mean = volume > 0 ? changed / volume : 0.;
-          for (std::size_t j = i; j < cell_particles.size(); ++j)
-            if (cell_particles[j].body == first.body)
-              cell_particles[j].dJ_bar = mean != 0 ? mean : -1.;
-        }
+      for (unsigned int g = 0; g < groups.size(); ++g)
+        if (groups[g].body == body)
+          return g;
+      groups.push_back(Group{body});
+      return groups.size() - 1;
     }
 
     /** Each body's particles in the cell take the volume-weighted mean of
@@ -196,39 +202,27 @@ namespace dealmpm
     void
     share_mean_stress()
     {
-      const unsigned int stress = FixedCore<dim>::stress;
-      for (std::size_t i = 0; i < cell_particles.size(); ++i)
+      for (const Held &held : cell_particles)
+        groups[held.group].stress += held.volume * mean_stress(held);
+      for (const Held &held : cell_particles)
         {
-          if (cell_particles[i].dJ_bar == 0) // its body is done
+          const Group &group = groups[held.group];
+          if (!(group.volume > 0))
             continue;
-          const unsigned int body   = cell_particles[i].body;
-          double             volume = 0, weighted = 0;
-          for (std::size_t j = i; j < cell_particles.size(); ++j)
-            if (cell_particles[j].body == body)
-              {
-                volume += cell_particles[j].volume;
-                weighted += cell_particles[j].volume * mean_stress(j);
-              }
-          const double mean = weighted / volume;
-          for (std::size_t j = i; j < cell_particles.size(); ++j)
-            if (cell_particles[j].body == body)
-              {
-                const double shift = mean - mean_stress(j);
-                // The symmetric tensor's first dim entries are its diagonal.
-                for (unsigned int d = 0; d < dim; ++d)
-                  cell_particles[j].props[stress + d] += shift;
-                cell_particles[j].dJ_bar = 0;
-              }
+          const double shift = group.stress / group.volume - mean_stress(held);
+          // The symmetric tensor's first dim entries are its diagonal.
+          for (unsigned int d = 0; d < dim; ++d)
+            held.props[FixedCore<dim>::stress + d] += shift;
         }
     }
 
-    /** The mean of particle @p j's in-plane (2D) or full normal stress. */
-    double
-    mean_stress(const std::size_t j) const
+    /** The mean of a particle's in-plane (2D) or full normal stress. */
+    static double
+    mean_stress(const Held &held)
     {
       double sum = 0;
       for (unsigned int d = 0; d < dim; ++d)
-        sum += cell_particles[j].props[FixedCore<dim>::stress + d];
+        sum += held.props[FixedCore<dim>::stress + d];
       return sum / dim;
     }
 
@@ -236,12 +230,13 @@ namespace dealmpm
     void
     finish(const Held &held)
     {
-      const double         ratio = held.dJ_bar / held.dJ;
-      const double         s     = (held.dJ > 0 && held.dJ_bar > 0) ?
-                                     (dim == 2 ? std::sqrt(ratio) : std::cbrt(ratio)) :
-                                     1.;
-      const Tensor<2, dim> F     = s * held.F;
-      Tensor<2, dim>       L     = held.L;
+      const double         dJ_bar = groups[held.group].dJ_bar();
+      const double         ratio  = dJ_bar / held.dJ;
+      const double         s      = (held.dJ > 0 && dJ_bar > 0) ?
+                                      (dim == 2 ? std::sqrt(ratio) : std::cbrt(ratio)) :
+                                      1.;
+      const Tensor<2, dim> F      = s * held.F;
+      Tensor<2, dim>       L      = held.L;
       for (unsigned int d = 0; d < dim; ++d)
         L[d][d] += (s - 1.) / dt;
       const ArrayView<double> props(
@@ -256,5 +251,6 @@ namespace dealmpm
     const ParticleSet<dim> &particles;
     const GridCell<dim>    *cell = nullptr;
     std::vector<Held>       cell_particles;
+    std::vector<Group>      groups;
   };
 } // namespace dealmpm
