@@ -23,22 +23,23 @@ namespace dealmpm
 
   namespace
   {
-    /** A cell's signal rate from its points' deformation gradients @p F:
-     * the largest wave speed over the smallest node spacing, in the
-     * current configuration's scale (the smallest stretch). Gauss-Lobatto
-     * points of degree k are closer than h / k near the vertices (the
-     * factor for k = 1, 2 is 1). */
+    /** A cell's signal rate from its points' deformation gradients @p F
+     * and internal variables @p internal: the largest wave speed over the
+     * smallest node spacing, in the current configuration's scale (the smallest
+     * stretch). Gauss-Lobatto points of degree k are closer than h / k near the
+     * vertices (the factor for k = 1, 2 is 1). */
     template <int dim>
     double
     cell_signal_rate(const Material<dim>                   &material,
                      const ArrayView<const Tensor<2, dim>> &F,
+                     const ArrayView<const double>         &internal,
                      const unsigned int                     degree,
                      const double                           min_vertex_distance)
     {
       double squared = 1;
       for (const Tensor<2, dim> &f : F)
         squared = std::min(squared, smallest_stretch_squared(f));
-      return material.max_wave_speed(F) * degree /
+      return material.max_wave_speed(F, internal) * degree /
              (std::sqrt(squared) * min_vertex_distance);
     }
   } // namespace
@@ -50,12 +51,15 @@ namespace dealmpm
     const ReferenceData &r = reference;
     signal_rate            = 0;
     for (std::size_t c = 0; c < r.centre.size(); ++c)
-      signal_rate = std::max(signal_rate,
-                             cell_signal_rate(material,
-                                              ArrayView<const Tensor<2, dim>>(
-                                                &deformation[c * r.n_q], r.n_q),
-                                              fe.degree,
-                                              r.min_vertex_distance[c]));
+      signal_rate = std::max(
+        signal_rate,
+        cell_signal_rate(
+          material,
+          ArrayView<const Tensor<2, dim>>(&deformation[c * r.n_q], r.n_q),
+          ArrayView<const double>(internal.data() + c * r.n_q * n_internal,
+                                  r.n_q * n_internal),
+          fe.degree,
+          r.min_vertex_distance[c]));
   }
 
   template <int dim>
@@ -235,10 +239,12 @@ namespace dealmpm
         }
     // The rate of the F made here is the next step's (the same F as
     // update_signal_rate() would read back).
-    return cell_signal_rate(material,
-                            ArrayView<const Tensor<2, dim>>(F.data(), n),
-                            fe.degree,
-                            r.min_vertex_distance[c]);
+    return cell_signal_rate(
+      material,
+      ArrayView<const Tensor<2, dim>>(F.data(), n),
+      ArrayView<const double>(internal.data() + k * n_internal, n * n_internal),
+      fe.degree,
+      r.min_vertex_distance[c]);
   }
 
   template <int dim>

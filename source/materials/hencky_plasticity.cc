@@ -132,12 +132,19 @@ namespace dealmpm
     const SymmetricTensor<2, dim> &,
     ArrayView<const double> internal) const
   {
-    const PrincipalStrain e =
-      trial_strain<dim>(embed_deformation<dim>(F), internal);
-    const double volumetric = e.strain[0] + e.strain[1] + e.strain[2];
+    return elastic_energy(
+      trial_strain<dim>(embed_deformation<dim>(F), internal).strain);
+  }
+
+  template <int dim>
+  double
+  HenckyPlasticity<dim>::elastic_energy(
+    const std::array<double, 3> &strain) const
+  {
+    const double volumetric = strain[0] + strain[1] + strain[2];
     double       deviatoric = 0;
     for (unsigned int a = 0; a < 3; ++a)
-      deviatoric += std::pow(e.strain[a] - volumetric / 3., 2);
+      deviatoric += std::pow(strain[a] - volumetric / 3., 2);
     return 0.5 * bulk_modulus * volumetric * volumetric +
            shear_modulus * deviatoric;
   }

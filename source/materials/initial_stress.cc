@@ -77,6 +77,56 @@ namespace dealmpm
         sum += value * value;
       return std::sqrt(sum);
     }
+
+    /** One Newton step of start_at_stress() on the principal
+     * log-stretches @p e whose residual is @p r (both updated, and @p step
+     * run at the new @p e); false when the residual is not finite. */
+    template <int dim>
+    bool
+    newton_step(Step<dim>                     &step,
+                const std::array<double, dim> &principal,
+                std::array<double, dim>       &e,
+                std::array<double, dim>       &r)
+    {
+      // The Jacobian by differences, on the compressed side: from zero
+      // stress, a stretch is tension, which a cohesionless soil or a
+      // fluid with its tension cut-off answer with no stress at all. The
+      // models are smooth in their elastic range, and the residual itself
+      // is exact.
+      Eigen::Matrix<double, dim, dim> jacobian;
+      const double                    h = -1e-7;
+      for (unsigned int b = 0; b < dim; ++b)
+        {
+          std::array<double, dim> shifted = e;
+          shifted[b] += h;
+          step.run(shifted);
+          const std::array<double, dim> r_b = step.residual(principal);
+          for (unsigned int a = 0; a < dim; ++a)
+            jacobian(a, b) = (r_b[a] - r[a]) / h;
+        }
+      Eigen::Matrix<double, dim, 1> rhs;
+      for (unsigned int a = 0; a < dim; ++a)
+        rhs(a) = -r[a];
+      const Eigen::Matrix<double, dim, 1> de =
+        jacobian.completeOrthogonalDecomposition().solve(rhs);
+      // Backtracking: a model whose stiffness grows with the pressure
+      // (Modified Cam-Clay from its reference pressure) makes the full
+      // step overshoot by orders of magnitude.
+      const double            before   = norm<dim>(r);
+      double                  fraction = 1;
+      std::array<double, dim> tried    = e;
+      for (unsigned int halving = 0; halving < 40; ++halving, fraction /= 2)
+        {
+          for (unsigned int a = 0; a < dim; ++a)
+            tried[a] = e[a] + fraction * de(a);
+          step.run(tried);
+          r = step.residual(principal);
+          if (norm<dim>(r) < before) // false for NaN
+            break;
+        }
+      e = tried;
+      return std::isfinite(norm<dim>(r));
+    }
   } // namespace
 
   template <int dim>
@@ -101,11 +151,16 @@ namespace dealmpm
         step.axes[1] /= step.axes[1].norm();
         step.axes[2] = cross_product_3d(step.axes[0], step.axes[1]);
       }
+    // The ratio of the changes: a model whose unstrained state carries a
+    // stress (Modified Cam-Clay's reference pressure) has its own.
     std::array<double, dim> e{};
-    e[0] = -1e-6;
     step.run(e);
-    return (step.axes[1] * (step.stress * step.axes[1])) /
-           (step.axes[0] * (step.stress * step.axes[0]));
+    const SymmetricTensor<2, dim> unstrained = step.stress;
+    e[0]                                     = -1e-6;
+    step.run(e);
+    const SymmetricTensor<2, dim> change = step.stress - unstrained;
+    return (step.axes[1] * (change * step.axes[1])) /
+           (step.axes[0] * (change * step.axes[0]));
   }
 
   template <int dim>
@@ -141,32 +196,7 @@ namespace dealmpm
     for (unsigned int iteration = 0; iteration < 50 && norm<dim>(r) > tolerance;
          ++iteration)
       {
-        // The Jacobian by differences, on the compressed side: from zero
-        // stress, a stretch is tension, which a cohesionless soil or a
-        // fluid with its tension cut-off answer with no stress at all. The
-        // models are smooth in their elastic range, and the residual itself
-        // is exact.
-        Eigen::Matrix<double, dim, dim> jacobian;
-        const double                    h = -1e-7;
-        for (unsigned int b = 0; b < dim; ++b)
-          {
-            std::array<double, dim> shifted = e;
-            shifted[b] += h;
-            step.run(shifted);
-            const std::array<double, dim> r_b = step.residual(principal);
-            for (unsigned int a = 0; a < dim; ++a)
-              jacobian(a, b) = (r_b[a] - r[a]) / h;
-          }
-        Eigen::Matrix<double, dim, 1> rhs;
-        for (unsigned int a = 0; a < dim; ++a)
-          rhs(a) = -r[a];
-        const Eigen::Matrix<double, dim, 1> de =
-          jacobian.completeOrthogonalDecomposition().solve(rhs);
-        for (unsigned int a = 0; a < dim; ++a)
-          e[a] += de(a);
-        step.run(e);
-        r = step.residual(principal);
-        if (!std::isfinite(norm<dim>(r)))
+        if (!newton_step<dim>(step, principal, e, r))
           return false;
       }
     // Off the axes the models are isotropic: nothing to check but the

@@ -3,6 +3,7 @@
 #include <dealmpm/materials/j2_plasticity.h>
 #include <dealmpm/materials/johnson_cook.h>
 #include <dealmpm/materials/linear_elastic.h>
+#include <dealmpm/materials/modified_cam_clay.h>
 #include <dealmpm/materials/mohr_coulomb.h>
 #include <dealmpm/materials/neo_hookean.h>
 #include <dealmpm/materials/tait_fluid.h>
@@ -48,6 +49,7 @@ namespace dealmpm
       add_johnson_cook_material(r);
       add_drucker_prager_material(r);
       add_mohr_coulomb_material(r);
+      add_modified_cam_clay_material(r);
       add_tait_fluid_material(r);
       return r;
     }();

@@ -86,8 +86,8 @@ namespace dealmpm
 
   template <int dim>
   double
-  NeoHookean<dim>::max_wave_speed(
-    const ArrayView<const Tensor<2, dim>> &F) const
+  NeoHookean<dim>::max_wave_speed(const ArrayView<const Tensor<2, dim>> &F,
+                                  const ArrayView<const double> &) const
   {
     // The modulus falls with J where lambda >= 0 (rises where lambda < 0):
     // the largest over the points is the one at the extreme J, one log

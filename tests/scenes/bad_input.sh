@@ -37,6 +37,12 @@ expect 2 "Body 1/Material.*material number from 1 to" "$scene" "${s[@]}" -s "Bod
 expect 2 "Effects.*comma-separated list of" "$scene" "${s[@]}" -s "Effects=gravity, antigravity"
 expect 2 "command line: -s 'Grid/Colour=red'" "$scene" "${s[@]}" -s "Grid/Colour=red"
 expect 1 "unknown option" "$scene" --frobnicate
+# Modified Cam-Clay's compression line must be steeper than its swelling
+# lines, and a soil cannot be less than normally consolidated.
+expect 2 "Material 1/Modified Cam-Clay/Compression index.*a number > the Swelling index" "$scene" "${s[@]}" \
+  -s "Material 1/Model=Modified Cam-Clay" -s "Material 1/Modified Cam-Clay/Compression index=0.01"
+expect 2 "Material 1/Modified Cam-Clay/Overconsolidation ratio.*a number >= 1" "$scene" "${s[@]}" \
+  -s "Material 1/Model=Modified Cam-Clay" -s "Material 1/Modified Cam-Clay/Overconsolidation ratio=0.5"
 # A model only the example registers: plain dealmpm names the entry and the models it knows.
 expect 2 "custom_material.prm: entry 'Material 1/Model' = 'Saint Venant-Kirchhoff': expected one of .*'linear elastic', 'neo-Hookean'$" \
   "$(dirname "$scene")/../examples/custom_material.prm"

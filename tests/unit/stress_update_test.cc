@@ -7,6 +7,7 @@
 // only offered when every material is exactly the model.
 #include <dealmpm/materials/j2_plasticity.h>
 #include <dealmpm/materials/linear_elastic.h>
+#include <dealmpm/materials/modified_cam_clay.h>
 #include <dealmpm/materials/neo_hookean.h>
 #include <dealmpm/transfer/grid_to_particle.h>
 #include <dealmpm/transfer/stress_update.h>
@@ -172,7 +173,8 @@ namespace
 
   /** Whether max_wave_speed() of @p material over points near I (some
    * stretched, some compressed; with @p inverted one turned inside out,
-   * J < 0) is the largest wave_speed() to the bit. */
+   * J < 0), each in the model's initial state, is the largest
+   * wave_speed_of_state() to the bit. */
   template <int dim>
   bool
   max_wave_speed_is_largest(const Material<dim> &material,
@@ -181,19 +183,27 @@ namespace
     std::mt19937                           rng(7);
     std::uniform_real_distribution<double> entry(-0.2, 0.2);
     std::vector<Tensor<2, dim>>            F(8);
-    double                                 largest = 0;
+    unsigned int                           n = 0;
+    for (const auto &field : material.internal_variables())
+      n += field.n_components;
+    std::vector<double> internal(F.size() * n);
+    double              largest = 0;
     for (Tensor<2, dim> &f : F)
       {
+        const ArrayView<double> state(internal.data() + (&f - &F[0]) * n, n);
+        material.initialize_internal_variables(state);
         for (unsigned int i = 0; i < dim; ++i)
           for (unsigned int j = 0; j < dim; ++j)
             f[i][j] = (i == j ? 1. : 0.) + entry(rng);
         if (inverted && &f == &F[3])
           f[0] *= -1.;
-        largest = std::max(largest, material.wave_speed(f));
+        largest = std::max(largest, material.wave_speed_of_state(f, state));
       }
-    return material.max_wave_speed(make_array_view(std::as_const(F))) ==
+    return material.max_wave_speed(make_array_view(std::as_const(F)),
+                                   make_array_view(std::as_const(internal))) ==
              largest &&
-           material.max_wave_speed(ArrayView<const Tensor<2, dim>>()) == 0.;
+           material.max_wave_speed(ArrayView<const Tensor<2, dim>>(),
+                                   ArrayView<const double>()) == 0.;
   }
 
   /** The neo-Hookean stress against its tensor expression
@@ -273,14 +283,17 @@ TEST(StressUpdate, CellMaxWaveSpeedEqualsLargestPoint)
   LinearElastic<3> linear_3(lame);
   J2Plasticity<2>  j2_2(lame, IsotropicHardening{1e5, 1e6});
   J2Plasticity<3>  j2_3(lame, IsotropicHardening{1e5, 1e6});
+  // Its wave speed follows the pressure of each point's state.
+  ModifiedCamClay<2> clay_2(CamClayParameters{});
+  ModifiedCamClay<3> clay_3(CamClayParameters{});
   for (Material<2> *m :
-       std::initializer_list<Material<2> *>{&neo_2, &linear_2, &j2_2})
+       std::initializer_list<Material<2> *>{&neo_2, &linear_2, &j2_2, &clay_2})
     {
       m->density = 1000;
       EXPECT_TRUE(max_wave_speed_is_largest<2>(*m));
     }
   for (Material<3> *m :
-       std::initializer_list<Material<3> *>{&neo_3, &linear_3, &j2_3})
+       std::initializer_list<Material<3> *>{&neo_3, &linear_3, &j2_3, &clay_3})
     {
       m->density = 1000;
       EXPECT_TRUE(max_wave_speed_is_largest<3>(*m));

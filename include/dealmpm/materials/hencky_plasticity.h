@@ -14,7 +14,9 @@ namespace dealmpm
    * the principal directions of the trial b_e = F C_p^-1 F^T. Keeping
    * C_p^-1 makes the update need only the current F: exactly objective, no
    * incremental drift. A model supplies only its return
-   * (return_to_surface); the plastic work is tau : d eps_p of each step.
+   * (return_to_surface), and its elasticity if it is not Hencky's
+   * (kirchhoff, elastic_energy); the plastic work is tau : d eps_p of each
+   * step.
    *
    * Internal variables: C_p^-1 (xx, yy, zz, xy, and xz, yz in 3D), the
    * equivalent plastic strain, the plastic work per unit reference volume,
@@ -48,7 +50,7 @@ namespace dealmpm
                         const SymmetricTensor<2, dim> &stress,
                         ArrayView<const double>        internal) const override;
 
-    /** The elastic stored energy W(eps_e). */
+    /** The elastic stored energy W(eps_e) (elastic_energy()). */
     double
     strain_energy_density(const Tensor<2, dim>          &F,
                           const SymmetricTensor<2, dim> &stress,
@@ -101,9 +103,17 @@ namespace dealmpm
       return {};
     }
 
-    /** Principal Kirchhoff stresses of principal elastic strains. */
-    std::array<double, 3>
+    /** Principal Kirchhoff stresses of principal elastic strains:
+     * K tr(eps) + 2G dev(eps), unless a model's elasticity is another
+     * (Modified Cam-Clay's pressure grows with the volume strain). */
+    virtual std::array<double, 3>
     kirchhoff(const std::array<double, 3> &strain) const;
+
+    /** The stored energy of principal elastic strains, whose derivative
+     * is kirchhoff(): K/2 tr(eps)^2 + G |dev eps|^2 unless a model says
+     * otherwise. */
+    virtual double
+    elastic_energy(const std::array<double, 3> &strain) const;
 
     const double bulk_modulus;
     const double shear_modulus;

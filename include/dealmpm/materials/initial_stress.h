@@ -20,9 +20,10 @@ namespace dealmpm
                    const double          K0);
 
   /**
-   * The material's own K0: the lateral over the vertical normal stress of
-   * a small confined compression along the unit vector @p n from its
-   * initial state (nu / (1 - nu) for isotropic elasticity, 1 for a fluid).
+   * The material's own K0: the lateral over the vertical change of normal
+   * stress in a small confined compression along the unit vector @p n from
+   * its initial state (nu / (1 - nu) for isotropic elasticity, 1 for a
+   * fluid).
    */
   template <int dim>
   double

@@ -71,9 +71,18 @@ namespace dealmpm
                        this->density);
     }
 
+    /** Its moduli have no history. */
+    DEAL_II_ALWAYS_INLINE double
+    wave_speed_of_state(const Tensor<2, dim> &F,
+                        ArrayView<const double>) const override
+    {
+      return wave_speed(F);
+    }
+
     /** The root taken once, of the largest J (see Material). */
     double
-    max_wave_speed(const ArrayView<const Tensor<2, dim>> &F) const override
+    max_wave_speed(const ArrayView<const Tensor<2, dim>> &F,
+                   const ArrayView<const double> &) const override
     {
       double largest_J = 0;
       for (const Tensor<2, dim> &f : F)

@@ -80,17 +80,33 @@ namespace dealmpm
     virtual double
     wave_speed(const Tensor<2, dim> &F) const = 0;
 
-    /** The largest wave_speed() over the points @p F (an FEM region's
-     * cell; zero for none). Point by point unless a model whose speed is
-     * the square root of a modulus takes the root once: sqrt and the
-     * division by the density are monotone and correctly rounded, so the
-     * largest is the same number. */
+    /** The wave speed of a state whose moduli depend on its history, not
+     * on F alone (Modified Cam-Clay's grow with the pressure its elastic
+     * strain carries): wave_speed(F) for every other model. */
     virtual double
-    max_wave_speed(const ArrayView<const Tensor<2, dim>> &F) const
+    wave_speed_of_state(const Tensor<2, dim> &F,
+                        ArrayView<const double> /*internal*/) const
     {
-      double largest = 0;
-      for (const Tensor<2, dim> &f : F)
-        largest = std::max(largest, wave_speed(f));
+      return wave_speed(F);
+    }
+
+    /** The largest wave_speed_of_state() over the points @p F (an FEM
+     * region's cell; zero for none), each with its internal.size() /
+     * F.size() internal variables in turn. Point by point unless a model
+     * whose speed is the square root of a modulus takes the root once:
+     * sqrt and the division by the density are monotone and correctly
+     * rounded, so the largest is the same number. */
+    virtual double
+    max_wave_speed(const ArrayView<const Tensor<2, dim>> &F,
+                   const ArrayView<const double>         &internal) const
+    {
+      const std::size_t n = F.size() == 0 ? 0 : internal.size() / F.size();
+      double            largest = 0;
+      for (std::size_t q = 0; q < F.size(); ++q)
+        largest = std::max(largest,
+                           wave_speed_of_state(F[q],
+                                               ArrayView<const double>(
+                                                 internal.data() + q * n, n)));
       return largest;
     }
 

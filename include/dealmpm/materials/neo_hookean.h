@@ -35,7 +35,8 @@ namespace dealmpm
     wave_speed(const Tensor<2, dim> &F) const override;
     /** The root taken once, of the largest modulus (see Material). */
     double
-    max_wave_speed(const ArrayView<const Tensor<2, dim>> &F) const override;
+    max_wave_speed(const ArrayView<const Tensor<2, dim>> &F,
+                   const ArrayView<const double> &) const override;
 
     /** lambda ln(J) / J (F_zz = 1). */
     double

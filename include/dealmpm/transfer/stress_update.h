@@ -37,7 +37,8 @@ namespace dealmpm
 
     /** Fold one particle into the check; false when its state is
      * unusable. @p material is a Material<dim>, or the final model class
-     * the caller knows it to be (StressUpdate::Of). */
+     * the caller knows it to be (StressUpdate::Of); @p internal is the
+     * particle's state in it. */
     template <typename Accessor, typename Model>
     DEAL_II_ALWAYS_INLINE inline bool
     inspect(const Accessor                &p,
@@ -45,6 +46,7 @@ namespace dealmpm
             const Tensor<2, dim>          &F,
             const SymmetricTensor<2, dim> &stress,
             const Model                   &material,
+            ArrayView<const double>        internal,
             const double                   h)
     {
       const double J = determinant(F);
@@ -67,7 +69,8 @@ namespace dealmpm
           "smaller CFL number)");
       else
         {
-          const double rate = (material.wave_speed(F) + v.norm()) / h;
+          const double rate =
+            (material.wave_speed_of_state(F, internal) + v.norm()) / h;
           if (rate > max_signal_rate)
             {
               max_signal_rate  = rate;
@@ -243,6 +246,7 @@ namespace dealmpm
                          F,
                          stress,
                          material,
+                         internal,
                          h))
         check.describe_state(p.get_id(), m, material, F, internal);
       if (any_resets && slot.resets)
