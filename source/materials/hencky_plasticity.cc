@@ -142,11 +142,8 @@ namespace dealmpm
     const std::array<double, 3> &strain) const
   {
     const double volumetric = strain[0] + strain[1] + strain[2];
-    double       deviatoric = 0;
-    for (unsigned int a = 0; a < 3; ++a)
-      deviatoric += std::pow(strain[a] - volumetric / 3., 2);
     return 0.5 * bulk_modulus * volumetric * volumetric +
-           shear_modulus * deviatoric;
+           shear_modulus * deviator_squared(strain);
   }
 
   template class HenckyPlasticity<2>;

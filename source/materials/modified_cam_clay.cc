@@ -153,13 +153,10 @@ namespace dealmpm
   ModifiedCamClay<dim>::elastic_energy(
     const std::array<double, 3> &strain) const
   {
-    const double trace      = strain[0] + strain[1] + strain[2];
-    double       deviatoric = 0;
-    for (unsigned int a = 0; a < 3; ++a)
-      deviatoric += std::pow(strain[a] - trace / 3., 2);
+    const double trace = strain[0] + strain[1] + strain[2];
     return parameters.swelling_index *
              (pressure(-trace) - parameters.reference_pressure) +
-           parameters.shear_modulus * deviatoric;
+           parameters.shear_modulus * this->deviator_squared(strain);
   }
 
   template <int dim>

@@ -120,6 +120,24 @@ namespace dealmpm::test
     return true;
   }
 
+  /** A path of compression, shear and some extension at time t, with an
+   * added steady compaction of @p compaction along x per unit t. */
+  template <int dim>
+  Tensor<2, dim>
+  wandering_deformation(const double t, const double compaction = 0)
+  {
+    Tensor<2, dim> F;
+    F[0][0] = std::exp(-0.05 * std::sin(t) - compaction * t);
+    F[1][1] = std::exp(0.02 * std::sin(2 * t) - 0.01 * t);
+    F[0][1] = 0.3 * std::sin(1.3 * t);
+    if (dim == 3)
+      {
+        F[dim - 1][dim - 1] = std::exp(0.01 * std::cos(t) - 0.01);
+        F[1][dim - 1]       = 0.1 * std::cos(t) - 0.1;
+      }
+    return F;
+  }
+
   /** A uniaxial stretch along x with logarithmic strain @p log_strain. */
   template <int dim>
   Tensor<2, dim>

@@ -226,23 +226,6 @@ TEST(ModifiedCamClay, DrainedTriaxialCompressionReachesTheCriticalState)
 
 namespace
 {
-  /** A path of compression, shear and some unloading at time t. */
-  template <int dim>
-  Tensor<2, dim>
-  wandering_deformation(const double t)
-  {
-    Tensor<2, dim> F;
-    F[0][0] = std::exp(-0.05 * std::sin(t) - 0.02 * t);
-    F[1][1] = std::exp(0.02 * std::sin(2 * t) - 0.01 * t);
-    F[0][1] = 0.3 * std::sin(1.3 * t);
-    if (dim == 3)
-      {
-        F[dim - 1][dim - 1] = std::exp(0.01 * std::cos(t) - 0.01);
-        F[1][dim - 1]       = 0.1 * std::cos(t) - 0.1;
-      }
-    return F;
-  }
-
   template <int dim>
   void
   check_on_the_surface_after_every_return(const double ocr)
@@ -252,8 +235,9 @@ namespace
     unsigned int plastic_steps = 0;
     for (unsigned int s = 1; s <= 300; ++s)
       {
-        const Tensor<2, dim> F      = wandering_deformation<dim>(0.01 * s);
-        const double         before = point.model.plastic_strain(point.state());
+        const Tensor<2, dim> F =
+          test::wandering_deformation<dim>(0.01 * s, 0.02);
+        const double before = point.model.plastic_strain(point.state());
         point.deform(F);
         const Invariants tau = invariants(point.kirchhoff(F));
         const double     p_c =
@@ -288,7 +272,7 @@ TEST(ModifiedCamClay, Objective)
   for (const double ocr : {1., 8.})
     {
       Clay<3>      reference(clay(ocr)), rotated(clay(ocr));
-      Tensor<2, 3> F0 = wandering_deformation<3>(1.5);
+      Tensor<2, 3> F0 = test::wandering_deformation<3>(1.5, 0.02);
       EXPECT_LT(
         test::rotation_error(reference, rotated, F0, test::rotation(0.7, 2)),
         1e-12)

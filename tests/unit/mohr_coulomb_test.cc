@@ -51,23 +51,6 @@ namespace
     return F;
   }
 
-  /** A path of compression, shear and some extension at time t. */
-  template <int dim>
-  Tensor<2, dim>
-  wandering_deformation(const double t)
-  {
-    Tensor<2, dim> F;
-    F[0][0] = std::exp(-0.05 * std::sin(t));
-    F[1][1] = std::exp(0.02 * std::sin(2 * t) - 0.01 * t);
-    F[0][1] = 0.3 * std::sin(1.3 * t);
-    if (dim == 3)
-      {
-        F[dim - 1][dim - 1] = std::exp(0.01 * std::cos(t) - 0.01);
-        F[1][dim - 1]       = 0.1 * std::cos(t) - 0.1;
-      }
-    return F;
-  }
-
   template <int dim>
   void
   check_on_the_surface_after_every_return()
@@ -78,7 +61,7 @@ namespace
     unsigned int                               plastic_steps = 0;
     for (unsigned int s = 1; s <= 300; ++s)
       {
-        const Tensor<2, dim> F      = wandering_deformation<dim>(0.01 * s);
+        const Tensor<2, dim> F = test::wandering_deformation<dim>(0.01 * s);
         const double         before = p.model.plastic_strain(p.state());
         p.deform(F);
         EXPECT_LE(p.model.yield_function(principal(p.kirchhoff(F))), 1e-12)

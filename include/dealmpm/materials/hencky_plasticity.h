@@ -109,6 +109,16 @@ namespace dealmpm
     virtual std::array<double, 3>
     kirchhoff(const std::array<double, 3> &strain) const;
 
+    /** |dev eps|^2 of principal strains. */
+    static double
+    deviator_squared(const std::array<double, 3> &strain)
+    {
+      const double mean = (strain[0] + strain[1] + strain[2]) / 3.;
+      return (strain[0] - mean) * (strain[0] - mean) +
+             (strain[1] - mean) * (strain[1] - mean) +
+             (strain[2] - mean) * (strain[2] - mean);
+    }
+
     /** The stored energy of principal elastic strains, whose derivative
      * is kirchhoff(): K/2 tr(eps)^2 + G |dev eps|^2 unless a model says
      * otherwise. */
