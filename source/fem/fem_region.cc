@@ -11,6 +11,51 @@
 
 namespace dealmpm
 {
+  namespace
+  {
+    /** The prescribed displacements, velocities and tractions per
+     * boundary id, and their load curves. */
+    void
+    declare_prescribed_loads(ParameterHandler &prm)
+    {
+      const std::string vectors =
+        "Per boundary id a vector, items separated by ';', e.g. '1: 0, -0.01; "
+        "3: 0.01, 0'";
+      prm.declare_entry("Prescribed displacement",
+                        "",
+                        Patterns::Anything(),
+                        vectors + " (m): the nodes' displacement from their "
+                                  "start is that vector times 'Displacement "
+                                  "curve'.");
+      prm.declare_entry("Displacement curve",
+                        "",
+                        Patterns::Anything(),
+                        "Factor of 'Prescribed displacement' against time, "
+                        "'t0: f0, t1: f1, ...' piecewise linear, constant "
+                        "outside; empty for 1.");
+      prm.declare_entry("Prescribed velocity",
+                        "",
+                        Patterns::Anything(),
+                        vectors + " (m/s), times 'Velocity curve'.");
+      prm.declare_entry("Velocity curve",
+                        "",
+                        Patterns::Anything(),
+                        "Factor of 'Prescribed velocity' against time, like "
+                        "'Displacement curve'.");
+      prm.declare_entry("Traction",
+                        "",
+                        Patterns::Anything(),
+                        vectors + " (Pa): force per unit reference area "
+                                  "(nominal, a dead load), times 'Traction "
+                                  "curve'.");
+      prm.declare_entry("Traction curve",
+                        "",
+                        Patterns::Anything(),
+                        "Factor of 'Traction' against time, like "
+                        "'Displacement curve'.");
+    }
+  } // namespace
+
   template <int dim>
   void
   FemRegionSettings<dim>::declare_parameters(ParameterHandler &prm)
@@ -22,6 +67,17 @@ namespace dealmpm
                       "Polynomial degree k of the FE_Q(k) displacement: 1 or "
                       "2 (Q2 bends and nearly incompressible solids without "
                       "locking).");
+    prm.declare_entry(
+      "Anti-locking",
+      "none",
+      Patterns::Selection("none|F-bar"),
+      "Volumetric locking of Q1 cells: a material that deforms at constant "
+      "volume (plasticity, nu near 0.5) cannot follow a Q1 field with a "
+      "volume change of its own at every point, and the region comes out "
+      "too stiff. 'F-bar' gives each cell's points the cell's mean volume "
+      "change and keeps their own change of shape (de Souza Neto et al. "
+      "1996; the forces are the derivative of the energy, which an elastic "
+      "region keeps); 'none' leaves each point its own.");
     prm.declare_entry("Material",
                       "1",
                       Patterns::Integer(1),
@@ -38,41 +94,7 @@ namespace dealmpm
                       "Boundary ids of the region's mesh held in place "
                       "(rectangle: 0/1 at x min/max, 2/3 at y min/max, 4/5 "
                       "at z min/max; a Gmsh file: its physical tags).");
-    const std::string vectors =
-      "Per boundary id a vector, items separated by ';', e.g. '1: 0, -0.01; "
-      "3: 0.01, 0'";
-    prm.declare_entry("Prescribed displacement",
-                      "",
-                      Patterns::Anything(),
-                      vectors + " (m): the nodes' displacement from their "
-                                "start is that vector times 'Displacement "
-                                "curve'.");
-    prm.declare_entry("Displacement curve",
-                      "",
-                      Patterns::Anything(),
-                      "Factor of 'Prescribed displacement' against time, "
-                      "'t0: f0, t1: f1, ...' piecewise linear, constant "
-                      "outside; empty for 1.");
-    prm.declare_entry("Prescribed velocity",
-                      "",
-                      Patterns::Anything(),
-                      vectors + " (m/s), times 'Velocity curve'.");
-    prm.declare_entry("Velocity curve",
-                      "",
-                      Patterns::Anything(),
-                      "Factor of 'Prescribed velocity' against time, like "
-                      "'Displacement curve'.");
-    prm.declare_entry("Traction",
-                      "",
-                      Patterns::Anything(),
-                      vectors + " (Pa): force per unit reference area "
-                                "(nominal, a dead load), times 'Traction "
-                                "curve'.");
-    prm.declare_entry("Traction curve",
-                      "",
-                      Patterns::Anything(),
-                      "Factor of 'Traction' against time, like "
-                      "'Displacement curve'.");
+    declare_prescribed_loads(prm);
     prm.declare_entry(
       "Bonded boundaries",
       "",
@@ -158,6 +180,7 @@ namespace dealmpm
   {
     FemRegionSettings s;
     s.degree            = reader.get_integer("Degree");
+    s.f_bar             = reader.get("Anti-locking") == "F-bar";
     const long material = reader.get_integer("Material");
     if (material < 1 || material > static_cast<long>(n_materials))
       reader.fail("Material",
@@ -309,6 +332,7 @@ namespace dealmpm
     region.solid =
       std::make_unique<SolidRegion<dim>>(grid.comm, material, s.degree);
     SolidRegion<dim> &solid = *region.solid;
+    solid.use_f_bar(s.f_bar);
     read_coarse_mesh<dim>(reader, solid.get_triangulation());
     check_boundary_ids(reader, s, solid.get_triangulation());
     check_inside_grid(reader, solid.get_triangulation(), grid);

@@ -334,11 +334,22 @@ namespace dealmpm
     velocity.update_ghost_values();
   }
 
+  template <int dim>
+  void
+  SolidRegion<dim>::set_displacement(const Function<dim> &f)
+  {
+    for (const Node &node : nodes)
+      for (unsigned int d = 0; d < dim; ++d)
+        displacement.local_element(node.dof[d]) = f.value(node.X, d);
+    displacement.update_ghost_values();
+  }
+
 #define DEALMPM_INSTANTIATE(dim)                                               \
   template void SolidRegion<dim>::setup(const std::set<types::boundary_id> &); \
   template void SolidRegion<dim>::setup(                                       \
     const RegionBoundaryConditions<dim> &);                                    \
-  template void SolidRegion<dim>::set_velocity(const Function<dim> &);
+  template void SolidRegion<dim>::set_velocity(const Function<dim> &);         \
+  template void SolidRegion<dim>::set_displacement(const Function<dim> &);
   DEALMPM_INSTANTIATE(2)
   DEALMPM_INSTANTIATE(3)
 #undef DEALMPM_INSTANTIATE

@@ -174,6 +174,71 @@ namespace dealmpm
             }
       }
     };
+
+    /** F-bar kinematics (de Souza Neto et al. 1996, with the mean of the
+     * mean-dilatation method): a cell's points keep their own shape change
+     * and share the cell's volume change Jbar = sum w J / sum w (w = JxW,
+     * the reference volumes): Fbar = (Jbar / J)^(1/dim) F, and L with its
+     * trace replaced by the cell's rate of volume change sum w J tr L /
+     * sum w J (the rate of Jbar over Jbar). Returns Jbar. */
+    template <int dim, std::size_t n>
+    double
+    f_bar_kinematics(const double                  *JxW,
+                     const std::array<double, n>   &J,
+                     std::array<Tensor<2, dim>, n> &F,
+                     std::array<Tensor<2, dim>, n> &L)
+    {
+      double reference_volume = 0, volume = 0, volume_rate = 0;
+      for (unsigned int q = 0; q < n; ++q)
+        {
+          reference_volume += JxW[q];
+          volume += JxW[q] * J[q];
+          volume_rate += JxW[q] * J[q] * trace(L[q]);
+        }
+      const double J_bar = volume / reference_volume;
+      const double rate  = volume_rate / volume;
+      for (unsigned int q = 0; q < n; ++q)
+        {
+          F[q] *= std::pow(J_bar / J[q], 1. / dim);
+          const double shift = (rate - trace(L[q])) / dim;
+          for (unsigned int d = 0; d < dim; ++d)
+            L[q][d][d] += shift;
+        }
+      return J_bar;
+    }
+
+    /** F-bar's first Piola-Kirchhoff stresses from the points' Cauchy
+     * stresses @p sigma of Fbar: P = tau' F^-T with tau' = tau - p I +
+     * (J / Jbar) pbar I, tau = Jbar sigma the Kirchhoff stress, p = tr tau /
+     * dim and pbar = sum w p / sum w. That is the derivative of the strain
+     * energy sum w W(Fbar) with respect to the nodal displacements (a
+     * point's own pressure with its own J would not be, and an elastic
+     * region would not keep its energy). */
+    template <int dim, std::size_t n>
+    void
+    f_bar_stresses(const double                        *JxW,
+                   const std::array<double, n>         &J,
+                   const double                         J_bar,
+                   const std::array<Tensor<2, dim>, n> &F_inverse,
+                   const SymmetricTensor<2, dim>       *sigma,
+                   std::array<Tensor<2, dim>, n>       &P)
+    {
+      double weight = 0, mean_pressure = 0;
+      for (unsigned int q = 0; q < n; ++q)
+        {
+          weight += JxW[q];
+          mean_pressure += JxW[q] * J_bar * trace(sigma[q]) / dim;
+        }
+      mean_pressure /= weight;
+      for (unsigned int q = 0; q < n; ++q)
+        {
+          Tensor<2, dim> tau = J_bar * Tensor<2, dim>(sigma[q]);
+          const double shift = J[q] / J_bar * mean_pressure - trace(tau) / dim;
+          for (unsigned int d = 0; d < dim; ++d)
+            tau[d][d] += shift;
+          P[q] = tau * transpose(F_inverse[q]);
+        }
+    }
   } // namespace
 
   template <int dim>
@@ -212,6 +277,7 @@ namespace dealmpm
         L[q] = grad_v * F_inverse[q];
       }
     const std::size_t k = std::size_t(c) * n; // the cell's first point
+    const double J_bar  = f_bar ? f_bar_kinematics<dim>(&r.JxW[k], J, F, L) : 1;
     if (dt > 0)
       material.update_stresses(
         ArrayView<const Tensor<2, dim>>(L.data(), n),
@@ -219,14 +285,18 @@ namespace dealmpm
         dt,
         ArrayView<SymmetricTensor<2, dim>>(&stress[k], n),
         ArrayView<double>(internal.data() + k * n_internal, n * n_internal));
+    std::array<Tensor<2, dim>, n> P;
+    if (f_bar)
+      f_bar_stresses<dim>(&r.JxW[k], J, J_bar, F_inverse, &stress[k], P);
+    else
+      for (unsigned int q = 0; q < n; ++q)
+        P[q] = J[q] * Tensor<2, dim>(stress[k + q]) * transpose(F_inverse[q]);
     for (unsigned int q = 0; q < n; ++q)
       {
-        deformation[k + q] = F[q];
-        const Tensor<2, dim> P =
-          J[q] * Tensor<2, dim>(stress[k + q]) * transpose(F_inverse[q]);
+        deformation[k + q] = F[q]; // with F-bar, Fbar: the stress's F
         for (unsigned int a = 0; a < dim; ++a)
           for (unsigned int b = 0; b < dim; ++b)
-            cell.P[a][b][q] = P[a][b];
+            cell.P[a][b][q] = P[q][a][b];
       }
     cell.make_shares(grad, &r.JxW[k]);
     for (unsigned int s = 0; s < n; ++s)

@@ -36,7 +36,8 @@ namespace dealmpm
          const unsigned int n_bodies);
 
     unsigned int                  degree   = 1;
-    unsigned int                  material = 0; ///< 0-based
+    bool                          f_bar    = false; ///< 'Anti-locking'
+    unsigned int                  material = 0;     ///< 0-based
     Tensor<1, dim>                initial_velocity;
     RegionBoundaryConditions<dim> conditions;
     /** Bonded boundary id -> body (0-based). */

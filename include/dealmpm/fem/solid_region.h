@@ -108,9 +108,26 @@ namespace dealmpm
     void
     setup(const std::set<types::boundary_id> &fixed);
 
+    /** Anti-locking by F-bar (source/fem/solid_region_step.cc): each
+     * cell's points share its mean volume change, so that a Q1 region of
+     * a nearly incompressible or plastic material does not lock. Off by
+     * default. */
+    void
+    use_f_bar(const bool on)
+    {
+      f_bar = on;
+    }
+
     /** v = @p velocity at the nodes (at t = 0, the first half step's). */
     void
     set_velocity(const Function<dim> &velocity);
+
+    /** u = @p displacement at the nodes, from the reference positions;
+     * the quadrature points' F and stress follow at the next
+     * compute_forces() (tests: the forces against the energy's
+     * derivative). */
+    void
+    set_displacement(const Function<dim> &displacement);
 
     /** @} */
     /** @name The step (source/fem/solid_region_step.cc) */
@@ -531,6 +548,7 @@ namespace dealmpm
     std::vector<Tensor<2, dim>>          deformation;
     std::vector<double>                  internal;
     unsigned int                         n_internal = 0;
+    bool                                 f_bar      = false; ///< use_f_bar()
     double last_dt     = 0; ///< the step that made the current displacement
     double signal_rate = 0; ///< local_signal_rate() of the current F
     double work        = 0;
