@@ -56,4 +56,38 @@ namespace dealmpm
     const double w      = (t - before->first) / (next->first - before->first);
     return (1 - w) * before->second + w * next->second;
   }
+
+  namespace
+  {
+    /** The integral of the curve through @p points (at least one) from
+     * the first point's time to @p t: the trapezoids of the whole
+     * segments and the part of the one @p t is in; constant outside. */
+    double
+    from_first_point(const std::vector<std::pair<double, double>> &points,
+                     const double                                  t)
+    {
+      double sum = 0;
+      for (std::size_t k = 0; k + 1 < points.size(); ++k)
+        {
+          const auto [t0, f0] = points[k];
+          const auto [t1, f1] = points[k + 1];
+          if (t <= t0)
+            return sum + f0 * (t - t0);
+          const double s = std::min(t, t1) - t0; // the part in this segment
+          sum += s * (f0 + 0.5 * (f1 - f0) * s / (t1 - t0));
+          if (t <= t1)
+            return sum;
+        }
+      const auto [t_last, f_last] = points.back();
+      return sum + f_last * (t - t_last);
+    }
+  } // namespace
+
+  double
+  LoadCurve::integral(const double t) const
+  {
+    if (points.empty())
+      return t;
+    return from_first_point(points, t) - from_first_point(points, 0.);
+  }
 } // namespace dealmpm

@@ -1,4 +1,5 @@
 #include <dealmpm/effects/absorbing_boundary.h>
+#include <dealmpm/effects/base_shaking.h>
 #include <dealmpm/effects/boundary_friction.h>
 #include <dealmpm/effects/damage.h>
 #include <dealmpm/effects/effect.h>
@@ -36,6 +37,7 @@ namespace dealmpm
       add_boundary_friction_effect(r);
       add_local_damping_effect(r);
       add_absorbing_boundary_effect(r);
+      add_base_shaking_effect(r);
       add_rigid_body_effect(r);
       add_traction_effect(r);
       add_rotating_frame_effect(r);

@@ -163,6 +163,15 @@ expect 2 "Absorbing boundary/Boundary ids.*expected ids without a velocity condi
   "$scene" "${s[@]}" "${a[@]}" -s "Effects=absorbing boundary" -s "Grid/Boundary conditions=1: slip"
 expect 2 "Effects.*expected 'frictional contact' without 'absorbing boundary'" \
   "$scene" "${s[@]}" "${a[@]}" -s "Effects=frictional contact, absorbing boundary"
+b=(-s "Effects=base shaking" -s "Base shaking/Boundary ids=2" -s "Base shaking/Load curve=0: 0, 1: 1")
+expect 2 "Base shaking/Boundary ids.*expected ids without a velocity condition \(id 2 is 'slip'" \
+  "$scene" "${s[@]}" "${b[@]}" -s "Grid/Boundary conditions=2: slip"
+expect 2 "Base shaking/Density.*expected a positive number" \
+  "$scene" "${s[@]}" "${b[@]}" -s "Base shaking/Base=compliant"
+expect 2 "Base shaking/Load curve.*expected the record" \
+  "$scene" "${s[@]}" -s "Effects=base shaking" -s "Base shaking/Boundary ids=2"
+expect 2 "Effects.*expected 'frictional contact' without 'base shaking'" \
+  "$scene" "${s[@]}" "${b[@]}" -s "Effects=frictional contact, base shaking"
 t=(-s "Effects=traction")
 expect 2 "Traction/Bodies.*expected at least one body" "$scene" "${s[@]}" "${t[@]}"
 expect 2 "Traction/Bodies.*expected body numbers from 1 to the scene's 'Number of bodies' \(2\), not 3" \

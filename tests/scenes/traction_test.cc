@@ -118,6 +118,25 @@ TEST(Traction, LoadCurveIsPiecewiseLinearAndConstantOutside)
   EXPECT_THROW(LoadCurve::read(reader, "Load curve"), std::exception);
 }
 
+// The integral from 0 (a base velocity from an acceleration record): by
+// hand, the constant before the first point, the trapezoids, the part of
+// a segment (quadratic in t) and the constant after the last point.
+TEST(Traction, LoadCurveIntegralIsExact)
+{
+  ParameterHandler prm;
+  prm.declare_entry("Load curve", "", Patterns::Anything());
+  prm.set("Load curve", "1: 2, 3: 4");
+  const SceneReader reader(prm, "test.prm");
+  const LoadCurve   curve = LoadCurve::read(reader, "Load curve");
+  EXPECT_DOUBLE_EQ(curve.integral(0.), 0.);
+  EXPECT_DOUBLE_EQ(curve.integral(-1.), -2.);
+  EXPECT_DOUBLE_EQ(curve.integral(1.), 2.);
+  EXPECT_DOUBLE_EQ(curve.integral(2.), 4.5); // 2 + int_1^2 (1 + s) ds
+  EXPECT_DOUBLE_EQ(curve.integral(3.), 8.);
+  EXPECT_DOUBLE_EQ(curve.integral(5.), 16.);
+  EXPECT_DOUBLE_EQ(LoadCurve().integral(2.5), 2.5);
+}
+
 // The surface particles' faces close around the block: their area vectors
 // sum to zero and those facing +x add up to its height.
 TEST(Traction, SurfaceFacesCloseAroundTheBody)

@@ -26,6 +26,11 @@ namespace dealmpm
     double
     operator()(const double t) const;
 
+    /** The integral from 0 to @p t (negative for t < 0), exact for the
+     * piecewise linear curve: a velocity from an acceleration record. */
+    double
+    integral(const double t) const;
+
   private:
     std::vector<std::pair<double, double>> points;
   };

@@ -1,0 +1,201 @@
+// Base shaking (effect 'base shaking'): a 1D elastic column of height H
+// (one cell across between slip walls, nu = 0: a plane P wave, c = sqrt(E
+// / rho) = 100 m/s) shaken at its base, against the closed forms of a
+// column on rock (k = omega / c, alpha = rho c / (rho_r c_r) the
+// impedance ratio, no material damping):
+// - compliant base, the record the outcrop motion w: top / w = 1 /
+//   |cos kH + i alpha sin kH|, 1 / alpha at the first resonance f1 = c /
+//   4H and 1 at 2 f1; waves going down leave through the base, so that the
+//   start's transient dies (by (1 - alpha) / (1 + alpha) a round trip);
+// - rigid base: top / base = 1 / cos kH (at f1 / 2, sqrt 2); nothing
+//   leaves, so the column starts in that steady state (v = V cos k(H - x)
+//   / cos kH, no strain) with the base at V cos(omega t), under MUSL (the
+//   base re-imposed after the re-map) and USL.
+// A record given as an acceleration is integrated exactly: the same
+// answer as its velocity.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+
+#include "test_scene.h"
+
+using namespace dealmpm;
+
+namespace
+{
+  constexpr double H = 1, c = 100, rho = 1000, W = 1e-3;
+  constexpr double f1 = c / (4 * H);
+
+  /** A record of @p periods periods of W sin(2 pi f t) (or its derivative
+   * W 2 pi f cos(2 pi f t) for an acceleration), or cos for @p cosine, 64
+   * points a period; 0 after (sin) or the last value held. */
+  std::string
+  sine_record(const double f,
+              const double periods,
+              const bool   cosine,
+              const bool   acceleration)
+  {
+    std::ostringstream s;
+    s.precision(17);
+    const unsigned int n = static_cast<unsigned int>(64 * periods);
+    for (unsigned int i = 0; i <= n; ++i)
+      {
+        const double t     = i / (64. * f);
+        const double phase = 2 * M_PI * f * t;
+        double       value = cosine ? std::cos(phase) : std::sin(phase);
+        if (acceleration)
+          value = 2 * M_PI * f * (cosine ? -std::sin(phase) : std::cos(phase));
+        s << (i ? ", " : "") << t << ": " << value;
+      }
+    return s.str();
+  }
+
+  /** The column's scene: base id 0 at x = 0, free top at x = H. */
+  std::string
+  column(const std::string &base,
+         const std::string &record,
+         const bool         acceleration,
+         const std::string &scheme)
+  {
+    std::ostringstream s;
+    s.precision(17);
+    s << "set Effects = base shaking\n"
+      << "subsection MPM\n set Stress update = " << scheme << "\nend\n"
+      << "subsection Base shaking\n set Boundary ids = 0\n set Base = " << base
+      << "\n set Motion = " << (acceleration ? "acceleration" : "velocity")
+      << "\n set Amplitude = " << W << ", 0\n set Load curve = " << record
+      << "\n set Density = " << 2 * rho << "\n set P-wave speed = " << c
+      << "\n set S-wave speed = " << c / 2 << "\nend\n"
+      << "subsection Grid\n set Upper corner = " << H << ", " << H / 40
+      << "\n set Cells = 40, 1\n set Boundary conditions = 2: slip, 3: "
+         "slip\nend\n"
+      << "subsection Material 1\n set Density = " << rho
+      << "\n subsection linear elastic\n  set Young's modulus = " << rho * c * c
+      << "\n  set Poisson's ratio = 0\n end\nend\n"
+      << "subsection Body 1\n set Upper corner = " << H << ", " << H / 40
+      << "\nend\n";
+    return s.str();
+  }
+
+  /** The mean x velocity of the particles in the top cell. */
+  double
+  top_velocity(Simulation<2> &simulation)
+  {
+    const CoreFields &f      = simulation.particle_set().fields;
+    double            sum[2] = {0, 0};
+    for (const auto &p : simulation.particle_set().handler)
+      if (p.get_location()[0] > H * (1 - 1. / 40))
+        {
+          sum[0] += p.get_properties()[f.velocity];
+          sum[1] += 1;
+        }
+    return Utilities::MPI::sum(sum[0], MPI_COMM_WORLD) /
+           Utilities::MPI::sum(sum[1], MPI_COMM_WORLD);
+  }
+
+  struct Shaken
+  {
+    double amplification; ///< the top's largest |v| in the last period / W
+    double balance;       ///< |E - W_base| / the largest E over the run
+  };
+
+  /** Run to @p periods periods of frequency @p f, the top's amplitude
+   * taken over the last one. */
+  Shaken
+  shake(Simulation<2> &simulation, const double f, const double periods)
+  {
+    const double end = periods / f;
+    const double E0  = simulation.statistics().total_energy();
+    double       top = 0, largest_energy = E0;
+    while (simulation.time() < end - 1e-12)
+      {
+        simulation.advance(
+          std::min(simulation.time_step(), end - simulation.time()));
+        if (simulation.time() > end - 1 / f)
+          top = std::max(top, std::abs(top_velocity(simulation)));
+        const Statistics s = simulation.statistics();
+        largest_energy     = std::max(largest_energy, s.total_energy());
+      }
+    const Statistics s = simulation.statistics();
+    return {top / W,
+            std::abs(s.total_energy() - simulation.external_work() - E0) /
+              largest_energy};
+  }
+
+  /** The energy balance's tolerance. The base's work is counted as the
+   * other effects' with the velocity it leaves, m (v* - v) . v*; against a
+   * moving base that count drifts by about 1 % of the column's energy a
+   * period (seen: 1.2 % rigid at f1 / 2, 0.9 % compliant at 0.9 f1, 0.05 %
+   * at f1), of the order of omega dt a period: over 8 periods, 10 %. A
+   * sign error or a missing factor 2 in the incoming wave misses by the
+   * whole energy. */
+  constexpr double energy_tolerance = 0.1;
+
+  Shaken
+  compliant(const double f, const std::string &scheme, const bool acceleration)
+  {
+    auto simulation =
+      test::make_simulation<2>(column("compliant",
+                                      sine_record(f, 8, false, acceleration),
+                                      acceleration,
+                                      scheme));
+    return shake(*simulation, f, 8);
+  }
+
+  /** The rigid base at f1 / 2, started in the steady state. */
+  Shaken
+  rigid(const std::string &scheme)
+  {
+    const double f = f1 / 2, k = 2 * M_PI * f / c;
+    auto         simulation = test::make_simulation<2>(
+      column("rigid", sine_record(f, 3, true, false), false, scheme));
+    const CoreFields &fields = simulation->particle_set().fields;
+    for (auto &p : simulation->particle_set().handler)
+      p.get_properties()[fields.velocity] =
+        W * std::cos(k * (H - p.get_location()[0])) / std::cos(k * H);
+    return shake(*simulation, f, 2);
+  }
+} // namespace
+
+// A compliant base: 1 / |cos kH + i alpha sin kH| of the outcrop motion,
+// 1 / alpha = 2 at the first resonance, under each scheme (MUSL and USF
+// set the dashpots' velocity again after their re-map: without, 2.113),
+// beside it and at twice it (1); the record as an acceleration gives the
+// velocity's answer. Tolerance: the column's 160 cells a wavelength and the
+// record's 64 points a period put the closed form within 0.1 %; 2 %.
+TEST(BaseShaking, CompliantBaseAmplifiesAsTheTransferFunction)
+{
+  const double alpha = 0.5;
+  for (const std::string scheme : {"USL", "MUSL", "USF"})
+    for (const double ratio : {1., 0.9, 2.})
+      {
+        const Shaken shaken = compliant(ratio * f1, scheme, false);
+        const double kH     = M_PI / 2 * ratio;
+        const double exact = 1 / std::hypot(std::cos(kH), alpha * std::sin(kH));
+        std::cout << "compliant base, alpha = 0.5, " << scheme
+                  << ", f / f1 = " << ratio << ": top / outcrop "
+                  << shaken.amplification << " (" << exact
+                  << "), energy balance " << shaken.balance << std::endl;
+        EXPECT_NEAR(shaken.amplification / exact, 1., 0.02);
+        EXPECT_LT(shaken.balance, energy_tolerance);
+      }
+  EXPECT_NEAR(compliant(f1, "MUSL", true).amplification,
+              compliant(f1, "MUSL", false).amplification,
+              1e-3);
+}
+
+// A rigid base at f1 / 2: sqrt 2, under MUSL and USL (1.4140 seen).
+TEST(BaseShaking, RigidBaseAmplifiesAsTheTransferFunction)
+{
+  const Shaken musl = rigid("MUSL");
+  const Shaken usl  = rigid("USL");
+  std::cout << "rigid base: top / base at f1 / 2, MUSL " << musl.amplification
+            << ", USL " << usl.amplification << " (" << std::sqrt(2.)
+            << "); energy balance " << musl.balance << ", " << usl.balance
+            << std::endl;
+  EXPECT_NEAR(musl.amplification, std::sqrt(2.), 0.03);
+  EXPECT_NEAR(usl.amplification, std::sqrt(2.), 0.03);
+  EXPECT_LT(musl.balance, energy_tolerance);
+  EXPECT_LT(usl.balance, energy_tolerance);
+}
