@@ -207,21 +207,25 @@ namespace dealmpm
       return J_bar;
     }
 
-    /** F-bar's first Piola-Kirchhoff stresses from the points' Cauchy
-     * stresses @p sigma of Fbar: P = tau' F^-T with tau' = tau - p I +
-     * (J / Jbar) pbar I, tau = Jbar sigma the Kirchhoff stress, p = tr tau /
-     * dim and pbar = sum w p / sum w. That is the derivative of the strain
-     * energy sum w W(Fbar) with respect to the nodal displacements (a
-     * point's own pressure with its own J would not be, and an elastic
-     * region would not keep its energy). */
+    /** F-bar's first Piola-Kirchhoff stresses into the cell's @p P from the
+     * points' Cauchy stresses @p sigma of Fbar, and Fbar into
+     * @p deformation: P = tau' F^-T with tau' = tau - p I + (J / Jbar) pbar
+     * I, tau = Jbar sigma the Kirchhoff stress, p = tr tau / dim and pbar =
+     * sum w p / sum w. That is the derivative of the strain energy sum w
+     * W(Fbar) with respect to the nodal displacements (a point's own
+     * pressure with its own J would not be, and an elastic region would not
+     * keep its energy). A function of its own: in the force loop, its
+     * arrays slowed the loop without F-bar by a third. */
     template <int dim, std::size_t n>
     void
-    f_bar_stresses(const double                        *JxW,
-                   const std::array<double, n>         &J,
-                   const double                         J_bar,
-                   const std::array<Tensor<2, dim>, n> &F_inverse,
-                   const SymmetricTensor<2, dim>       *sigma,
-                   std::array<Tensor<2, dim>, n>       &P)
+    store_f_bar_stresses(double (&P)[dim][dim][n],
+                         const double                        *JxW,
+                         const std::array<double, n>         &J,
+                         const double                         J_bar,
+                         const std::array<Tensor<2, dim>, n> &F,
+                         const std::array<Tensor<2, dim>, n> &F_inverse,
+                         const SymmetricTensor<2, dim>       *sigma,
+                         Tensor<2, dim>                      *deformation)
     {
       double weight = 0, mean_pressure = 0;
       for (unsigned int q = 0; q < n; ++q)
@@ -232,11 +236,15 @@ namespace dealmpm
       mean_pressure /= weight;
       for (unsigned int q = 0; q < n; ++q)
         {
+          deformation[q]     = F[q];
           Tensor<2, dim> tau = J_bar * Tensor<2, dim>(sigma[q]);
           const double shift = J[q] / J_bar * mean_pressure - trace(tau) / dim;
           for (unsigned int d = 0; d < dim; ++d)
             tau[d][d] += shift;
-          P[q] = tau * transpose(F_inverse[q]);
+          const Tensor<2, dim> P_q = tau * transpose(F_inverse[q]);
+          for (unsigned int a = 0; a < dim; ++a)
+            for (unsigned int b = 0; b < dim; ++b)
+              P[a][b][q] = P_q[a][b];
         }
     }
   } // namespace
@@ -285,19 +293,25 @@ namespace dealmpm
         dt,
         ArrayView<SymmetricTensor<2, dim>>(&stress[k], n),
         ArrayView<double>(internal.data() + k * n_internal, n * n_internal));
-    std::array<Tensor<2, dim>, n> P;
     if (f_bar)
-      f_bar_stresses<dim>(&r.JxW[k], J, J_bar, F_inverse, &stress[k], P);
+      store_f_bar_stresses<dim>(cell.P,
+                                &r.JxW[k],
+                                J,
+                                J_bar,
+                                F, // Fbar: the stress's F
+                                F_inverse,
+                                &stress[k],
+                                &deformation[k]);
     else
       for (unsigned int q = 0; q < n; ++q)
-        P[q] = J[q] * Tensor<2, dim>(stress[k + q]) * transpose(F_inverse[q]);
-    for (unsigned int q = 0; q < n; ++q)
-      {
-        deformation[k + q] = F[q]; // with F-bar, Fbar: the stress's F
-        for (unsigned int a = 0; a < dim; ++a)
-          for (unsigned int b = 0; b < dim; ++b)
-            cell.P[a][b][q] = P[q][a][b];
-      }
+        {
+          deformation[k + q] = F[q];
+          const Tensor<2, dim> P =
+            J[q] * Tensor<2, dim>(stress[k + q]) * transpose(F_inverse[q]);
+          for (unsigned int a = 0; a < dim; ++a)
+            for (unsigned int b = 0; b < dim; ++b)
+              cell.P[a][b][q] = P[a][b];
+        }
     cell.make_shares(grad, &r.JxW[k]);
     for (unsigned int s = 0; s < n; ++s)
       for (unsigned int a = 0; a < dim; ++a)

@@ -81,25 +81,48 @@ namespace dealmpm
                                 const MohrCoulombParameters &mc)
     : HenckyPlasticity<dim>(lame)
     , parameters(mc)
-    , sin_phi(std::sin(mc.friction_angle))
-    , sin_psi(std::sin(mc.dilation_angle))
-    , two_c_cos_phi(2 * mc.cohesion * std::cos(mc.friction_angle))
+    , peak(softened(0.))
   {}
 
   template <int dim>
-  double
-  MohrCoulomb<dim>::yield_function(std::array<double, 3> tau) const
+  typename MohrCoulomb<dim>::Strength
+  MohrCoulomb<dim>::softened(const double plastic_strain) const
   {
+    const MohrCoulombParameters &p = parameters;
+    const double                 s = p.softening_strain > 0 ?
+                                       std::min(plastic_strain / p.softening_strain, 1.) :
+                                       0.;
+    const double                 phi =
+      p.friction_angle + s * (p.residual_friction_angle - p.friction_angle);
+    const double psi =
+      p.dilation_angle + s * (p.residual_dilation_angle - p.dilation_angle);
+    const double c = p.cohesion + s * (p.residual_cohesion - p.cohesion);
+    return {std::sin(phi),
+            std::sin(psi),
+            2 * c * std::cos(phi),
+            phi > 0 ? c / std::tan(phi) :
+                      std::numeric_limits<double>::quiet_NaN()};
+  }
+
+  template <int dim>
+  double
+  MohrCoulomb<dim>::yield_function(std::array<double, 3> tau,
+                                   const double          plastic_strain) const
+  {
+    const Strength s = strength(plastic_strain);
     std::sort(tau.begin(), tau.end(), std::greater<double>());
-    return tau[0] - tau[2] + (tau[0] + tau[2]) * sin_phi - two_c_cos_phi;
+    return tau[0] - tau[2] + (tau[0] + tau[2]) * s.sin_phi - s.two_c_cos_phi;
   }
 
   template <int dim>
   void
-  MohrCoulomb<dim>::return_mohr_coulomb(std::array<double, 3> &tau) const
+  MohrCoulomb<dim>::return_mohr_coulomb(std::array<double, 3> &tau,
+                                        const Strength        &strength) const
   {
-    if (!(yield_function(tau) > 0))
-      return;
+    const double sin_phi = strength.sin_phi, sin_psi = strength.sin_psi;
+    const double two_c_cos_phi = strength.two_c_cos_phi;
+    if (!(tau[0] - tau[2] + (tau[0] + tau[2]) * sin_phi - two_c_cos_phi > 0))
+      return; // tau is sorted
     const double G      = this->shear_modulus;
     const double lambda = this->bulk_modulus - 2. * G / 3.;
     const double up = 1 + sin_phi, down = 1 - sin_phi;
@@ -132,10 +155,10 @@ namespace dealmpm
         return;
       }
     // The apex (Tresca, phi = 0, has none: its edges always hold).
-    const double apex =
-      sin_phi > 0 ? parameters.cohesion / std::tan(parameters.friction_angle) :
-                    (tau[0] + tau[1] + tau[2]) / 3.;
-    tau = {{apex, apex, apex}};
+    const double apex = std::isnan(strength.apex) ?
+                          (tau[0] + tau[1] + tau[2]) / 3. :
+                          strength.apex;
+    tau               = {{apex, apex, apex}};
   }
 
   template <int dim>
@@ -166,11 +189,12 @@ namespace dealmpm
   double
   MohrCoulomb<dim>::return_to_surface(std::array<double, 3> &strain,
                                       const double,
-                                      ArrayView<double>) const
+                                      ArrayView<double> internal) const
   {
-    std::array<double, 3> tau = this->kirchhoff(strain);
+    const double          plastic_strain = this->plastic_strain(internal);
+    std::array<double, 3> tau            = this->kirchhoff(strain);
     const bool            plastic =
-      yield_function(tau) > 0 ||
+      yield_function(tau, plastic_strain) > 0 ||
       *std::max_element(tau.begin(), tau.end()) > parameters.tension_cut_off;
     if (!plastic)
       return 0;
@@ -182,7 +206,7 @@ namespace dealmpm
       return tau[i] > tau[j];
     });
     Principal sorted_tau = {{tau[order[0]], tau[order[1]], tau[order[2]]}};
-    return_mohr_coulomb(sorted_tau);
+    return_mohr_coulomb(sorted_tau, strength(plastic_strain));
     return_tension_cut_off(sorted_tau);
 
     const double K = this->bulk_modulus, G = this->shear_modulus;
@@ -225,6 +249,56 @@ namespace dealmpm
                         Patterns::Double(),
                         "T (Pa), >= 0: the largest principal stress with the "
                         "Tension cut-off.");
+      prm.declare_entry(
+        "Softening strain",
+        "0",
+        Patterns::Double(0),
+        "Equivalent plastic strain at which the strength has fallen "
+        "linearly from the peak (Cohesion, Friction angle, Dilation angle) "
+        "to the residual values below; 0: no softening. Softening localises "
+        "in a band about a cell wide, so that this strain belongs to the "
+        "cell size it was chosen for: a finer grid softens faster.");
+      prm.declare_entry("Residual cohesion",
+                        "0",
+                        Patterns::Double(0),
+                        "c_r (Pa), <= Cohesion, with a Softening strain.");
+      prm.declare_entry("Residual friction angle",
+                        "0",
+                        Patterns::Double(0),
+                        "phi_r (degrees), <= Friction angle, with a "
+                        "Softening strain.");
+      prm.declare_entry("Residual dilation angle",
+                        "0",
+                        Patterns::Double(0),
+                        "psi_r (degrees), <= Residual friction angle and "
+                        "<= Dilation angle, with a Softening strain.");
+    }
+
+    /** The residual strength of a softening material (its checks). */
+    void
+    read_softening(SceneReader &reader, MohrCoulombParameters &mc)
+    {
+      mc.softening_strain = reader.get_nonnegative("Softening strain");
+      if (!(mc.softening_strain > 0))
+        return;
+      const double degree  = M_PI / 180.;
+      mc.residual_cohesion = reader.get_nonnegative("Residual cohesion");
+      mc.residual_friction_angle =
+        reader.get_nonnegative("Residual friction angle") * degree;
+      mc.residual_dilation_angle =
+        reader.get_nonnegative("Residual dilation angle") * degree;
+      if (mc.residual_cohesion > mc.cohesion)
+        reader.fail("Residual cohesion", "at most the Cohesion");
+      if (mc.residual_friction_angle > mc.friction_angle)
+        reader.fail("Residual friction angle", "at most the Friction angle");
+      if (mc.residual_dilation_angle > mc.residual_friction_angle ||
+          mc.residual_dilation_angle > mc.dilation_angle)
+        reader.fail("Residual dilation angle",
+                    "at most the Residual friction angle and the Dilation "
+                    "angle");
+      if (mc.residual_friction_angle == 0 && !(mc.residual_cohesion > 0))
+        reader.fail("Residual cohesion",
+                    "a positive number when Residual friction angle is 0");
     }
 
     MohrCoulombParameters
@@ -240,6 +314,7 @@ namespace dealmpm
       const double strength = reader.get_nonnegative("Tensile strength");
       if (reader.get_bool("Tension cut-off"))
         mc.tension_cut_off = strength;
+      read_softening(reader, mc);
       return mc;
     }
   } // namespace
@@ -251,10 +326,12 @@ namespace dealmpm
     registry.add(
       "Mohr-Coulomb",
       "non-associative Mohr-Coulomb plasticity on Hencky elasticity, "
-      "perfectly plastic, principal-stress return to a plane, an edge "
-      "or the apex, optional tension cut-off (Young's modulus, "
-      "Poisson's ratio, Friction angle, Dilation angle, Cohesion, "
-      "Tension cut-off, Tensile strength); for soils and rock.",
+      "perfectly plastic or softening with the plastic strain, "
+      "principal-stress return to a plane, an edge or the apex, optional "
+      "tension cut-off (Young's modulus, Poisson's ratio, Friction angle, "
+      "Dilation angle, Cohesion, Tension cut-off, Tensile strength, "
+      "Softening strain, Residual cohesion, Residual friction angle, "
+      "Residual dilation angle); for soils and rock.",
       declare_mohr_coulomb_parameters,
       [](SceneReader &reader) -> std::unique_ptr<Material<dim>> {
         const LameParameters lame = read_elastic_constants(reader);

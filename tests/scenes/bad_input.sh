@@ -41,6 +41,9 @@ expect 1 "unknown option" "$scene" --frobnicate
 # lines, and a soil cannot be less than normally consolidated.
 expect 2 "Material 1/Modified Cam-Clay/Compression index.*a number > the Swelling index" "$scene" "${s[@]}" \
   -s "Material 1/Model=Modified Cam-Clay" -s "Material 1/Modified Cam-Clay/Compression index=0.01"
+expect 2 "Material 1/Mohr-Coulomb/Residual cohesion.*at most the Cohesion" "$scene" "${s[@]}" \
+  -s "Material 1/Model=Mohr-Coulomb" -s "Material 1/Mohr-Coulomb/Softening strain=0.1" \
+  -s "Material 1/Mohr-Coulomb/Residual cohesion=1e9"
 expect 2 "Material 1/Modified Cam-Clay/Overconsolidation ratio.*a number >= 1" "$scene" "${s[@]}" \
   -s "Material 1/Model=Modified Cam-Clay" -s "Material 1/Modified Cam-Clay/Overconsolidation ratio=0.5"
 # A model only the example registers: plain dealmpm names the entry and the models it knows.

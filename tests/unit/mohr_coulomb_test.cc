@@ -211,3 +211,52 @@ TEST(MohrCoulomb, SimpleShearToGammaTen)
   EXPECT_NEAR(trace(tau) / 3., 10. * -0.03, 1e-9); // 2000 returns of round-off
   EXPECT_GT(p.model.plastic_strain(p.state()), 5.);
 }
+
+// Strain softening in triaxial compression (confined at log strain -0.01,
+// then an isochoric axial shortening in small steps): every plastic step
+// ends on the surface of the strength its plastic strain started from,
+// the plastic work grows, the deviator peaks and falls, and past the
+// softening strain the stress stays on the residual surface.
+TEST(MohrCoulomb, SofteningFallsToTheResidualStrength)
+{
+  MohrCoulombParameters mc   = rock(30, 10, 0.02);
+  mc.softening_strain        = 0.05;
+  mc.residual_cohesion       = 0.005;
+  mc.residual_friction_angle = 20 * M_PI / 180.;
+  mc.residual_dilation_angle = 0;
+  test::MaterialPoint<3, MohrCoulomb<3>> p(rock_lame, mc);
+  double                                 work = 0, peak = 0, last = 0;
+  unsigned int                           plastic_steps = 0;
+  for (unsigned int s = 1; s <= 400; ++s)
+    {
+      const double       e = -0.2 * s / 400.;
+      const Tensor<2, 3> F = diagonal(-0.01 - e / 2, -0.01 - e / 2, -0.01 + e);
+      const double       before = p.model.plastic_strain(p.state());
+      p.deform(F);
+      const auto tau = principal(p.kirchhoff(F));
+      if (p.model.plastic_strain(p.state()) > before)
+        {
+          ++plastic_steps;
+          EXPECT_NEAR(p.model.yield_function(tau, before), 0, 1e-12)
+            << "step " << s;
+        }
+      EXPECT_GE(p.model.dissipated_energy_density(p.state()), work - 1e-15);
+      work = p.model.dissipated_energy_density(p.state());
+      last = tau[0] - tau[2];
+      peak = std::max(peak, last);
+    }
+  const auto tau =
+    principal(p.kirchhoff(diagonal(-0.01 + 0.1, -0.01 + 0.1, -0.01 - 0.2)));
+  EXPECT_GT(plastic_steps, 300u);
+  EXPECT_GT(p.model.plastic_strain(p.state()), 2 * mc.softening_strain);
+  // The residual surface: tau_1 - tau_3 = 2 c_r cos(phi_r) - (tau_1 +
+  // tau_3) sin(phi_r).
+  const double sin_r = std::sin(mc.residual_friction_angle);
+  EXPECT_NEAR(tau[0] - tau[2],
+              2 * mc.residual_cohesion * std::cos(mc.residual_friction_angle) -
+                (tau[0] + tau[2]) * sin_r,
+              1e-12);
+  EXPECT_LT(last, 0.8 * peak);
+  std::cout << "softening: peak deviator " << peak << ", residual " << last
+            << std::endl;
+}

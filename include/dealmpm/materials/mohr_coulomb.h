@@ -14,6 +14,14 @@ namespace dealmpm
     double cohesion       = 0;
     /** The largest principal stress allowed (Pa); +infinity: no cut-off. */
     double tension_cut_off = std::numeric_limits<double>::infinity();
+    /** Strain softening: the cohesion and the friction and dilation angles
+     * fall linearly with the equivalent plastic strain, from the values
+     * above at 0 to these residual ones at softening_strain, and stay
+     * there; softening_strain = 0: none (the residual values unused). */
+    double softening_strain        = 0;
+    double residual_friction_angle = 0;
+    double residual_dilation_angle = 0;
+    double residual_cohesion       = 0;
   };
 
   /**
@@ -27,6 +35,13 @@ namespace dealmpm
    * al. 2008, Boxes 8.4 and 8.5; Clausen et al. 2006). The optional tension
    * cut-off (Rankine, tau_a <= T) returns after the Mohr-Coulomb return,
    * which it keeps admissible: it only lowers f.
+   *
+   * With softening, a step returns to the strength of the plastic strain
+   * the step starts from (explicit in the softening: the step's own
+   * plastic strain softens the next step). Softening localises in a band
+   * about a cell wide, so that the load after the peak depends on the
+   * cell size: the softening strain is a property of the band's width,
+   * and a finer grid softens faster (doc/guide/materials.md).
    */
   template <int dim>
   class MohrCoulomb : public HenckyPlasticity<dim>
@@ -34,9 +49,12 @@ namespace dealmpm
   public:
     MohrCoulomb(const LameParameters &lame, const MohrCoulombParameters &mc);
 
-    /** f of sorted or unsorted principal stresses (the largest pair). */
+    /** f of sorted or unsorted principal stresses (the largest pair), with
+     * the strength at equivalent plastic strain @p plastic_strain (the
+     * peak at 0). */
     double
-    yield_function(std::array<double, 3> tau) const;
+    yield_function(std::array<double, 3> tau,
+                   const double          plastic_strain = 0) const;
 
   protected:
     double
@@ -45,16 +63,32 @@ namespace dealmpm
                       ArrayView<double>      internal) const override;
 
   private:
+    /** The surface's constants at an equivalent plastic strain. */
+    struct Strength
+    {
+      double sin_phi, sin_psi, two_c_cos_phi;
+      double apex; ///< c cot(phi); NaN for Tresca (phi = 0): none
+    };
+    /** The peak's without softening (computed once). */
+    Strength
+    strength(const double plastic_strain) const
+    {
+      return parameters.softening_strain > 0 ? softened(plastic_strain) : peak;
+    }
+    Strength
+    softened(const double plastic_strain) const;
+
     /** Return sorted principal stresses to the Mohr-Coulomb surface. */
     void
-    return_mohr_coulomb(std::array<double, 3> &tau) const;
+    return_mohr_coulomb(std::array<double, 3> &tau,
+                        const Strength        &strength) const;
 
     /** Return sorted principal stresses to tau_a <= T. */
     void
     return_tension_cut_off(std::array<double, 3> &tau) const;
 
     MohrCoulombParameters parameters;
-    double                sin_phi, sin_psi, two_c_cos_phi;
+    Strength              peak;
   };
 
   /** Register "Mohr-Coulomb" in the material table: its parameters (subsection
