@@ -1,6 +1,8 @@
 #pragma once
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
 
 #include <dealmpm/core/simulation.h>
 #include <dealmpm/fem/solid_region.h>
@@ -14,6 +16,31 @@
 
 namespace dealmpm::test
 {
+  /** The curved mesh: the unit box's interior points moved by a smooth
+   * map, so that no cell is a parallelogram. */
+  template <int dim>
+  void
+  make_curved_mesh(Triangulation<dim> &tria, const unsigned int cells)
+  {
+    std::vector<unsigned int> repetitions(dim, cells);
+    repetitions[0] = cells + 1;
+    Point<dim> upper;
+    for (unsigned int d = 0; d < dim; ++d)
+      upper[d] = 1.;
+    GridGenerator::subdivided_hyper_rectangle(tria,
+                                              repetitions,
+                                              Point<dim>(),
+                                              upper);
+    GridTools::transform(
+      [](const Point<dim> &x) {
+        Point<dim> y = x;
+        for (unsigned int d = 0; d < dim; ++d)
+          y[d] += 0.08 * std::sin(3. * x[(d + 1) % dim] + d) * x[d];
+        return y;
+      },
+      tria);
+  }
+
   /** A Simulation from scene text, quiet (no progress line, no output). */
   template <int dim>
   std::unique_ptr<Simulation<dim>>

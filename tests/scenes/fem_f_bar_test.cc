@@ -21,7 +21,6 @@
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/grid/grid_generator.h>
-#include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparse_direct.h>
@@ -36,6 +35,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+
+#include "test_scene.h"
 
 using namespace dealmpm;
 
@@ -86,30 +87,6 @@ namespace
     const double         s;
   };
 
-  /** The unit box with one more cell in x, its interior moved by a
-   * smooth map: no cell is a parallelogram. */
-  template <int dim>
-  void
-  make_curved_box(Triangulation<dim> &tria, const unsigned int cells)
-  {
-    std::vector<unsigned int> repetitions(dim, cells);
-    repetitions[0] = cells + 1;
-    Point<dim> upper;
-    for (unsigned int d = 0; d < dim; ++d)
-      upper[d] = 1.;
-    GridGenerator::subdivided_hyper_rectangle(tria,
-                                              repetitions,
-                                              Point<dim>(),
-                                              upper);
-    GridTools::transform(
-      [](const Point<dim> &x) {
-        Point<dim> y = x;
-        for (unsigned int d = 0; d < dim; ++d)
-          y[d] += 0.08 * std::sin(3. * x[(d + 1) % dim] + d) * x[d];
-        return y;
-      },
-      tria);
-  }
 
   /** The region's energy after its displacement is set to @p u (the
    * points' F and stress made by compute_forces()). */
@@ -134,7 +111,7 @@ namespace
     material.density = 1;
     SolidRegion<dim> region(MPI_COMM_WORLD, material, degree);
     region.use_f_bar(true);
-    make_curved_box(region.get_triangulation(), 2);
+    test::make_curved_mesh(region.get_triangulation(), 2);
     region.setup(std::set<types::boundary_id>{});
     const double dt = 1e-3;
     region.step(dt); // a step made: compute_forces() updates the stress

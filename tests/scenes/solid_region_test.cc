@@ -25,6 +25,8 @@
 
 #include <cmath>
 
+#include "test_scene.h"
+
 using namespace dealmpm;
 
 namespace
@@ -139,30 +141,6 @@ namespace
     }
   };
 
-  /** The curved mesh: the unit box's interior points moved by a smooth
-   * map, so that no cell is a parallelogram. */
-  template <int dim>
-  void
-  make_curved_mesh(Triangulation<dim> &tria, const unsigned int cells)
-  {
-    std::vector<unsigned int> repetitions(dim, cells);
-    repetitions[0] = cells + 1;
-    Point<dim> upper;
-    for (unsigned int d = 0; d < dim; ++d)
-      upper[d] = 1.;
-    GridGenerator::subdivided_hyper_rectangle(tria,
-                                              repetitions,
-                                              Point<dim>(),
-                                              upper);
-    GridTools::transform(
-      [](const Point<dim> &x) {
-        Point<dim> y = x;
-        for (unsigned int d = 0; d < dim; ++d)
-          y[d] += 0.08 * std::sin(3. * x[(d + 1) % dim] + d) * x[d];
-        return y;
-      },
-      tria);
-  }
 
   /** The force and the signal rate of a plain assembly, after one step
    * with the swirl's velocity; their largest difference from the
@@ -174,7 +152,7 @@ namespace
     NeoHookean<dim> material(LameParameters{2e3, 1e3});
     material.density = 1;
     SolidRegion<dim> region(MPI_COMM_WORLD, material, degree);
-    make_curved_mesh(region.get_triangulation(), 2);
+    test::make_curved_mesh(region.get_triangulation(), 2);
     region.setup(std::set<types::boundary_id>{});
     region.set_velocity(Swirl<dim>());
     const double dt = 0.05; // strains of a few percent
