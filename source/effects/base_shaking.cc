@@ -46,7 +46,7 @@ namespace dealmpm
   {
     const Tensor<1, dim> w = motion.velocity(state.time + 0.5 * state.dt);
     force                  = Tensor<1, dim>();
-    set_velocity.assign(nodes.size(), invalid_velocity());
+    set_velocity.assign(nodes.size(), std::nullopt);
     for (unsigned int j = 0; j < nodes.size(); ++j)
       {
         const BoundaryNode<dim> &node = nodes[j];
@@ -93,11 +93,11 @@ namespace dealmpm
       {
         const unsigned int i = nodes[j].local_index;
         if (!(fields.mass.local_element(i) > state.mass_threshold) ||
-            (!rigid && set_velocity[j][0] == invalid_velocity()[0]))
+            (!rigid && !set_velocity[j]))
           continue;
         for (unsigned int d = 0; d < dim; ++d)
           fields.velocity[d].local_element(i) =
-            rigid ? w[d] : set_velocity[j][d];
+            rigid ? w[d] : (*set_velocity[j])[d];
       }
     conditions->project(fields.velocity);
     NodalExchange().add(fields.velocity).copy_owners_to_ghosts();

@@ -100,8 +100,7 @@ namespace dealmpm
     return {std::sin(phi),
             std::sin(psi),
             2 * c * std::cos(phi),
-            phi > 0 ? c / std::tan(phi) :
-                      std::numeric_limits<double>::quiet_NaN()};
+            phi > 0 ? c / std::tan(phi) : 0.};
   }
 
   template <int dim>
@@ -109,9 +108,8 @@ namespace dealmpm
   MohrCoulomb<dim>::yield_function(std::array<double, 3> tau,
                                    const double          plastic_strain) const
   {
-    const Strength s = strength(plastic_strain);
     std::sort(tau.begin(), tau.end(), std::greater<double>());
-    return tau[0] - tau[2] + (tau[0] + tau[2]) * s.sin_phi - s.two_c_cos_phi;
+    return sorted_yield_function(tau, strength(plastic_strain));
   }
 
   template <int dim>
@@ -121,8 +119,8 @@ namespace dealmpm
   {
     const double sin_phi = strength.sin_phi, sin_psi = strength.sin_psi;
     const double two_c_cos_phi = strength.two_c_cos_phi;
-    if (!(tau[0] - tau[2] + (tau[0] + tau[2]) * sin_phi - two_c_cos_phi > 0))
-      return; // tau is sorted
+    if (!(sorted_yield_function(tau, strength) > 0))
+      return;
     const double G      = this->shear_modulus;
     const double lambda = this->bulk_modulus - 2. * G / 3.;
     const double up = 1 + sin_phi, down = 1 - sin_phi;
@@ -155,10 +153,9 @@ namespace dealmpm
         return;
       }
     // The apex (Tresca, phi = 0, has none: its edges always hold).
-    const double apex = std::isnan(strength.apex) ?
-                          (tau[0] + tau[1] + tau[2]) / 3. :
-                          strength.apex;
-    tau               = {{apex, apex, apex}};
+    const double apex =
+      sin_phi > 0 ? strength.apex : (tau[0] + tau[1] + tau[2]) / 3.;
+    tau = {{apex, apex, apex}};
   }
 
   template <int dim>

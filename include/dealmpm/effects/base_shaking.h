@@ -4,7 +4,7 @@
 #include <dealmpm/effects/effect_with_work.h>
 #include <dealmpm/grid/boundary_nodes.h>
 
-#include <limits>
+#include <optional>
 #include <set>
 #include <vector>
 
@@ -112,17 +112,9 @@ namespace dealmpm
     const BoundaryConditions<dim> *conditions = nullptr;
     std::vector<BoundaryNode<dim>> nodes;
     Tensor<1, dim>                 force; ///< this rank's, of the last step
-    /** Per node, the velocity the base gave it in this step's grid
-     * update, NaN where none (after_remap() sets it again). */
-    std::vector<Tensor<1, dim>> set_velocity;
-
-    static Tensor<1, dim>
-    invalid_velocity()
-    {
-      Tensor<1, dim> v;
-      v[0] = std::numeric_limits<double>::infinity();
-      return v;
-    }
+    /** Per node, the velocity the base gave it in the last grid update,
+     * none for a node too light (after_remap() sets it again). */
+    std::vector<std::optional<Tensor<1, dim>>> set_velocity;
   };
 
   /** Register "base shaking" in the effect table: its parameters (section

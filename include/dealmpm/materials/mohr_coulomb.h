@@ -67,7 +67,7 @@ namespace dealmpm
     struct Strength
     {
       double sin_phi, sin_psi, two_c_cos_phi;
-      double apex; ///< c cot(phi); NaN for Tresca (phi = 0): none
+      double apex; ///< c cot(phi); Tresca (phi = 0) has none
     };
     /** The peak's without softening (computed once). */
     Strength
@@ -77,6 +77,15 @@ namespace dealmpm
     }
     Strength
     softened(const double plastic_strain) const;
+
+    /** f of principal stresses sorted largest first. */
+    static double
+    sorted_yield_function(const std::array<double, 3> &tau,
+                          const Strength              &strength)
+    {
+      return tau[0] - tau[2] + (tau[0] + tau[2]) * strength.sin_phi -
+             strength.two_c_cos_phi;
+    }
 
     /** Return sorted principal stresses to the Mohr-Coulomb surface. */
     void
