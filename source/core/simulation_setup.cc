@@ -11,6 +11,7 @@
 #include <dealmpm/diagnostics/run_guards.h>
 #include <dealmpm/grid/grid_update.h>
 #include <dealmpm/io/progress.h>
+#include <dealmpm/materials/cell_size_dependent.h>
 #include <dealmpm/materials/geostatic_start.h>
 #include <dealmpm/particles/fill_bodies.h>
 #include <dealmpm/particles/hold_at_walls.h>
@@ -49,6 +50,24 @@ namespace dealmpm
           if (p.get_location() != c.real_point(p.get_reference_location()))
             return false;
       return true;
+    }
+
+    /** Give the models that scale with the cell size (a regularised
+     * softening) the grid's smallest cell edge: a band forms one cell
+     * wide, and first where the cells are smallest. */
+    template <int dim>
+    void
+    set_cell_sizes(const std::vector<std::unique_ptr<Material<dim>>> &materials,
+                   const BackgroundGrid<dim>                         &grid,
+                   const MPI_Comm                                     comm)
+    {
+      double h = std::numeric_limits<double>::max();
+      for (const GridCell<dim> &c : grid.cells)
+        h = std::min(h, c.h);
+      h = Utilities::MPI::min(h, comm);
+      for (const auto &material : materials)
+        if (CellSizeDependent *dependent = needing_cell_size(*material))
+          dependent->set_cell_size(h);
     }
   } // namespace
 
@@ -241,6 +260,7 @@ namespace dealmpm
         SectionScope mpm(reader, "MPM");
         reader.fail("Shape function", problem);
       }
+    set_cell_sizes(materials, grid, comm);
     boundary_conditions.setup(grid,
                               BoundaryConditions<dim>::read(
                                 reader, grid.triangulation.get_boundary_ids()));

@@ -1,4 +1,6 @@
 #include <dealmpm/base/run_messages.h>
+#include <dealmpm/materials/damaged_material.h>
+#include <dealmpm/materials/geostatic_history.h>
 #include <dealmpm/materials/geostatic_start.h>
 #include <dealmpm/materials/initial_stress.h>
 
@@ -33,6 +35,16 @@ namespace dealmpm
                                                particles.internal_offset[m],
                                              particles.n_internal[m])))
         return false;
+      // A damaged model's own variables come first.
+      const auto *damaged =
+        dynamic_cast<const DamagedMaterial<dim> *>(&material);
+      if (const auto *history = dynamic_cast<const GeostaticHistory<dim> *>(
+            damaged != nullptr ? &damaged->inner_model() : &material))
+        history->start_history(F,
+                               stress,
+                               ArrayView<double>(props.data() +
+                                                   particles.internal_offset[m],
+                                                 particles.n_internal[m]));
       write_tensor<dim>(&props[f.deformation_gradient], F);
       write_symmetric<dim>(&props[f.stress], stress);
       // The particle fills its place at that stretch: its volume and
@@ -60,12 +72,7 @@ namespace dealmpm
         if (!bodies[b].geostatic)
           continue;
         SectionScope         section(reader, "Body " + std::to_string(b + 1));
-        const Tensor<1, dim> n = g / g.norm();
-        // Depths from the top of the body's bounding box.
-        const BoundingBox<dim> box = bodies[b].shape->bounding_box();
-        double                 top = -std::numeric_limits<double>::max();
-        for (unsigned int v = 0; v < GeometryInfo<dim>::vertices_per_cell; ++v)
-          top = std::max(top, -(n * box.vertex(v)));
+        const Tensor<1, dim> n        = g / g.norm();
         const unsigned int   m        = bodies[b].material;
         const Material<dim> &material = *materials[m];
         const double         K0 =
@@ -78,7 +85,7 @@ namespace dealmpm
             const auto props = p.get_properties();
             if (particles.body_of(props) != b)
               continue;
-            const double depth = top + n * p.get_location();
+            const double depth = bodies[b].shape->depth(p.get_location(), n);
             if (!start_particle(material,
                                 m,
                                 -material.density * g.norm() * depth,

@@ -122,6 +122,21 @@ namespace dealmpm
   }
 
   template <int dim>
+  void
+  ModifiedCamClay<dim>::start_history(const Tensor<2, dim>          &F,
+                                      const SymmetricTensor<2, dim> &stress,
+                                      ArrayView<double> internal) const
+  {
+    const SymmetricTensor<2, 3> tau =
+      determinant(F) * full_stress<dim>(*this, F, stress, internal);
+    const double p = -trace(tau) / 3.;
+    const double q = std::sqrt(1.5) * deviator(tau).norm();
+    const double M = parameters.critical_state_ratio;
+    internal[preconsolidation_index] =
+      parameters.overconsolidation_ratio * (p + q * q / (M * M * p));
+  }
+
+  template <int dim>
   std::vector<FieldDescription>
   ModifiedCamClay<dim>::model_variables() const
   {
@@ -286,7 +301,11 @@ namespace dealmpm
                         std::to_string(clay.overconsolidation_ratio),
                         Patterns::Double(),
                         "p_c / p_r of the unstrained soil, >= 1 (1: "
-                        "normally consolidated).");
+                        "normally consolidated). For a body that starts "
+                        "geostatic: p_c over that of the yield surface "
+                        "through each point's stress at rest (1: normally "
+                        "consolidated, on the surface; 1.2-2: lightly "
+                        "overconsolidated, inside it).");
     }
 
     CamClayParameters

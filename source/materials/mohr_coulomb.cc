@@ -81,8 +81,19 @@ namespace dealmpm
                                 const MohrCoulombParameters &mc)
     : HenckyPlasticity<dim>(lame)
     , parameters(mc)
+    , softening_strain_here(mc.softening_strain)
     , peak(softened(0.))
   {}
+
+  template <int dim>
+  void
+  MohrCoulomb<dim>::set_cell_size(const double h)
+  {
+    Assert(h > 0, ExcMessage("a cell size must be positive"));
+    if (needs_cell_size())
+      softening_strain_here =
+        parameters.softening_strain * parameters.regularisation_length / h;
+  }
 
   template <int dim>
   typename MohrCoulomb<dim>::Strength
@@ -90,7 +101,7 @@ namespace dealmpm
   {
     const MohrCoulombParameters &p = parameters;
     const double                 s = p.softening_strain > 0 ?
-                                       std::min(plastic_strain / p.softening_strain, 1.) :
+                                       std::min(plastic_strain / softening_strain_here, 1.) :
                                        0.;
     const double                 phi =
       p.friction_angle + s * (p.residual_friction_angle - p.friction_angle);
@@ -254,7 +265,19 @@ namespace dealmpm
         "linearly from the peak (Cohesion, Friction angle, Dilation angle) "
         "to the residual values below; 0: no softening. Softening localises "
         "in a band about a cell wide, so that this strain belongs to the "
-        "cell size it was chosen for: a finer grid softens faster.");
+        "cell size it was chosen for: a finer grid softens faster, unless "
+        "a Regularisation length is given.");
+      prm.declare_entry(
+        "Regularisation length",
+        "0",
+        Patterns::Double(0),
+        "The width of the shear band (m) the Softening strain was "
+        "measured on (a laboratory test's band, or the cell size a "
+        "calibration used); > 0: on a grid of cell edge h the softening "
+        "strain is Softening strain * length / h, so that the band's "
+        "displacement at the residual strength, and the load after the "
+        "peak, do not depend on the grid (the smallest cell's edge; not "
+        "with adaptivity or in an FEM region). 0: none.");
       prm.declare_entry("Residual cohesion",
                         "0",
                         Patterns::Double(0),
@@ -276,8 +299,16 @@ namespace dealmpm
     read_softening(SceneReader &reader, MohrCoulombParameters &mc)
     {
       mc.softening_strain = reader.get_nonnegative("Softening strain");
+      mc.regularisation_length =
+        reader.get_nonnegative("Regularisation length");
       if (!(mc.softening_strain > 0))
-        return;
+        {
+          if (mc.regularisation_length > 0)
+            reader.fail("Regularisation length",
+                        "0 without a Softening strain (it scales the "
+                        "softening strain)");
+          return;
+        }
       const double degree  = M_PI / 180.;
       mc.residual_cohesion = reader.get_nonnegative("Residual cohesion");
       mc.residual_friction_angle =
@@ -328,7 +359,8 @@ namespace dealmpm
       "tension cut-off (Young's modulus, Poisson's ratio, Friction angle, "
       "Dilation angle, Cohesion, Tension cut-off, Tensile strength, "
       "Softening strain, Residual cohesion, Residual friction angle, "
-      "Residual dilation angle); for soils and rock.",
+      "Residual dilation angle, Regularisation length); for soils and "
+      "rock.",
       declare_mohr_coulomb_parameters,
       [](SceneReader &reader) -> std::unique_ptr<Material<dim>> {
         const LameParameters lame = read_elastic_constants(reader);

@@ -6,10 +6,12 @@
 #include <dealmpm/base/errors.h>
 #include <dealmpm/particles/body.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <vector>
 
 namespace dealmpm
 {
@@ -114,6 +116,137 @@ namespace dealmpm
       double       height;
     };
 
+    /** 2D: the inside of a simple polygon (a slope's cross-section). */
+    template <int dim>
+    class PolygonShape : public Shape<dim>
+    {
+    public:
+      explicit PolygonShape(const std::vector<Point<dim>> &vertices)
+        : vertices(vertices)
+        , box(vertices)
+      {}
+      bool
+      contains(const Point<dim> &p) const override
+      {
+        // Even-odd rule on a ray along +x.
+        bool inside = false;
+        for (std::size_t i = 0, j = vertices.size() - 1; i < vertices.size();
+             j = i++)
+          {
+            const Point<dim> &a = vertices[i], &b = vertices[j];
+            if ((a[1] > p[1]) != (b[1] > p[1]) &&
+                p[0] < a[0] + (p[1] - a[1]) * (b[0] - a[0]) / (b[1] - a[1]))
+              inside = !inside;
+          }
+        return inside;
+      }
+      BoundingBox<dim>
+      bounding_box() const override
+      {
+        return box;
+      }
+      /** The lengths inside the polygon of the line from @p p up (against
+       * @p down): the material above, also under a slope's face. */
+      double
+      depth(const Point<dim> &p, const Tensor<1, dim> &down) const override
+      {
+        std::vector<double> crossings; // distances up from p
+        for (std::size_t i = 0, j = vertices.size() - 1; i < vertices.size();
+             j = i++)
+          {
+            const Tensor<1, dim> edge = vertices[j] - vertices[i];
+            const Tensor<1, dim> to_a = vertices[i] - p;
+            // p - t down = a + s edge: solve for t and s.
+            const double det = edge[0] * down[1] - edge[1] * down[0];
+            if (det == 0)
+              continue; // a vertical edge: the neighbours cross
+            const double s = (to_a[1] * down[0] - to_a[0] * down[1]) / det;
+            const double t = (to_a[0] * edge[1] - to_a[1] * edge[0]) / det;
+            if (s >= 0 && s < 1 && t > 0)
+              crossings.push_back(t);
+          }
+        std::sort(crossings.begin(), crossings.end());
+        double inside = 0, from = 0;
+        for (std::size_t k = 0; k < crossings.size(); ++k)
+          if (k % 2 == 0)
+            inside += crossings[k] - from;
+          else
+            from = crossings[k];
+        return inside;
+      }
+
+    private:
+      std::vector<Point<dim>> vertices;
+      BoundingBox<dim>        box;
+    };
+
+    /** Whether the segments ab and cd cross or touch. */
+    template <int dim>
+    bool
+    segments_meet(const Point<dim> &a,
+                  const Point<dim> &b,
+                  const Point<dim> &c,
+                  const Point<dim> &d)
+    {
+      const auto side =
+        [](const Point<dim> &o, const Point<dim> &p, const Point<dim> &q) {
+          const double cross =
+            (p[0] - o[0]) * (q[1] - o[1]) - (p[1] - o[1]) * (q[0] - o[0]);
+          return (cross > 0) - (cross < 0);
+        };
+      return side(a, b, c) * side(a, b, d) <= 0 &&
+             side(c, d, a) * side(c, d, b) <= 0;
+    }
+
+    /** Polygon's 'Vertices': 2D, three or more, edges that do not cross,
+     * an area. */
+    template <int dim>
+    std::vector<Point<dim>>
+    read_polygon(SceneReader &reader)
+    {
+      if (dim != 2)
+        reader.fail("Shape",
+                    "box, ball, cylinder or mesh in 3D (a polygon "
+                    "is 2D)");
+      const std::string expected =
+        "three or more corners 'x0, y0; x1, y1; ...' of a polygon whose "
+        "edges do not cross";
+      std::vector<Point<dim>> vertices;
+      for (const std::string &corner :
+           Utilities::split_string_list(reader.get("Vertices"), ';'))
+        {
+          const auto xy = Utilities::split_string_list(corner, ',');
+          if (xy.size() != 2)
+            reader.fail("Vertices", expected);
+          Point<dim> v;
+          for (unsigned int d = 0; d < 2; ++d)
+            {
+              char *end = nullptr;
+              v[d]      = std::strtod(xy[d].c_str(), &end);
+              if (end == xy[d].c_str() || *end != '\0' || !std::isfinite(v[d]))
+                reader.fail("Vertices", expected);
+            }
+          vertices.push_back(v);
+        }
+      const std::size_t n    = vertices.size();
+      double            area = 0;
+      for (std::size_t i = 0; i < n; ++i)
+        area += vertices[i][0] * vertices[(i + 1) % n][1] -
+                vertices[(i + 1) % n][0] * vertices[i][1];
+      if (n < 3 || area == 0)
+        reader.fail("Vertices", expected);
+      for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = i + 2; j < n; ++j)
+          if ((j + 1) % n != i && segments_meet(vertices[i],
+                                                vertices[i + 1],
+                                                vertices[j],
+                                                vertices[(j + 1) % n]))
+            reader.fail("Vertices",
+                        expected + " (edge " + std::to_string(i + 1) +
+                          " meets edge " + std::to_string(j + 1) + ")");
+      return vertices;
+    }
+
     /** The cells of a mesh file (any cell shape Gmsh and deal.II agree on). */
     template <int dim>
     class MeshShape : public Shape<dim>
@@ -166,10 +299,11 @@ namespace dealmpm
     {
       prm.declare_entry("Shape",
                         "box",
-                        Patterns::Selection("box|ball|cylinder|mesh"),
+                        Patterns::Selection("box|ball|cylinder|polygon|mesh"),
                         "'box' (Lower corner, Upper corner), 'ball' (a disk in "
                         "2D: Center, Radius), 'cylinder' (3D: Center, Radius, "
-                        "Axis, Height), 'mesh' (the cells of Mesh file).");
+                        "Axis, Height), 'polygon' (2D: Vertices), 'mesh' (the "
+                        "cells of Mesh file).");
       prm.declare_entry("Lower corner",
                         repeat_value<dim>("0"),
                         Patterns::List(Patterns::Double(), dim, dim),
@@ -199,6 +333,13 @@ namespace dealmpm
                         "1",
                         Patterns::Double(),
                         "Cylinder: length along the axis.");
+      prm.declare_entry(
+        "Vertices",
+        "",
+        Patterns::Anything(),
+        "Polygon (2D): its corners in order, 'x0, y0; x1, y1; ...', at least "
+        "three, its edges not crossing (a slope: '0, 0; 30, 0; 30, 5; 20, 5; "
+        "10, 10; 0, 10').");
       prm.declare_entry(
         "Mesh file",
         "",
@@ -247,8 +388,9 @@ namespace dealmpm
         "falls into its own weight and bounces) or 'geostatic' (at rest under "
         "gravity: sigma = sigma_v (n (x) n + K0 (I - n (x) n)), n the "
         "direction of gravity, sigma_v = -rho g d at depth d below the top of "
-        "the body's own bounding box: the weight of this body above, not of "
-        "other bodies resting on it; each particle's F and internal "
+        "the body's own bounding box (a polygon's: the material on the line "
+        "up from the particle, so under a slope's face the face): the "
+        "weight of this body above, not of other bodies resting on it; each particle's F and internal "
         "variables are those of its material at that stress, and 'Density' "
         "is the density at rest). Needs an effect with a uniform force field "
         "(gravity); not with 'MPM/Formulation = total Lagrangian', whose "
@@ -313,6 +455,9 @@ namespace dealmpm
                                                  (axis == "y" ? 1 : 2),
                                                reader.get_positive("Height"));
       }
+    else if (shape == "polygon")
+      body.shape =
+        std::make_unique<PolygonShape<dim>>(read_polygon<dim>(reader));
     else
       {
         std::ifstream in(

@@ -1,3 +1,4 @@
+#include <dealmpm/materials/cell_size_dependent.h>
 #include <dealmpm/schemes/compatibility.h>
 #include <dealmpm/transfer/kernel.h>
 
@@ -174,6 +175,42 @@ namespace dealmpm
                         "one)");
         }
     }
+
+    /** A regularised softening scales with one cell size, the grid's
+     * smallest edge at set-up: not a grid that changes, not an FEM
+     * region's cells. */
+    template <int dim>
+    void
+    cell_size_rule(SceneReader &reader, const SceneChoices<dim> &scene)
+    {
+      for (unsigned int m = 0; m < scene.materials.size(); ++m)
+        {
+          if (needing_cell_size(*scene.materials[m]) == nullptr)
+            continue;
+          const std::string material = "Material " + std::to_string(m + 1);
+          const auto        refuse   = [&](const std::string &why) {
+            SectionScope section(reader, material);
+            SectionScope model(reader, scene.material_models[m]);
+            reader.fail("Regularisation length", "0 " + why);
+          };
+          if (scene.adaptivity.enabled())
+            refuse("with adaptivity (it scales the softening with one cell "
+                   "size, the grid's smallest at set-up)");
+          for (unsigned int r = 1; r <= scene.n_fem_regions; ++r)
+            {
+              long used = 0;
+              {
+                SectionScope region(reader, "FEM region " + std::to_string(r));
+                used = reader.get_integer("Material");
+              }
+              if (used == m + 1)
+                refuse("in a material an FEM region uses ('FEM region " +
+                       std::to_string(r) +
+                       "': it scales with the background grid's cells; "
+                       "give the region a material of its own)");
+            }
+        }
+    }
   } // namespace
 
   template <int dim>
@@ -186,6 +223,7 @@ namespace dealmpm
     region_coupling_rule(reader, scene);
     total_lagrangian_rule(reader, scene);
     anti_locking_rule(reader, scene);
+    cell_size_rule(reader, scene);
   }
 
   template <int dim>

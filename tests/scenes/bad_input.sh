@@ -44,6 +44,15 @@ expect 2 "Material 1/Modified Cam-Clay/Compression index.*a number > the Swellin
 expect 2 "Material 1/Mohr-Coulomb/Residual cohesion.*at most the Cohesion" "$scene" "${s[@]}" \
   -s "Material 1/Model=Mohr-Coulomb" -s "Material 1/Mohr-Coulomb/Softening strain=0.1" \
   -s "Material 1/Mohr-Coulomb/Residual cohesion=1e9"
+mc=(-s "Material 1/Model=Mohr-Coulomb" -s "Material 1/Mohr-Coulomb/Regularisation length=0.01")
+expect 2 "Material 1/Mohr-Coulomb/Regularisation length.*0 without a Softening strain" "$scene" "${s[@]}" "${mc[@]}"
+expect 2 "Material 1/Mohr-Coulomb/Regularisation length.*0 with adaptivity" "$scene" "${s[@]}" "${mc[@]}" \
+  -s "Material 1/Mohr-Coulomb/Softening strain=0.1" -s "Material 1/Mohr-Coulomb/Residual friction angle=20" \
+  -s "Adaptivity/Criteria=particles"
+expect 2 "Material 2/Mohr-Coulomb/Regularisation length.*0 in a material an FEM region uses \('FEM region 1'" \
+  "$(dirname "$scene")/projectile_fem_plate.prm" "${s[@]}" -s "Material 2/Model=Mohr-Coulomb" \
+  -s "Material 2/Mohr-Coulomb/Regularisation length=0.01" -s "Material 2/Mohr-Coulomb/Softening strain=0.1" \
+  -s "Material 2/Mohr-Coulomb/Residual friction angle=20"
 expect 2 "Material 1/Modified Cam-Clay/Overconsolidation ratio.*a number >= 1" "$scene" "${s[@]}" \
   -s "Material 1/Model=Modified Cam-Clay" -s "Material 1/Modified Cam-Clay/Overconsolidation ratio=0.5"
 # A model only the example registers: plain dealmpm names the entry and the models it knows.
@@ -68,6 +77,9 @@ expect 2 "MPM/Shape function.*GIMP needs cells that are axis-aligned boxes" "$sc
   -s "MPM/Shape function=cpGIMP" -s "Grid/Type=mesh file" -s "Grid/Mesh file=$data/distorted_square.msh"
 expect 2 "MPM/Shape function.*B-spline needs cells that are axis-aligned boxes" "$scene" "${s[@]}" \
   -s "MPM/Shape function=quadratic B-spline" -s "Grid/Type=mesh file" -s "Grid/Mesh file=$data/kinked_square.msh"
+expect 2 "Body 1/Vertices.*three or more corners" "$scene" "${s[@]}" -s "Body 1/Shape=polygon" -s "Body 1/Vertices=0.1, 0.1; 0.5, 0.5"
+expect 2 "Body 1/Vertices.*edge 1 meets edge 3" "$scene" "${s[@]}" -s "Body 1/Shape=polygon" \
+  -s "Body 1/Vertices=0.1, 0.1; 0.5, 0.5; 0.5, 0.1; 0.1, 0.5"
 expect 2 "Body 1/Mesh file.*quadrilaterals" "$scene" "${s[@]}" -s "Body 1/Shape=mesh" -s "Body 1/Mesh file=$data/triangles.msh"
 expect 2 "Grid/Boundary conditions.*boundary ids the grid has \(0, 1, 2, 3\), not 4" "$scene" "${s[@]}" \
   -s "Grid/Boundary conditions=0: slip, 4: no-slip"
@@ -252,10 +264,10 @@ expect 2 "typo_material.prm: line [0-9]+: 'subsection Materal 1' is not a sectio
 sed "s/set Young's modulus/set Youngs modulus/" "$scene" > typo_nested.prm
 expect 2 "typo_nested.prm: line [0-9]+: 'Material 1/linear elastic/Youngs modulus' is not an entry of this scene \(did you mean 'Material 1/linear elastic/Young's modulus'\?\)$" typo_nested.prm "${s[@]}"
 sed 's/set Shape \( *\)= ball/set Shape = bal/' "$scene" > typo_choice.prm
-expect 2 "typo_choice.prm: entry 'Body 1/Shape' = 'bal': expected one of 'box', 'ball', 'cylinder', 'mesh' \(did you mean 'ball'\?\)$" typo_choice.prm "${s[@]}"
+expect 2 "typo_choice.prm: entry 'Body 1/Shape' = 'bal': expected one of 'box', 'ball', 'cylinder', 'polygon', 'mesh' \(did you mean 'ball'\?\)$" typo_choice.prm "${s[@]}"
 expect 2 "command line: -s 'Time/End tme=1': 'Time/End tme' is not an entry of this scene \(did you mean 'Time/End time'\?\)$" "$scene" "${s[@]}" -s "Time/End tme=1"
 expect 2 "command line: -s 'Tme/End time=1': 'Tme/End time' is not an entry of this scene \(did you mean 'Time/End time'\?\)$" "$scene" "${s[@]}" -s "Tme/End time=1"
-expect 2 "command line: -s 'Body 1/Shape=bal': expected one of 'box', 'ball', 'cylinder', 'mesh' \(did you mean 'ball'\?\)$" "$scene" "${s[@]}" -s "Body 1/Shape=bal"
+expect 2 "command line: -s 'Body 1/Shape=bal': expected one of 'box', 'ball', 'cylinder', 'polygon', 'mesh' \(did you mean 'ball'\?\)$" "$scene" "${s[@]}" -s "Body 1/Shape=bal"
 # Far from every name: no guess, also deep in a long path.
 expect 2 "command line: -s 'Time/Frobnicate=1': 'Time/Frobnicate' is not an entry of this scene$" "$scene" "${s[@]}" -s "Time/Frobnicate=1"
 expect 2 "command line: -s 'Material 1/linear elastic/Stiffness=1': 'Material 1/linear elastic/Stiffness' is not an entry of this scene$" "$scene" "${s[@]}" -s "Material 1/linear elastic/Stiffness=1"

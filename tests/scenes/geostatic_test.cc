@@ -6,7 +6,10 @@
 // the same column falls into its own weight: its kinetic energy exceeds a
 // tenth of the geostatic strain energy. Linear elastic (a rate form) and
 // neo-Hookean (stress from F), with a K0 given and with the material's own
-// nu / (1 - nu); Modified Cam-Clay (on its yield surface at rest).
+// nu / (1 - nu); Modified Cam-Clay (on its yield surface at rest, and
+// lightly overconsolidated: p_c 1.5 times that surface's).
+#include <dealmpm/materials/modified_cam_clay.h>
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -166,6 +169,43 @@ TEST(Geostatic, ColumnStartsAtRestUnderItsWeight)
                 << share << std::endl;
       EXPECT_LT(share, 1e-10) << "clay, K0 = " << K0;
     }
+  // Lightly overconsolidated: every particle's p_c is 1.5 times the yield
+  // surface's through its stress at rest (normally consolidated it was 1),
+  // and the column rests as well.
+  {
+    auto simulation = test::make_simulation<2>(
+      column("Modified Cam-Clay",
+             "geostatic",
+             "0.6",
+             clay_entries + "    set Overconsolidation ratio = 1.5\n"));
+    const ParticleSet<2> &particles = simulation->particle_set();
+    const unsigned int    pc =
+      particles.internal_offset[0] + ModifiedCamClay<2>::preconsolidation_index;
+    double worst = 0;
+    for (const auto &p : particles.handler)
+      {
+        const auto props = p.get_properties();
+        const auto F =
+          read_tensor<2>(&props[particles.fields.deformation_gradient]);
+        const ArrayView<const double> internal(&props[0] +
+                                                 particles.internal_offset[0],
+                                               particles.n_internal[0]);
+        const SymmetricTensor<2, 3>   tau =
+          determinant(F) *
+          full_stress<2>(simulation->material(0),
+                         F,
+                         read_symmetric<2>(&props[particles.fields.stress]),
+                         internal);
+        const double p_  = -trace(tau) / 3.;
+        const double q   = std::sqrt(1.5) * deviator(tau).norm();
+        const double p_c = p_ + q * q / (1.2 * 1.2 * p_);
+        worst            = std::max(worst, std::abs(props[pc] / p_c - 1.5));
+      }
+    EXPECT_LT(worst, 1e-9) << "overconsolidated clay";
+    const double strain_energy = simulation->statistics().strain_energy;
+    EXPECT_LT(largest_kinetic_energy(*simulation) / strain_energy, 1e-10)
+      << "overconsolidated clay";
+  }
   // Stress-free at the start, it falls into its weight.
   auto simulation =
     test::make_simulation<2>(column("linear elastic", "none", "elastic"));

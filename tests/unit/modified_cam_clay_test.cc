@@ -10,6 +10,7 @@
 //   q / p = M at p = 3 p_0 / (3 - M), with the volume of the critical state;
 // - every return lands on the yield surface, the plastic work never falls,
 //   the update is objective and the wave speed follows the pressure.
+#include <dealmpm/materials/initial_stress.h>
 #include <dealmpm/materials/modified_cam_clay.h>
 
 #include <gtest/gtest.h>
@@ -340,5 +341,58 @@ TEST(ModifiedCamClay, OneLargeStep)
                   0,
                   1e-10 * p_c * p_c)
         << "ln J " << ln_J;
+    }
+}
+
+// A geostatic start: the point is put at rest under sigma_v = -50 kPa,
+// K0 = 0.7 by loading from a low reference pressure, then its
+// preconsolidation pressure is set to OCR times the yield surface's
+// through that stress. Normally consolidated (OCR 1), a further confined
+// compression of 0.2 % (about a quarter more vertical stress) yields at
+// once; lightly overconsolidated (OCR 1.5) it stays inside the surface:
+// no plastic strain, p_c unchanged.
+TEST(ModifiedCamClay, GeostaticStartIsOverconsolidatedByItsRatio)
+{
+  for (const double ocr : {1., 1.5})
+    {
+      CamClayParameters c  = clay(ocr);
+      c.reference_pressure = 100;
+      Clay<3>                     point(c);
+      const Tensor<1, 3>          down{{0., -1., 0.}};
+      const SymmetricTensor<2, 3> target =
+        geostatic_stress<3>(-50e3, down, 0.7);
+      Tensor<2, 3> F;
+      ASSERT_TRUE(start_at_stress<3>(
+        point.model, target, F, point.stress, make_array_view(point.internal)));
+      point.model.start_history(F,
+                                point.stress,
+                                make_array_view(point.internal));
+      EXPECT_LT((point.stress - target).norm(), 1e-9 * 50e3);
+      const Invariants   tau = invariants(point.kirchhoff(F));
+      const unsigned int pc  = ModifiedCamClay<3>::preconsolidation_index;
+      const double       M   = c.critical_state_ratio;
+      EXPECT_NEAR(point.internal[pc] /
+                    (tau.p + tau.q * tau.q / (M * M * tau.p)),
+                  ocr,
+                  1e-12)
+        << "OCR " << ocr;
+
+      const double p_c_start = point.internal[pc];
+      const double plastic   = point.model.plastic_strain(point.state());
+      Tensor<2, 3> G         = F;
+      G[1][1] *= std::exp(-0.002);
+      point.deform(G);
+      const double vertical = point.stress[1][1];
+      EXPECT_LT(vertical, -1.15 * 50e3) << "OCR " << ocr;
+      if (ocr == 1.)
+        {
+          EXPECT_GT(point.model.plastic_strain(point.state()), plastic + 1e-5);
+          EXPECT_GT(point.internal[pc], p_c_start * (1 + 1e-3));
+        }
+      else
+        {
+          EXPECT_EQ(point.model.plastic_strain(point.state()), plastic);
+          EXPECT_EQ(point.internal[pc], p_c_start);
+        }
     }
 }

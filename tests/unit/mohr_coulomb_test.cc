@@ -260,3 +260,34 @@ TEST(MohrCoulomb, SofteningFallsToTheResidualStrength)
   std::cout << "softening: peak deviator " << peak << ", residual " << last
             << std::endl;
 }
+
+// A regularisation length scales the softening strain by length / h: on
+// cells of edge h the strength at plastic strain e is the unregularised
+// model's at e h / length, so that the band's displacement (about e h)
+// at each strength is the same on every grid. Without a cell size it
+// does not need one, and a model without the length ignores one.
+TEST(MohrCoulomb, RegularisationScalesTheSofteningWithTheCell)
+{
+  MohrCoulombParameters mc   = rock(30, 10, 0.02);
+  mc.softening_strain        = 0.05;
+  mc.residual_cohesion       = 0.005;
+  mc.residual_friction_angle = 20 * M_PI / 180.;
+  const MohrCoulomb<3> plain(rock_lame, mc);
+  mc.regularisation_length = 0.01;
+  const std::array<double, 3> tau{{-0.01, -0.02, -0.06}};
+  for (const double h : {0.005, 0.01, 0.04})
+    {
+      MohrCoulomb<3> regularised(rock_lame, mc);
+      ASSERT_TRUE(regularised.needs_cell_size());
+      regularised.set_cell_size(h);
+      EXPECT_DOUBLE_EQ(regularised.softening_strain(), 0.05 * 0.01 / h);
+      for (const double e : {0., 0.01, 0.03, 0.1, 1.})
+        EXPECT_NEAR(regularised.yield_function(tau, e),
+                    plain.yield_function(tau, e * h / 0.01),
+                    1e-15)
+          << "h = " << h << ", plastic strain " << e;
+    }
+  MohrCoulomb<3> unscaled(rock_lame, rock(30, 10, 0.02));
+  EXPECT_FALSE(unscaled.needs_cell_size());
+  EXPECT_FALSE(plain.needs_cell_size());
+}

@@ -86,6 +86,18 @@ namespace dealmpm
       return inner->resets_deformation();
     }
 
+    /** The wrapped model. */
+    Material<dim> &
+    inner_model()
+    {
+      return *inner;
+    }
+    const Material<dim> &
+    inner_model() const
+    {
+      return *inner;
+    }
+
     /** Where D sits among the internal variables. */
     unsigned int
     damage_index() const

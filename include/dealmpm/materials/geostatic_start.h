@@ -15,8 +15,9 @@ namespace dealmpm
   /**
    * Bodies with 'Initial stress = geostatic' start at rest under the
    * uniform acceleration @p g (gravity): each particle of such a body takes
-   * the stress of its depth below the top of the body's bounding box
-   * (vertical rho g depth, horizontal K0 times it) with the deformation
+   * the stress of its depth (Shape::depth(): below the top of the body's
+   * bounding box, or a polygon's surface above it) (vertical rho g depth,
+   * horizontal K0 times it) with the deformation
    * gradient its material needs for it, and the volume (and, for cpGIMP
    * and CPDI, the domain) it fills at that stretch. Fails through
    * @p reader ('Body N/K0') when a material cannot carry its stress at

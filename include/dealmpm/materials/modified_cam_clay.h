@@ -1,5 +1,6 @@
 #pragma once
 
+#include <dealmpm/materials/geostatic_history.h>
 #include <dealmpm/materials/hencky_plasticity.h>
 
 namespace dealmpm
@@ -19,7 +20,9 @@ namespace dealmpm
     double shear_modulus = 3e6;
     /** p_r: the mean effective pressure of the unstrained soil (F = I). */
     double reference_pressure = 100e3;
-    /** p_c / p_r of the unstrained soil, >= 1. */
+    /** p_c / p_r of the unstrained soil, >= 1; for a body that starts
+     * geostatic, p_c over the p_c of the yield surface through its stress
+     * at rest (1: normally consolidated, on the surface). */
     double overconsolidation_ratio = 1;
   };
 
@@ -50,10 +53,19 @@ namespace dealmpm
    * pressure p_c.
    */
   template <int dim>
-  class ModifiedCamClay : public HenckyPlasticity<dim>
+  class ModifiedCamClay : public HenckyPlasticity<dim>,
+                          public GeostaticHistory<dim>
   {
   public:
     explicit ModifiedCamClay(const CamClayParameters &parameters);
+
+    /** p_c = overconsolidation ratio * (p + q^2 / (M^2 p)), the yield
+     * surface through the Kirchhoff stress J sigma at rest (isotropic
+     * overconsolidation: the ellipse grows about its shape). */
+    void
+    start_history(const Tensor<2, dim>          &F,
+                  const SymmetricTensor<2, dim> &stress,
+                  ArrayView<double>              internal) const override;
 
     void
     initialize_internal_variables(ArrayView<double> internal) const override;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <dealmpm/materials/cell_size_dependent.h>
 #include <dealmpm/materials/hencky_plasticity.h>
 
 #include <limits>
@@ -22,6 +23,11 @@ namespace dealmpm
     double residual_friction_angle = 0;
     double residual_dilation_angle = 0;
     double residual_cohesion       = 0;
+    /** The width of the band softening_strain belongs to (m); > 0: the
+     * softening strain on a grid of cell edge h is softening_strain *
+     * regularisation_length / h (the same displacement across a band one
+     * cell wide on every grid); 0: softening_strain on every grid. */
+    double regularisation_length = 0;
   };
 
   /**
@@ -41,13 +47,36 @@ namespace dealmpm
    * plastic strain softens the next step). Softening localises in a band
    * about a cell wide, so that the load after the peak depends on the
    * cell size: the softening strain is a property of the band's width,
-   * and a finer grid softens faster (doc/guide/materials.md).
+   * and a finer grid softens faster (doc/guide/materials.md). With a
+   * regularisation length the softening strain is scaled by it over the
+   * cell size (set_cell_size()), which keeps the displacement across the
+   * band at which the residual strength is reached, and so the load
+   * against displacement after the peak, the same on every grid.
    */
   template <int dim>
-  class MohrCoulomb : public HenckyPlasticity<dim>
+  class MohrCoulomb : public HenckyPlasticity<dim>, public CellSizeDependent
   {
   public:
     MohrCoulomb(const LameParameters &lame, const MohrCoulombParameters &mc);
+
+    bool
+    needs_cell_size() const override
+    {
+      return parameters.regularisation_length > 0;
+    }
+
+    /** The softening strain becomes softening_strain * regularisation
+     * length / h. */
+    void
+    set_cell_size(const double h) override;
+
+    /** The equivalent plastic strain at which the residual strength is
+     * reached on this grid. */
+    double
+    softening_strain() const
+    {
+      return softening_strain_here;
+    }
 
     /** f of sorted or unsorted principal stresses (the largest pair), with
      * the strength at equivalent plastic strain @p plastic_strain (the
@@ -97,7 +126,10 @@ namespace dealmpm
     return_tension_cut_off(std::array<double, 3> &tau) const;
 
     MohrCoulombParameters parameters;
-    Strength              peak;
+    /** parameters.softening_strain, scaled to the cell size with a
+     * regularisation length. */
+    double   softening_strain_here;
+    Strength peak;
   };
 
   /** Register "Mohr-Coulomb" in the material table: its parameters (subsection

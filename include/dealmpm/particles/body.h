@@ -7,6 +7,8 @@
 #include <dealmpm/grid/background_grid.h>
 #include <dealmpm/particles/particle_set.h>
 
+#include <algorithm>
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -22,6 +24,20 @@ namespace dealmpm
     contains(const Point<dim> &p) const = 0;
     virtual BoundingBox<dim>
     bounding_box() const = 0;
+
+    /** The height of the body's material above @p p (inside it), against
+     * the unit vector @p down: the overburden of a geostatic start. The
+     * depth below the top of the bounding box unless a shape knows better
+     * (a polygon measures along the line through @p p). */
+    virtual double
+    depth(const Point<dim> &p, const Tensor<1, dim> &down) const
+    {
+      const BoundingBox<dim> box = bounding_box();
+      double                 top = -std::numeric_limits<double>::max();
+      for (unsigned int v = 0; v < GeometryInfo<dim>::vertices_per_cell; ++v)
+        top = std::max(top, -(down * box.vertex(v)));
+      return top + down * p;
+    }
   };
 
   /**
