@@ -211,3 +211,67 @@ TEST(Geostatic, ColumnStartsAtRestUnderItsWeight)
     test::make_simulation<2>(column("linear elastic", "none", "elastic"));
   EXPECT_GT(largest_kinetic_energy(*simulation) / geostatic_strain_energy, 0.1);
 }
+
+// A slope drawn as a polygon starts geostatic under the material above
+// each particle, not under the top of its bounding box: sigma_yy = -rho g
+// (s(x) - y) with s the surface above x (the crest at 3 m, the face
+// falling 1 in 2 to the toe at 1 m), sigma_xx = K0 sigma_yy. Every
+// particle lies inside the polygon, and the polygon is filled: the
+// particles' volume is its area to the staircase of the face (at most one
+// sub-cell along the face).
+TEST(Geostatic, PolygonSlopeStartsUnderTheMaterialAboveEachParticle)
+{
+  const std::string slope = R"(
+set Dimension = 2
+set Effects   = gravity
+subsection Grid
+  set Lower corner        = 0, 0
+  set Upper corner        = 8, 3.5
+  set Cells               = 32, 14
+  set Boundary conditions = 0: slip, 1: slip, 2: no-slip
+end
+subsection Material 1
+  set Model   = linear elastic
+  set Density = 2000
+  subsection linear elastic)" + elastic_entries +
+                            R"(
+  end
+end
+subsection Body 1
+  set Shape          = polygon
+  set Vertices       = 0, 0; 8, 0; 8, 1; 6, 1; 2, 3; 0, 3
+  set Initial stress = geostatic
+  set K0             = 0.5
+end
+subsection Gravity
+  set Acceleration = 0, -9.81
+end
+)";
+  auto              simulation = test::make_simulation<2>(slope);
+  const CoreFields &f          = simulation->particle_set().fields;
+  const auto surface = [](const double x) {
+    return x <= 2 ? 3. : (x >= 6 ? 1. : 3. - (x - 2) / 2.);
+  };
+  double       worst_yy = 0, worst_xx = 0, volume = 0;
+  unsigned int outside  = 0;
+  for (const auto &p : simulation->particle_set().handler)
+    {
+      const auto   props   = p.get_properties();
+      const auto   stress  = read_symmetric<2>(&props[f.stress]);
+      const auto  &x       = p.get_location();
+      const double sigma_v = -2000 * 9.81 * (surface(x[0]) - x[1]);
+      outside += x[1] > surface(x[0]);
+      worst_yy = std::max(worst_yy, std::abs(stress[1][1] - sigma_v));
+      worst_xx = std::max(worst_xx, std::abs(stress[0][0] - 0.5 * sigma_v));
+      volume += props[f.initial_volume] * determinant(read_tensor<2>(
+                                            &props[f.deformation_gradient]));
+    }
+  EXPECT_EQ(outside, 0u);
+  EXPECT_LT(worst_yy, 1e-9 * 2000 * 9.81 * 3);
+  EXPECT_LT(worst_xx, 1e-9 * 2000 * 9.81 * 3);
+  // 8 below y = 1, 4 in the crest's block, 4 in the face's triangle; the
+  // staircase of sub-cells (0.125 m) misses at most half a sub-cell in
+  // each of the 32 columns across the face.
+  const double area = 8 + 4 + 4;
+  EXPECT_NEAR(volume, area, 32 * 0.5 * 0.125 * 0.125);
+}

@@ -357,19 +357,19 @@ TEST(ModifiedCamClay, GeostaticStartIsOverconsolidatedByItsRatio)
     {
       CamClayParameters c  = clay(ocr);
       c.reference_pressure = 100;
-      Clay<3>                     point(c);
-      const Tensor<1, 3>          down{{0., -1., 0.}};
-      const SymmetricTensor<2, 3> target =
-        geostatic_stress<3>(-50e3, down, 0.7);
-      Tensor<2, 3> F;
-      ASSERT_TRUE(start_at_stress<3>(
+      Clay<2>                     point(c);
+      const Tensor<1, 2>          down{{0., -1.}};
+      const SymmetricTensor<2, 2> target =
+        geostatic_stress<2>(-50e3, down, 0.7);
+      Tensor<2, 2> F;
+      ASSERT_TRUE(start_at_stress<2>(
         point.model, target, F, point.stress, make_array_view(point.internal)));
       point.model.start_history(F,
                                 point.stress,
                                 make_array_view(point.internal));
       EXPECT_LT((point.stress - target).norm(), 1e-9 * 50e3);
       const Invariants   tau = invariants(point.kirchhoff(F));
-      const unsigned int pc  = ModifiedCamClay<3>::preconsolidation_index;
+      const unsigned int pc  = ModifiedCamClay<2>::preconsolidation_index;
       const double       M   = c.critical_state_ratio;
       EXPECT_NEAR(point.internal[pc] /
                     (tau.p + tau.q * tau.q / (M * M * tau.p)),
@@ -379,7 +379,7 @@ TEST(ModifiedCamClay, GeostaticStartIsOverconsolidatedByItsRatio)
 
       const double p_c_start = point.internal[pc];
       const double plastic   = point.model.plastic_strain(point.state());
-      Tensor<2, 3> G         = F;
+      Tensor<2, 2> G         = F;
       G[1][1] *= std::exp(-0.002);
       point.deform(G);
       const double vertical = point.stress[1][1];
