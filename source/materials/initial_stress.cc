@@ -127,6 +127,62 @@ namespace dealmpm
       e = tried;
       return std::isfinite(norm<dim>(r));
     }
+
+    /**
+     * Move the start @p e (residual @p r) of start_at_stress() to the
+     * isotropic compression whose mean stress is the target's, when that
+     * is closer. A model whose stiffness grows with the pressure
+     * (Modified Cam-Clay from a low reference pressure) has almost none
+     * unstrained: Newton's first step from there overshoots by orders of
+     * magnitude, and in 3D the backtracking shrank it to nothing. Along
+     * the isotropic line the mean stress falls monotonically with the
+     * strain: bisection, on a bracket grown until it holds the target (to
+     * a log strain of -2).
+     */
+    template <int dim>
+    void
+    isotropic_start(Step<dim>                     &step,
+                    const std::array<double, dim> &principal,
+                    std::array<double, dim>       &e,
+                    std::array<double, dim>       &r)
+    {
+      double target = 0;
+      for (const double value : principal)
+        target += value / dim;
+      const auto mean_at = [&](const double strain) {
+        std::array<double, dim> isotropic;
+        isotropic.fill(strain);
+        step.run(isotropic);
+        double mean = 0;
+        for (unsigned int a = 0; a < dim; ++a)
+          mean += step.axes[a] * (step.stress * step.axes[a]) / dim;
+        return mean;
+      };
+      double low = -0.01, high = 0;
+      while (target < 0 && !(mean_at(low) <= target) && low > -2)
+        {
+          high = low;
+          low *= 2;
+        }
+      if (target < 0 && mean_at(low) <= target)
+        {
+          for (unsigned int i = 0; i < 60; ++i)
+            {
+              const double middle                      = (low + high) / 2;
+              (mean_at(middle) <= target ? low : high) = middle;
+            }
+          std::array<double, dim> start;
+          start.fill(low);
+          step.run(start);
+          const std::array<double, dim> r_start = step.residual(principal);
+          if (norm<dim>(r_start) < norm<dim>(r))
+            {
+              e = start;
+              r = r_start;
+            }
+        }
+      step.run(e);
+    }
   } // namespace
 
   template <int dim>
@@ -193,6 +249,8 @@ namespace dealmpm
     std::array<double, dim> e{};
     step.run(e);
     std::array<double, dim> r = step.residual(principal);
+    if (norm<dim>(r) > tolerance)
+      isotropic_start<dim>(step, principal, e, r);
     for (unsigned int iteration = 0; iteration < 50 && norm<dim>(r) > tolerance;
          ++iteration)
       {
