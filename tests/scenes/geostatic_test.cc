@@ -233,7 +233,8 @@ end
 subsection Material 1
   set Model   = linear elastic
   set Density = 2000
-  subsection linear elastic)" + elastic_entries +
+  subsection linear elastic)" +
+                            elastic_entries +
                             R"(
   end
 end
@@ -249,11 +250,11 @@ end
 )";
   auto              simulation = test::make_simulation<2>(slope);
   const CoreFields &f          = simulation->particle_set().fields;
-  const auto surface = [](const double x) {
+  const auto        surface    = [](const double x) {
     return x <= 2 ? 3. : (x >= 6 ? 1. : 3. - (x - 2) / 2.);
   };
   double       worst_yy = 0, worst_xx = 0, volume = 0;
-  unsigned int outside  = 0;
+  unsigned int outside = 0;
   for (const auto &p : simulation->particle_set().handler)
     {
       const auto   props   = p.get_properties();
@@ -263,8 +264,8 @@ end
       outside += x[1] > surface(x[0]);
       worst_yy = std::max(worst_yy, std::abs(stress[1][1] - sigma_v));
       worst_xx = std::max(worst_xx, std::abs(stress[0][0] - 0.5 * sigma_v));
-      volume += props[f.initial_volume] * determinant(read_tensor<2>(
-                                            &props[f.deformation_gradient]));
+      volume += props[f.initial_volume] *
+                determinant(read_tensor<2>(&props[f.deformation_gradient]));
     }
   EXPECT_EQ(outside, 0u);
   EXPECT_LT(worst_yy, 1e-9 * 2000 * 9.81 * 3);
