@@ -4,6 +4,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace dealmpm
 {
@@ -83,6 +84,7 @@ namespace dealmpm
     , parameters(mc)
     , softening_strain_here(mc.softening_strain)
     , peak(softened(0.))
+    , residual(softened(std::numeric_limits<double>::infinity()))
   {}
 
   template <int dim>

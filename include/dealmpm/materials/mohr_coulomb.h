@@ -98,11 +98,17 @@ namespace dealmpm
       double sin_phi, sin_psi, two_c_cos_phi;
       double apex; ///< c cot(phi); Tresca (phi = 0) has none
     };
-    /** The peak's without softening (computed once). */
+    /** The peak's before any plastic strain and without softening, the
+     * residual's past the softening strain (both computed once: most
+     * points of a scene are at one or the other, and the sines and
+     * cosines cost more than the rest of an elastic step). */
     Strength
     strength(const double plastic_strain) const
     {
-      return parameters.softening_strain > 0 ? softened(plastic_strain) : peak;
+      if (!(parameters.softening_strain > 0 && plastic_strain > 0))
+        return peak;
+      return plastic_strain < softening_strain_here ? softened(plastic_strain) :
+                                                      residual;
     }
     Strength
     softened(const double plastic_strain) const;
@@ -129,7 +135,7 @@ namespace dealmpm
     /** parameters.softening_strain, scaled to the cell size with a
      * regularisation length. */
     double   softening_strain_here;
-    Strength peak;
+    Strength peak, residual;
   };
 
   /** Register "Mohr-Coulomb" in the material table: its parameters (subsection
