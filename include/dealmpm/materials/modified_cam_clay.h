@@ -45,9 +45,12 @@ namespace dealmpm
    * (the normal compression line in ln v - ln p', Butterfield 1979) and
    * unloading ln J = -kappa* ln(p / p_0). The soil carries no tension
    * (p > 0 always). The return is a closest-point projection on (eps_v,
-   * Delta gamma) by Newton's method with a backtracking line search; a
-   * return that does not converge leaves a non-finite state, which the
-   * step reports.
+   * Delta gamma) by Newton's method with a backtracking line search,
+   * started from the trial state and, when that does not converge (a step
+   * far past the surface, as from a low reference pressure to a geostatic
+   * one), once more from the isotropic answer p = p_c; a return that
+   * still does not converge leaves a non-finite state, which the step
+   * reports.
    *
    * Internal variables: HenckyPlasticity's, then the preconsolidation
    * pressure p_c.
