@@ -16,6 +16,7 @@ namespace dealmpm
                              "free",
                              "the dashpots stand for the ground beyond a "
                              "free face");
+    conditions = &setup.conditions;
     grid_changed(setup.grid);
   }
 
@@ -24,10 +25,12 @@ namespace dealmpm
   AbsorbingBoundary<dim>::after_grid_update(const EffectContext<dim> &state,
                                             NodalFields<dim>         &fields)
   {
-    for (const BoundaryNode<dim> &node : nodes)
+    set_velocity.assign(nodes.size(), std::nullopt);
+    for (unsigned int j = 0; j < nodes.size(); ++j)
       {
-        const unsigned int i = node.local_index;
-        const double       m = fields.mass.local_element(i);
+        const BoundaryNode<dim> &node = nodes[j];
+        const unsigned int       i    = node.local_index;
+        const double             m    = fields.mass.local_element(i);
         if (!(m > state.mass_threshold))
           continue;
         const Tensor<1, dim> n    = node.normal();
@@ -39,6 +42,7 @@ namespace dealmpm
         const Tensor<1, dim> v_new = v_n / (1 + load * p_wave_speed) +
                                      (v - v_n) / (1 + load * s_wave_speed);
         this->work += m * ((v_new - v) * v_new);
+        set_velocity[j] = v_new;
         for (unsigned int d = 0; d < dim; ++d)
           {
             fields.velocity[d].local_element(i) = v_new[d];
@@ -49,6 +53,29 @@ namespace dealmpm
       .add(fields.velocity)
       .add(fields.velocity_increment)
       .copy_owners_to_ghosts();
+  }
+
+  template <int dim>
+  void
+  AbsorbingBoundary<dim>::after_remap(const EffectContext<dim> &state,
+                                      NodalFields<dim>         &fields)
+  {
+    // The dashpots' velocity of the last grid update again where the
+    // re-map made another (MUSL: this step's; USF: the last step's, the
+    // velocity the step starts from), as the walls are applied again.
+    if (set_velocity.size() != nodes.size())
+      return; // the first step, or the grid changed
+    for (unsigned int j = 0; j < nodes.size(); ++j)
+      {
+        const unsigned int i = nodes[j].local_index;
+        if (!(fields.mass.local_element(i) > state.mass_threshold) ||
+            !set_velocity[j])
+          continue;
+        for (unsigned int d = 0; d < dim; ++d)
+          fields.velocity[d].local_element(i) = (*set_velocity[j])[d];
+      }
+    conditions->project(fields.velocity);
+    NodalExchange().add(fields.velocity).copy_owners_to_ghosts();
   }
 
   template class AbsorbingBoundary<2>;

@@ -2,7 +2,10 @@
 // runs along a confined bar (slip walls above and below, so that it is a
 // plane P wave) and leaves through the dashpots at its far end, which
 // match the bar's impedance rho c_p. With the far end free instead, the
-// pulse comes back and the bar keeps its energy.
+// pulse comes back and the bar keeps its energy. Under MUSL and USF the
+// dashpots' velocity is set again after the re-map: without it the
+// balance with the dashpots' work missed by 1.3 % under MUSL (now 0.1 %;
+// the check allows 0.5 %).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -23,11 +26,12 @@ namespace
    * m/s, one running to the far end (id 1), the other reflected at the
    * free near end and following it. */
   std::string
-  pulse(const bool absorbing)
+  pulse(const bool absorbing, const std::string &scheme = "MUSL")
   {
     std::ostringstream s;
     s.precision(17);
-    s << "set Number of bodies = 2\n";
+    s << "set Number of bodies = 2\n"
+      << "subsection MPM\n set Stress update = " << scheme << "\nend\n";
     if (absorbing)
       s << "set Effects = absorbing boundary\n"
         << "subsection Absorbing boundary\n set Boundary ids = 1\n"
@@ -55,10 +59,10 @@ namespace
   /** Both pulses have left by (2 + 0.2 + 0.2) / c_p = 0.021 s; run to
    * 0.03 s. */
   Left
-  run(const bool absorbing)
+  run(const bool absorbing, const std::string &scheme = "MUSL")
   {
-    auto         simulation = test::make_simulation<2>(pulse(absorbing), 2);
-    const double E0         = simulation->statistics().total_energy();
+    auto simulation = test::make_simulation<2>(pulse(absorbing, scheme), 2);
+    const double E0 = simulation->statistics().total_energy();
     while (simulation->time() < 0.03 - 1e-12)
       simulation->advance(
         std::min(simulation->time_step(), 0.03 - simulation->time()));
@@ -78,5 +82,15 @@ TEST(AbsorbingBoundary, PulseLeavesThroughMatchedDashpots)
             << std::endl;
   EXPECT_LT(absorbed.energy, 0.02);
   EXPECT_GT(kept.energy, 0.9);
-  EXPECT_LT(absorbed.balance, 0.05);
+  EXPECT_LT(absorbed.balance, 0.005);
+  for (const std::string scheme : {"USL", "USF"})
+    {
+      const Left other = run(true, scheme);
+      std::cout << scheme << ": energy left " << other.energy
+                << ", energy balance " << other.balance << std::endl;
+      EXPECT_LT(other.energy, 0.02) << scheme;
+      // USL has no re-map; its balance carries the drift of its own
+      // energy accounting (3.4 % here), as it did before.
+      EXPECT_LT(other.balance, scheme == "USL" ? 0.05 : 0.005) << scheme;
+    }
 }
