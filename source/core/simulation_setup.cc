@@ -204,6 +204,10 @@ namespace dealmpm
         SectionScope section(reader, "Body " + std::to_string(b));
         bodies.push_back(Body<dim>::read(reader, shape.n_materials));
       }
+    choose_anti_locking(run_settings.method,
+                        materials,
+                        material_models,
+                        bodies);
     check_compatibility<dim>(reader,
                              {run_settings.method,
                               adaptivity,

@@ -20,26 +20,6 @@ namespace dealmpm
   }
 
   template <int dim>
-  Tensor<1, dim>
-  BaseShaking<dim>::new_velocity(const BoundaryNode<dim> &node,
-                                 const double             m,
-                                 const Tensor<1, dim>    &v,
-                                 const Tensor<1, dim>    &w,
-                                 const double             dt) const
-  {
-    if (motion.rigid)
-      return w;
-    // Backward Euler on m dv/dt = rho c |A| (w - v) per direction.
-    const Tensor<1, dim> n    = node.normal();
-    const double         load = dt * motion.density * node.area.norm() / m;
-    const double         a_p  = load * motion.p_wave_speed,
-                 a_s          = load * motion.s_wave_speed;
-    const Tensor<1, dim> v_n = (v * n) * n, w_n = (w * n) * n;
-    return (v_n + a_p * w_n) / (1 + a_p) +
-           (v - v_n + a_s * (w - w_n)) / (1 + a_s);
-  }
-
-  template <int dim>
   void
   BaseShaking<dim>::after_grid_update(const EffectContext<dim> &state,
                                       NodalFields<dim>         &fields)
@@ -57,7 +37,8 @@ namespace dealmpm
         Tensor<1, dim> v;
         for (unsigned int d = 0; d < dim; ++d)
           v[d] = fields.velocity[d].local_element(i);
-        const Tensor<1, dim> v_new = new_velocity(node, m, v, w, state.dt);
+        const Tensor<1, dim> v_new =
+          motion.base_velocity(node.area, m, v, w, state.dt);
         this->work += m * ((v_new - v) * v_new);
         force += m * (v_new - v) / state.dt;
         set_velocity[j] = v_new;
@@ -129,7 +110,8 @@ namespace dealmpm
                         Patterns::List(Patterns::Integer(0)),
                         "The free grid boundaries (ids without a condition "
                         "in 'Grid/Boundary conditions') that are the base, "
-                        "e.g. '2'.");
+                        "e.g. '2'; empty when only FEM regions are shaken "
+                        "(their 'Shaken boundaries').");
       prm.declare_entry(
         "Base",
         "rigid",
@@ -181,8 +163,6 @@ namespace dealmpm
       BaseMotion<dim> motion;
       for (const double id : reader.get_doubles("Boundary ids"))
         motion.ids.insert(static_cast<types::boundary_id>(id));
-      if (motion.ids.empty())
-        reader.fail("Boundary ids", "at least one boundary id");
       motion.rigid        = reader.get("Base") == "rigid";
       motion.acceleration = reader.get("Motion") == "acceleration";
       motion.amplitude    = reader.get_vector<dim>("Amplitude");

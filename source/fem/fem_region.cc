@@ -69,15 +69,17 @@ namespace dealmpm
                       "locking).");
     prm.declare_entry(
       "Anti-locking",
-      "none",
-      Patterns::Selection("none|F-bar"),
+      "automatic",
+      Patterns::Selection("automatic|none|F-bar"),
       "Volumetric locking of Q1 cells: a material that deforms at constant "
       "volume (plasticity, nu near 0.5) cannot follow a Q1 field with a "
       "volume change of its own at every point, and the region comes out "
       "too stiff. 'F-bar' gives each cell's points the cell's mean volume "
       "change and keeps their own change of shape (de Souza Neto et al. "
       "1996; the forces are the derivative of the energy, which an elastic "
-      "region keeps); 'none' leaves each point its own.");
+      "region keeps); 'none' leaves each point its own. 'automatic': F-bar "
+      "for Q1 cells of a plastic material or one with a Poisson's ratio of "
+      "0.45 or more, none otherwise (Q2 cells lock far less).");
     prm.declare_entry("Material",
                       "1",
                       Patterns::Integer(1),
@@ -95,6 +97,16 @@ namespace dealmpm
                       "(rectangle: 0/1 at x min/max, 2/3 at y min/max, 4/5 "
                       "at z min/max; a Gmsh file: its physical tags).");
     declare_prescribed_loads(prm);
+    prm.declare_entry(
+      "Shaken boundaries",
+      "",
+      Patterns::List(Patterns::Integer(0)),
+      "Boundary ids of the region's mesh that are the base of effect 'base "
+      "shaking' (section Base shaking: the record, rigid or compliant): "
+      "rigid, their nodes move with the record; compliant, they meet the "
+      "ground below through dashpots driven by the incoming wave, so that "
+      "waves going down leave (a compliant base carries no weight: add the "
+      "geostatic reaction as a 'Traction' on the same ids).");
     prm.declare_entry(
       "Bonded boundaries",
       "",
@@ -179,9 +191,11 @@ namespace dealmpm
                                const unsigned int n_bodies)
   {
     FemRegionSettings s;
-    s.degree            = reader.get_integer("Degree");
-    s.f_bar             = reader.get("Anti-locking") == "F-bar";
-    const long material = reader.get_integer("Material");
+    s.degree                       = reader.get_integer("Degree");
+    const std::string anti_locking = reader.get("Anti-locking");
+    s.f_bar                        = anti_locking == "F-bar";
+    s.automatic_anti_locking       = anti_locking == "automatic";
+    const long material            = reader.get_integer("Material");
     if (material < 1 || material > static_cast<long>(n_materials))
       reader.fail("Material",
                   "the number of a 'Material N' section, 1 to " +
@@ -197,6 +211,8 @@ namespace dealmpm
     bc.velocity_curve     = LoadCurve::read(reader, "Velocity curve");
     bc.traction           = read_id_vectors<dim>(reader, "Traction");
     bc.traction_curve     = LoadCurve::read(reader, "Traction curve");
+    for (const double id : reader.get_doubles("Shaken boundaries"))
+      bc.shaken.insert(static_cast<types::boundary_id>(id));
     for (const auto &[id, text] :
          reader.get_id_map("Bonded boundaries", "a body number"))
       {
@@ -254,6 +270,35 @@ namespace dealmpm
       check_ids(reader, "Traction", s.conditions.traction, ids);
       check_ids(reader, "Bonded boundaries", s.bonded_to, ids);
       check_ids(reader, "Contact boundaries", s.contact, ids);
+      std::map<types::boundary_id, int> shaken;
+      for (const types::boundary_id id : s.conditions.shaken)
+        shaken[id] = 0;
+      check_ids(reader, "Shaken boundaries", shaken, ids);
+    }
+
+    /** Fail unless the shaken ids have a base motion and no other
+     * condition (the base sets their velocity itself). */
+    template <int dim>
+    void
+    check_shaken(const SceneReader            &reader,
+                 const FemRegionSettings<dim> &s,
+                 const BaseMotion<dim>        *base)
+    {
+      const RegionBoundaryConditions<dim> &bc = s.conditions;
+      if (bc.shaken.empty())
+        return;
+      if (base == nullptr)
+        reader.fail("Shaken boundaries",
+                    "ids only with the effect 'base shaking' listed in "
+                    "'Effects' (its section gives the record)");
+      for (const types::boundary_id id : bc.shaken)
+        if (bc.fixed.count(id) || bc.displacement.count(id) ||
+            bc.velocity.count(id) || bc.bonded.count(id) || s.contact.count(id))
+          reader.fail("Shaken boundaries",
+                      "ids without another condition (id " +
+                        std::to_string(id) +
+                        " is fixed, prescribed, bonded or in contact too): "
+                        "the base sets their velocity itself");
     }
 
     /** Fail unless every vertex is inside the background grid's box (the
@@ -316,13 +361,16 @@ namespace dealmpm
                   const unsigned int                                 index,
                   const std::vector<std::unique_ptr<Material<dim>>> &materials,
                   const unsigned int                                 n_bodies,
-                  const BackgroundGrid<dim>                         &grid)
+                  const BackgroundGrid<dim>                         &grid,
+                  const BaseMotion<dim>                             *base)
   {
     FemRegion<dim> region;
     region.name = "FEM region " + std::to_string(index + 1);
     SectionScope section(reader, region.name);
     region.settings =
       FemRegionSettings<dim>::read(reader, materials.size(), n_bodies);
+    check_shaken(reader, region.settings, base);
+    region.settings.conditions.base        = base;
     const FemRegionSettings<dim> &s        = region.settings;
     const Material<dim>          &material = *materials[s.material];
     if (material.resets_deformation())
@@ -332,7 +380,8 @@ namespace dealmpm
     region.solid =
       std::make_unique<SolidRegion<dim>>(grid.comm, material, s.degree);
     SolidRegion<dim> &solid = *region.solid;
-    solid.use_f_bar(s.f_bar);
+    solid.use_f_bar(s.f_bar || (s.automatic_anti_locking && s.degree == 1 &&
+                                material.locks_in_linear_cells()));
     read_coarse_mesh<dim>(reader, solid.get_triangulation());
     check_boundary_ids(reader, s, solid.get_triangulation());
     check_inside_grid(reader, solid.get_triangulation(), grid);
@@ -363,11 +412,13 @@ namespace dealmpm
                   unsigned int,
                   const std::vector<std::unique_ptr<Material<2>>> &,
                   unsigned int,
-                  const BackgroundGrid<2> &);
+                  const BackgroundGrid<2> &,
+                  const BaseMotion<2> *);
   template FemRegion<3>
   make_fem_region(SceneReader &,
                   unsigned int,
                   const std::vector<std::unique_ptr<Material<3>>> &,
                   unsigned int,
-                  const BackgroundGrid<3> &);
+                  const BackgroundGrid<3> &,
+                  const BaseMotion<3> *);
 } // namespace dealmpm

@@ -1,5 +1,6 @@
 #include <deal.II/base/mpi.h>
 
+#include <dealmpm/effects/base_shaking.h>
 #include <dealmpm/fem/fem_regions.h>
 
 #include <algorithm>
@@ -55,9 +56,24 @@ namespace dealmpm
     const BackgroundGrid<dim>                         &grid,
     const bool                                         apic)
   {
+    const BaseMotion<dim> *base = nullptr;
+    for (const auto &effect : effects)
+      if (const auto *shaking = dynamic_cast<BaseShaking<dim> *>(effect.get()))
+        base = &shaking->base_motion();
+    bool shaken = base && !base->ids.empty();
     for (unsigned int r = 0; r < n_regions; ++r)
-      regions.push_back(
-        make_fem_region<dim>(reader, r, materials, n_bodies, grid));
+      {
+        regions.push_back(
+          make_fem_region<dim>(reader, r, materials, n_bodies, grid, base));
+        shaken |= !regions.back().settings.conditions.shaken.empty();
+      }
+    if (base && !shaken)
+      {
+        SectionScope section(reader, "Base shaking");
+        reader.fail("Boundary ids",
+                    "at least one boundary id, here or in an FEM region's "
+                    "'Shaken boundaries'");
+      }
     for (FemRegion<dim> &region : regions)
       region.solid->track_potential(potential(), false);
     for (FemRegion<dim> &region : regions)

@@ -84,6 +84,44 @@ namespace dealmpm
     nodes.clear();
     for (const auto &item : found)
       nodes.push_back(item.second);
+    if (!conditions.shaken.empty() && !conditions.base->rigid)
+      set_base_areas();
+  }
+
+  template <int dim>
+  void
+  SolidRegion<dim>::set_base_areas()
+  {
+    // A compliant base's dashpots act on each node's share of the base:
+    // int N_i n dA with Gauss-Lobatto points (lumped, as the mass).
+    LinearAlgebra::distributed::Vector<double> area(mass.get_partitioner());
+    QGaussLobatto<dim - 1>                     lobatto(fe.degree + 1);
+    FEFaceValues<dim>                          face_values(mapping,
+                                  fe,
+                                  lobatto,
+                                  update_values | update_normal_vectors |
+                                    update_JxW_values);
+    std::vector<types::global_dof_index>       dofs(fe.n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              conditions.shaken.count(cell->face(f)->boundary_id()))
+            {
+              face_values.reinit(cell, f);
+              cell->get_dof_indices(dofs);
+              for (unsigned int i = 0; i < dofs.size(); ++i)
+                for (unsigned int q = 0; q < lobatto.size(); ++q)
+                  area(dofs[i]) += face_values.shape_value(i, q) *
+                                   face_values.normal_vector(
+                                     q)[fe.system_to_component_index(i).first] *
+                                   face_values.JxW(q);
+            }
+    area.compress(VectorOperation::add);
+    for (Node &node : nodes)
+      if (node.kind == Node::Kind::shaken)
+        for (unsigned int d = 0; d < dim; ++d)
+          node.value[d] = area.local_element(node.dof[d]);
   }
 
   template <int dim>
@@ -141,6 +179,8 @@ namespace dealmpm
         raise(Kind::velocity, bc.velocity.at(id));
       if (bc.bonded.count(id))
         raise(Kind::bonded, Tensor<1, dim>());
+      if (bc.shaken.count(id))
+        raise(Kind::shaken, Tensor<1, dim>());
     }
   } // namespace
 

@@ -159,7 +159,7 @@ namespace dealmpm
   SolidRegion<dim>::has_supports() const
   {
     return !conditions.fixed.empty() || !conditions.displacement.empty() ||
-           !conditions.velocity.empty();
+           !conditions.velocity.empty() || !conditions.shaken.empty();
   }
 
   template <int dim>

@@ -373,12 +373,7 @@ namespace dealmpm
     switch (node.kind)
       {
         case Kind::free:
-          for (unsigned int d = 0; d < dim; ++d)
-            v[d] = velocity.local_element(node.dof[d]) +
-                   dt * force.local_element(node.dof[d]) /
-                     mass.local_element(node.dof[d]);
-          if (!velocity_correction.empty())
-            v += velocity_correction[k];
+          v = free_velocity(k, dt);
           break;
         case Kind::fixed:
           break;
@@ -394,7 +389,30 @@ namespace dealmpm
         case Kind::bonded:
           v = node_vector(velocity, node);
           break;
+        case Kind::shaken:
+          v = conditions.base->base_velocity(node.value,
+                                             mass.local_element(node.dof[0]),
+                                             free_velocity(k, dt),
+                                             conditions.base->velocity(
+                                               time + 0.5 * dt),
+                                             dt);
+          break;
       }
+    return v;
+  }
+
+  template <int dim>
+  Tensor<1, dim>
+  SolidRegion<dim>::free_velocity(const unsigned int k, const double dt) const
+  {
+    const Node    &node = nodes[k];
+    Tensor<1, dim> v;
+    for (unsigned int d = 0; d < dim; ++d)
+      v[d] =
+        velocity.local_element(node.dof[d]) +
+        dt * force.local_element(node.dof[d]) / mass.local_element(node.dof[d]);
+    if (!velocity_correction.empty())
+      v += velocity_correction[k];
     return v;
   }
 
@@ -441,8 +459,7 @@ namespace dealmpm
       {
         const Node          &node = nodes[k];
         const Tensor<1, dim> v    = new_velocity(k, time, dt);
-        if (node.kind == Kind::fixed || node.kind == Kind::displacement ||
-            node.kind == Kind::velocity)
+        if (node.kind != Kind::free && node.kind != Kind::bonded)
           add_support_reaction(node, v, dt);
         for (unsigned int d = 0; d < dim; ++d)
           {

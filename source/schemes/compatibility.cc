@@ -106,13 +106,15 @@ namespace dealmpm
       SectionScope mpm(reader, "MPM");
       if (total_lagrangian(scene))
         reader.fail("Anti-locking",
-                    "'none' under 'MPM/Formulation = total Lagrangian' (F "
+                    "'none' or 'automatic' under 'MPM/Formulation = total "
+                    "Lagrangian' (F "
                     "advances there from the reference cell's gradient, and "
                     "an F-bar would have to average the total volume change "
                     "over the reference cell: not built)");
       if (scene.method.particle_update.newmark)
         reader.fail("Anti-locking",
-                    "'none' with 'MPM/Particle update = Newmark' (not built)");
+                    "'none' or 'automatic' with 'MPM/Particle update = "
+                    "Newmark' (not built)");
     }
 
     /** Refined cells make hanging nodes and move particles between
@@ -238,8 +240,38 @@ namespace dealmpm
     return g;
   }
 
+  template <int dim>
+  void
+  choose_anti_locking(
+    MethodSettings                                    &method,
+    const std::vector<std::unique_ptr<Material<dim>>> &materials,
+    const std::vector<std::string>                    &material_models,
+    const std::vector<Body<dim>>                      &bodies)
+  {
+    if (method.anti_locking != AntiLocking::automatic)
+      return;
+    method.anti_locking = AntiLocking::none;
+    if (method.formulation != Formulation::updated_lagrangian ||
+        method.particle_update.newmark)
+      return;
+    for (const Body<dim> &body : bodies)
+      if (materials[body.material]->locks_in_linear_cells())
+        {
+          method.anti_locking = AntiLocking::f_bar;
+          method.anti_locking_reason =
+            "Material " + std::to_string(body.material + 1) + " (" +
+            material_models[body.material] + ")";
+          return;
+        }
+  }
+
 #define DEALMPM_INSTANTIATE(dim)                                               \
   template void check_compatibility(SceneReader &, const SceneChoices<dim> &); \
+  template void choose_anti_locking(                                           \
+    MethodSettings &,                                                          \
+    const std::vector<std::unique_ptr<Material<dim>>> &,                       \
+    const std::vector<std::string> &,                                          \
+    const std::vector<Body<dim>> &);                                           \
   template Tensor<1, dim> uniform_acceleration(                                \
     const std::vector<std::unique_ptr<Effect<dim>>> &);
   DEALMPM_INSTANTIATE(2)

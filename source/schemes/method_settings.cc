@@ -117,7 +117,7 @@ namespace dealmpm
       prm.declare_entry(
         "Anti-locking",
         "none",
-        Patterns::Selection("none|F-bar"),
+        Patterns::Selection("automatic|none|F-bar"),
         "Volumetric locking: a linear cell with 2^dim particles gives each "
         "its own volume change, which a material that flows at constant "
         "volume (plasticity, nu near 0.5) cannot follow, so that failure "
@@ -125,7 +125,13 @@ namespace dealmpm
         "particles of each body in a cell the cell's volume-weighted mean "
         "volume change and keeps their own change of shape (Coombs et al. "
         "2018, CMAME 333); 'none' leaves each particle its own. "
-        "Updated Lagrangian and the explicit particle update only.");
+        "Updated Lagrangian and the explicit particle update only. "
+        "'automatic': F-bar where a body's material is plastic or has a "
+        "Poisson's ratio of 0.45 or more (and the formulation and particle "
+        "update allow it), none elsewhere; the run's first lines say what "
+        "it chose. Not the default: F-bar lowers failure loads to the "
+        "closed forms, but a collapsing granular column stops with J <= 0 "
+        "under it (doc/guide/time-stepping-and-schemes.md).");
       prm.declare_entry("Taylor terms",
                         "4",
                         Patterns::Integer(1, 20),
@@ -248,9 +254,10 @@ namespace dealmpm
       DeformationUpdate::parse(reader.get("Deformation gradient update"));
     s.deformation_update.taylor_terms = reader.get_integer("Taylor terms");
     s.deformation_update.subcycles    = reader.get_integer("Subcycles");
-    s.anti_locking                    = reader.get("Anti-locking") == "F-bar" ?
-                                          AntiLocking::f_bar :
-                                          AntiLocking::none;
+    const std::string anti_locking    = reader.get("Anti-locking");
+    s.anti_locking            = anti_locking == "F-bar" ? AntiLocking::f_bar :
+                                anti_locking == "none"  ? AntiLocking::none :
+                                                          AntiLocking::automatic;
     s.particle_update.newmark = reader.get("Particle update") == "Newmark";
     if (s.particle_update.newmark)
       read_newmark(reader, s);

@@ -185,6 +185,8 @@ expect 2 "Base shaking/Density.*expected a positive number" \
   "$scene" "${s[@]}" "${b[@]}" -s "Base shaking/Base=compliant"
 expect 2 "Base shaking/Load curve.*expected the record" \
   "$scene" "${s[@]}" -s "Effects=base shaking" -s "Base shaking/Boundary ids=2"
+expect 2 "Base shaking/Boundary ids.*expected at least one boundary id, here or in an FEM region's 'Shaken boundaries'" \
+  "$scene" "${s[@]}" -s "Effects=base shaking" -s "Base shaking/Load curve=0: 0, 1: 1"
 expect 2 "Effects.*expected 'frictional contact' without 'base shaking'" \
   "$scene" "${s[@]}" "${b[@]}" -s "Effects=frictional contact, base shaking"
 t=(-s "Effects=traction")
@@ -250,6 +252,10 @@ expect 2 "FEM region 1/Bonded boundaries.*'MPM/Stress update = USL'" "$fem" "${s
 expect 2 "FEM region 1/Material.*'Material N' section, 1 to 1" "$fem" "${s[@]}" -s "FEM region 1/Material=2"
 expect 2 "FEM region 1/Traction.*items 'id: v, v' separated by ';'" "$fem" "${s[@]}" -s "FEM region 1/Traction=1: 0"
 expect 2 "FEM region 1/Fixed boundaries.*not 9" "$fem" "${s[@]}" -s "FEM region 1/Fixed boundaries=9"
+expect 2 "FEM region 1/Shaken boundaries.*expected ids only with the effect 'base shaking' listed" "$fem" "${s[@]}" \
+  -s "FEM region 1/Shaken boundaries=2"
+expect 2 "FEM region 1/Shaken boundaries.*expected ids without another condition \(id 0 is fixed" "$fem" "${s[@]}" \
+  -s "Effects=base shaking" -s "Base shaking/Load curve=0: 0, 1: 1" -s "FEM region 1/Shaken boundaries=0"
 expect 2 "section 'FEM region 1' but 'Number of FEM regions' = 0" "$fem" "${s[@]}" -s "Number of FEM regions=0"
 # Resuming where no run saved itself.
 expect 2 "checkpoints: no such folder of checkpoints" "$scene" "${s[@]}" --resume

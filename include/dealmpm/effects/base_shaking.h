@@ -1,6 +1,6 @@
 #pragma once
 
-#include <dealmpm/base/load_curve.h>
+#include <dealmpm/base/base_motion.h>
 #include <dealmpm/effects/effect_with_work.h>
 #include <dealmpm/grid/boundary_nodes.h>
 
@@ -10,32 +10,6 @@
 
 namespace dealmpm
 {
-  /** What 'Base shaking' reads: the base and its motion. */
-  template <int dim>
-  struct BaseMotion
-  {
-    std::set<types::boundary_id> ids;
-    /** Rigid: the base nodes move with the record. Compliant: dashpots
-     * with the incoming wave (the ground beyond the base, as
-     * 'absorbing boundary', lets waves leave). */
-    bool rigid = true;
-    /** The record is an acceleration (integrated exactly) or a velocity. */
-    bool           acceleration = true;
-    Tensor<1, dim> amplitude;
-    LoadCurve      record;
-    /** The ground beyond a compliant base. */
-    double density = 0, p_wave_speed = 0, s_wave_speed = 0;
-
-    /** The record's velocity at @p t: amplitude times the record (or its
-     * integral from 0). A compliant base's record is the outcrop motion,
-     * twice the incoming wave's. */
-    Tensor<1, dim>
-    velocity(const double t) const
-    {
-      return amplitude * (acceleration ? record.integral(t) : record(t));
-    }
-  };
-
   /**
    * Earthquake input at the base of the grid (free boundary ids).
    *
@@ -64,6 +38,14 @@ namespace dealmpm
       : EffectWithWork<dim>("base_work")
       , motion(motion)
     {}
+
+    /** The record and the ground beyond the base (FEM regions' 'Shaken
+     * boundaries' move with it too). */
+    const BaseMotion<dim> &
+    base_motion() const
+    {
+      return motion;
+    }
 
     bool
     reads_stencil() const override
@@ -100,14 +82,6 @@ namespace dealmpm
     statistics_columns() const override;
 
   private:
-    /** The base's velocity for node @p node of mass @p m at v. */
-    Tensor<1, dim>
-    new_velocity(const BoundaryNode<dim> &node,
-                 const double             m,
-                 const Tensor<1, dim>    &v,
-                 const Tensor<1, dim>    &w,
-                 const double             dt) const;
-
     BaseMotion<dim>                motion;
     const BoundaryConditions<dim> *conditions = nullptr;
     std::vector<BoundaryNode<dim>> nodes;

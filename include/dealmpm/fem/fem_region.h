@@ -35,9 +35,12 @@ namespace dealmpm
          const unsigned int n_materials,
          const unsigned int n_bodies);
 
-    unsigned int                  degree   = 1;
-    bool                          f_bar    = false; ///< 'Anti-locking'
-    unsigned int                  material = 0;     ///< 0-based
+    unsigned int degree = 1;
+    bool         f_bar  = false; ///< 'Anti-locking'
+    /** 'Anti-locking = automatic': F-bar for Q1 cells of a material that
+     * locks in linear cells. */
+    bool                          automatic_anti_locking = true;
+    unsigned int                  material               = 0; ///< 0-based
     Tensor<1, dim>                initial_velocity;
     RegionBoundaryConditions<dim> conditions;
     /** Bonded boundary id -> body (0-based). */
@@ -61,12 +64,14 @@ namespace dealmpm
   /** Make region @p index (0-based) from its section: the mesh, the
    * checks against the scene (ids the mesh has, inside the background
    * grid, bonded nodes no coarser than its cells), the solid set up with
-   * its initial velocity. Collective; InputError on bad input. */
+   * its initial velocity; @p base is the scene's base motion (effect
+   * 'base shaking'), or none. Collective; InputError on bad input. */
   template <int dim>
   FemRegion<dim>
   make_fem_region(SceneReader                                       &reader,
                   const unsigned int                                 index,
                   const std::vector<std::unique_ptr<Material<dim>>> &materials,
                   const unsigned int                                 n_bodies,
-                  const BackgroundGrid<dim>                         &grid);
+                  const BackgroundGrid<dim>                         &grid,
+                  const BaseMotion<dim>                             *base);
 } // namespace dealmpm

@@ -7,6 +7,7 @@
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/lac/la_parallel_vector.h>
 
+#include <dealmpm/base/base_motion.h>
 #include <dealmpm/base/load_curve.h>
 #include <dealmpm/materials/material.h>
 
@@ -23,7 +24,7 @@ namespace dealmpm
 
   /** Conditions on a region's boundary ids; ids not named are free. A node
    * on several named ids takes the first of: fixed, displacement,
-   * velocity, bonded (tractions add up). */
+   * velocity, bonded, shaken (tractions add up). */
   template <int dim>
   struct RegionBoundaryConditions
   {
@@ -40,6 +41,11 @@ namespace dealmpm
     /** Nodes that move with the background grid (fem/bonded_coupling.h):
      * their velocity is set from outside before advance(). */
     std::set<types::boundary_id> bonded;
+    /** Nodes on the base (section 'Base shaking'): they move with the
+     * record (rigid) or meet the ground beyond through dashpots with the
+     * incoming wave (compliant). */
+    std::set<types::boundary_id> shaken;
+    const BaseMotion<dim> *base = nullptr; ///< set when shaken isn't empty
   };
 
   /** Body force per unit mass at reference position X, position x,
@@ -75,12 +81,15 @@ namespace dealmpm
         fixed,
         displacement,
         velocity,
-        bonded
+        bonded,
+        shaken
       };
       std::array<unsigned int, dim> dof; ///< local indices of the owned dofs
       Point<dim>                    X;   ///< reference position
       Kind                          kind = Kind::free;
-      Tensor<1, dim>                value; ///< the prescribed u or v
+      /** The prescribed u or v; shaken: the outward normal times the
+       * node's share of the base's area. */
+      Tensor<1, dim> value;
     };
 
     SolidRegion(const MPI_Comm       comm,
@@ -417,6 +426,10 @@ namespace dealmpm
     /** The owned nodes with the conditions of their faces' ids. */
     void
     make_nodes();
+    /** A compliant base: each shaken node's outward normal times its
+     * share of the base's area (its Node::value). */
+    void
+    set_base_areas();
     /** The owned nodes (keyed by their x dof), without conditions. */
     std::map<types::global_dof_index, Node>
     find_owned_nodes() const;
@@ -469,6 +482,10 @@ namespace dealmpm
     new_velocity(const unsigned int k,
                  const double       time,
                  const double       dt) const;
+    /** The velocity of node @p k after the step's forces, without its
+     * conditions. */
+    Tensor<1, dim>
+    free_velocity(const unsigned int k, const double dt) const;
     /** A prescribed node taking @p v: the support's work and reaction. */
     void
     add_support_reaction(const Node           &node,

@@ -86,6 +86,12 @@ namespace dealmpm
       return inner->resets_deformation();
     }
 
+    bool
+    locks_in_linear_cells() const override
+    {
+      return inner->locks_in_linear_cells();
+    }
+
     /** The wrapped model. */
     Material<dim> &
     inner_model()

@@ -68,6 +68,15 @@ namespace dealmpm
       return true;
     }
 
+    /** Plastic flow (isochoric for J2 and a dilation angle of 0, little
+     * dilation otherwise) cannot follow a volume change of each point's
+     * own. */
+    bool
+    locks_in_linear_cells() const override
+    {
+      return true;
+    }
+
     /** The equivalent plastic strain of a state. */
     static double
     plastic_strain(ArrayView<const double> internal)

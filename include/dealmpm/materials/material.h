@@ -155,6 +155,17 @@ namespace dealmpm
       return false;
     }
 
+    /** Whether a linear cell with 2^dim points locks with this model:
+     * plastic flow (at or near constant volume), or an elastic Poisson's
+     * ratio of 0.45 or more. 'Anti-locking = automatic'
+     * chooses F-bar for such a material (the study behind it:
+     * doc/guide/time-stepping-and-schemes.md#anti-locking-f-bar). */
+    virtual bool
+    locks_in_linear_cells() const
+    {
+      return false;
+    }
+
     /** Reference mass density, set from the scene's material section. */
     double density = 0;
   };
@@ -194,6 +205,15 @@ namespace dealmpm
   {
     double lambda;
     double mu;
+
+    /** Poisson's ratio 0.45 or more (to round-off: a scene's 0.45
+     * counts): nearly incompressible, locking in linear cells
+     * (Material::locks_in_linear_cells()). */
+    bool
+    nearly_incompressible() const
+    {
+      return lambda / (2 * (lambda + mu)) >= 0.45 - 1e-12;
+    }
   };
 
   /** Declare "Young's modulus" and "Poisson's ratio" in the current section. */

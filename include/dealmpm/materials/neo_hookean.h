@@ -49,6 +49,12 @@ namespace dealmpm
                           const SymmetricTensor<2, dim> &stress,
                           ArrayView<const double> internal) const override;
 
+    bool
+    locks_in_linear_cells() const override
+    {
+      return lame.nearly_incompressible();
+    }
+
   private:
     LameParameters lame;
   };

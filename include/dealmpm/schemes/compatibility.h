@@ -44,6 +44,21 @@ namespace dealmpm
   void
   check_compatibility(SceneReader &reader, const SceneChoices<dim> &scene);
 
+  /**
+   * 'MPM/Anti-locking = automatic' made a choice, before the checks: F-bar
+   * when a body's material locks in linear cells
+   * (Material::locks_in_linear_cells(): plastic, or nu >= 0.45) and the
+   * formulation (updated Lagrangian) and particle update (explicit) allow
+   * F-bar, none otherwise; the reason in method.anti_locking_reason.
+   */
+  template <int dim>
+  void
+  choose_anti_locking(
+    MethodSettings                                    &method,
+    const std::vector<std::unique_ptr<Material<dim>>> &materials,
+    const std::vector<std::string>                    &material_models,
+    const std::vector<Body<dim>>                      &bodies);
+
   /** The uniform acceleration of the effects with a potential at t = 0
    * (gravity; zero without): minus the potential's gradient per unit
    * mass. */

@@ -25,7 +25,10 @@ namespace dealmpm
   enum class AntiLocking
   {
     none,
-    f_bar
+    f_bar,
+    /** F-bar where a body's material locks in linear cells, none
+     * elsewhere: made one of the others by choose_anti_locking(). */
+    automatic
   };
 
   struct MethodSettings
@@ -45,6 +48,9 @@ namespace dealmpm
     DeformationUpdate deformation_update;
     /** A cell's particles share its volume change (FBar) or not. */
     AntiLocking anti_locking = AntiLocking::none;
+    /** What 'automatic' chose F-bar for ("Material 1 (J2 plasticity)"),
+     * empty otherwise. */
+    std::string anti_locking_reason;
     /** How particles advance from the grid's acceleration. */
     ParticleUpdate particle_update;
 
