@@ -145,7 +145,10 @@ def cantilever_answer(run):
     return ("first peak %.2f m at t = %.2f s (about 3.3 m near 1.05 s)" % (peak, peak_time), ok)
 
 
-def granular_answer(run):
+def granular_answer(run, toe_bound=0.1):
+    """The final surface against Bui et al.'s within 10 % of the column's
+    height (rms), and the toe (the third particle from the front) within
+    @p toe_bound of their 0.44 m (None: reported, not bounded)."""
     final = particles(run.folder, len(run.rows) - 1)
     h = run.h
     reference = [(float(r["x_m"]), float(r["y_m"]))
@@ -157,7 +160,7 @@ def granular_answer(run):
     rms = math.sqrt(sum(squares) / len(squares)) / 0.1
     xs = sorted(p["x"] for p in final)
     toe = xs[-3]
-    ok = rms <= 0.1 and abs(toe - 0.44) <= 0.1 * 0.44
+    ok = rms <= 0.1 and (toe_bound is None or abs(toe - 0.44) <= toe_bound * 0.44)
     return ("toe at x = %.3f m (0.44), surface rms error %.1f %% of the height"
             % (toe, 100 * rms), ok)
 
@@ -285,6 +288,21 @@ CASES = {
                        growth=0.05, answer=cantilever_answer),
     "granular_collapse": dict(scene=os.path.join(SCENES, "granular_collapse.prm"),
                               h=0.005, growth=0.02, answer=granular_answer),
+    # F-bar in the collapsing flow (anti-locking weighted by the particles'
+    # reference volumes): it must run to rest at CFL 0.5 and 0.2 (with
+    # current volumes as weights it stopped with J <= 0 at t = 0.54 s and
+    # 0.36 s). Its toe runs further than the experiment's (0.51 m against
+    # 0.44; 'none' on cells half as large runs to 0.57 m as well), so only
+    # the surface is held to the reference (doc/guide/limits.md).
+    "granular_collapse_f_bar": dict(
+        scene=os.path.join(SCENES, "granular_collapse.prm"),
+        overrides=["MPM/Anti-locking=F-bar"], variants=[("cpGIMP, USL, F-bar", [])],
+        h=0.005, growth=0.02, answer=lambda run: granular_answer(run, None)),
+    "granular_collapse_f_bar_cfl_0.2": dict(
+        scene=os.path.join(SCENES, "granular_collapse.prm"),
+        overrides=["MPM/Anti-locking=F-bar", "Time/CFL number=0.2"],
+        variants=[("cpGIMP, USL, F-bar, CFL 0.2", [])],
+        h=0.005, growth=0.02, answer=lambda run: granular_answer(run, None)),
     "dam_break": dict(scene=os.path.join(SCENES, "dam_break.prm"), h=0.05715 / 16,
                       growth=0.02, answer=dam_answer),
     "resting_column": dict(scene=os.path.join(SCENES, "resting_column.prm"), h=0.05,

@@ -186,21 +186,24 @@ namespace dealmpm
 
   template <int dim>
   FemRegionSettings<dim>
-  FemRegionSettings<dim>::read(SceneReader       &reader,
-                               const unsigned int n_materials,
-                               const unsigned int n_bodies)
+  FemRegionSettings<dim>::read(
+    SceneReader                                       &reader,
+    const std::vector<std::unique_ptr<Material<dim>>> &materials,
+    const unsigned int                                 n_bodies)
   {
     FemRegionSettings s;
-    s.degree                       = reader.get_integer("Degree");
-    const std::string anti_locking = reader.get("Anti-locking");
-    s.f_bar                        = anti_locking == "F-bar";
-    s.automatic_anti_locking       = anti_locking == "automatic";
-    const long material            = reader.get_integer("Material");
-    if (material < 1 || material > static_cast<long>(n_materials))
+    s.degree            = reader.get_integer("Degree");
+    const long material = reader.get_integer("Material");
+    if (material < 1 || material > static_cast<long>(materials.size()))
       reader.fail("Material",
                   "the number of a 'Material N' section, 1 to " +
-                    std::to_string(n_materials) + " ('Number of materials')");
-    s.material         = material - 1;
+                    std::to_string(materials.size()) +
+                    " ('Number of materials')");
+    s.material                     = material - 1;
+    const std::string anti_locking = reader.get("Anti-locking");
+    s.f_bar                        = anti_locking == "F-bar" ||
+              (anti_locking == "automatic" && s.degree == 1 &&
+               materials[s.material]->locks_in_linear_cells());
     s.initial_velocity = reader.get_vector<dim>("Initial velocity");
     RegionBoundaryConditions<dim> &bc = s.conditions;
     for (const double id : reader.get_doubles("Fixed boundaries"))
@@ -367,8 +370,7 @@ namespace dealmpm
     FemRegion<dim> region;
     region.name = "FEM region " + std::to_string(index + 1);
     SectionScope section(reader, region.name);
-    region.settings =
-      FemRegionSettings<dim>::read(reader, materials.size(), n_bodies);
+    region.settings = FemRegionSettings<dim>::read(reader, materials, n_bodies);
     check_shaken(reader, region.settings, base);
     region.settings.conditions.base        = base;
     const FemRegionSettings<dim> &s        = region.settings;
@@ -380,8 +382,7 @@ namespace dealmpm
     region.solid =
       std::make_unique<SolidRegion<dim>>(grid.comm, material, s.degree);
     SolidRegion<dim> &solid = *region.solid;
-    solid.use_f_bar(s.f_bar || (s.automatic_anti_locking && s.degree == 1 &&
-                                material.locks_in_linear_cells()));
+    solid.use_f_bar(s.f_bar);
     read_coarse_mesh<dim>(reader, solid.get_triangulation());
     check_boundary_ids(reader, s, solid.get_triangulation());
     check_inside_grid(reader, solid.get_triangulation(), grid);

@@ -1,11 +1,12 @@
 // F-bar anti-locking ('MPM/Anti-locking = F-bar', FBar). Over a step of a
 // deforming column (after 20 steps), the particles of each body in a cell
-// all change volume by the same factor, the cell's volume-weighted mean,
-// where a quarter of them or more change it otherwise without F-bar: in 2D
+// all change volume by the same factor, the cell's mean, where a quarter
+// of them or more change it otherwise without F-bar: in 2D
 // and 3D, with USL, MUSL and USF and with the linear, uGIMP, CPDI and
 // B-spline shape functions. Over the first step of four blocks that meet
 // in the middle of a cell, each moving its own way (the same state with
-// and without F-bar): each body's volume in each cell is the one it has
+// and without F-bar, every J = 1, so that F-bar's weights, the reference
+// volumes, are the volumes): each body's volume in each cell is the one it has
 // without F-bar, and each particle's change of shape (the increment scaled
 // to unit determinant) is its own. Tolerances: 1e-12, the round-off of a
 // few products of numbers of order one.

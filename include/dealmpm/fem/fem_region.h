@@ -31,16 +31,15 @@ namespace dealmpm
     /** Read the current section (the reader is in it); one-line failures
      * for bad values, numbers of materials or bodies out of range. */
     static FemRegionSettings
-    read(SceneReader       &reader,
-         const unsigned int n_materials,
-         const unsigned int n_bodies);
+    read(SceneReader                                       &reader,
+         const std::vector<std::unique_ptr<Material<dim>>> &materials,
+         const unsigned int                                 n_bodies);
 
     unsigned int degree = 1;
-    bool         f_bar  = false; ///< 'Anti-locking'
-    /** 'Anti-locking = automatic': F-bar for Q1 cells of a material that
-     * locks in linear cells. */
-    bool                          automatic_anti_locking = true;
-    unsigned int                  material               = 0; ///< 0-based
+    /** 'Anti-locking', resolved: F-bar by name, or 'automatic' (the
+     * default) for Q1 cells of a material that locks in linear cells. */
+    bool                          f_bar    = false;
+    unsigned int                  material = 0; ///< 0-based
     Tensor<1, dim>                initial_velocity;
     RegionBoundaryConditions<dim> conditions;
     /** Bonded boundary id -> body (0-based). */

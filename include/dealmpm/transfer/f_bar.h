@@ -21,15 +21,25 @@ namespace dealmpm
    * nearly incompressible elasticity) cannot meet that many constraints:
    * it locks, and failure loads come out too high. F-bar lets the cell
    * carry one volume change: with dF_p = increment(dt L_p) the step's
-   * deformation increment of particle p, dJ_p = det dF_p and V_p = V0_p det
-   * F_p the volume at the step's start, each body's particles in a cell
-   * share
-   *   dJbar = sum V_p dJ_p / sum V_p
+   * deformation increment of particle p, dJ_p = det dF_p and V0_p its
+   * reference volume, each body's particles in a cell share
+   *   dJbar = sum V0_p dJ_p / sum V0_p
    * and take dFbar_p = (dJbar / dJ_p)^(1/dim) dF_p: their shape change is
    * their own, their volume change the cell's (in 2D the in-plane block,
-   * so that F_zz stays 1: plane strain), and the cell's volume is what it
-   * was (sum V_p dJ_p). The rate models see Lbar_p = L_p + (s_p - 1) / dt I
-   * with s_p the factor, which differs from the increment's at O(dt).
+   * so that F_zz stays 1: plane strain). The rate models see
+   * Lbar_p = L_p + (s_p - 1) / dt I with s_p the factor, which differs
+   * from the increment's at O(dt).
+   *
+   * The weights are the reference volumes (the mass, within a body), not
+   * the current volumes V_p = V0_p J_p as in Coombs et al.: the two agree
+   * while the particles' J are alike, but a cohesionless grain that has
+   * opened up (at its yield cone's apex J grows freely, to 20 and more at
+   * a collapsing column's front) has a volume that is mostly void, and
+   * weighted by it, it dictated the cell's volume change and took a
+   * dense neighbour's pressure onto its inflated volume: its nodes were
+   * pushed J times as hard as a dense particle's, and the granular
+   * collapse under USL and cpGIMP stopped with J <= 0 (it runs at every
+   * CFL number from 0.1 to 0.5 with these weights).
    *
    * Used as a deforming sweep's gradient adjustment (adjusting(), which
    * records each particle's dJ_p and V_p after the scene's own adjustment)
@@ -104,7 +114,7 @@ namespace dealmpm
     void
     flush()
     {
-      for (const Held &held : cell_particles)
+      for (Held &held : cell_particles)
         finish(held);
       share_mean_stress();
       cell_particles.clear();
@@ -132,16 +142,16 @@ namespace dealmpm
       }
     };
 
-    /** One body's particles in the cell in hand: their volume, their
-     * volume after the step's change and their volume-weighted mean
-     * normal stress. */
+    /** One body's particles in the cell in hand: their reference volume,
+     * their reference volume times their own volume change, and their
+     * mean normal stresses' force sum V_p p_p (current volumes). */
     struct Group
     {
       unsigned int body;
-      double       volume = 0, changed = 0, stress = 0;
+      double       volume = 0, changed = 0, force = 0;
 
-      /** The volume-weighted mean volume change dJbar (0 if the group
-       * has no volume: its particles then keep their F). */
+      /** The weighted mean volume change dJbar (0 if the group has no
+       * volume: its particles then keep their F). */
       double
       dJ_bar() const
       {
@@ -153,7 +163,8 @@ namespace dealmpm
     struct Held
     {
       unsigned int          group;
-      double                volume, dJ;
+      double                volume, dJ; ///< V0_p and dJ_p
+      double                J  = 1;     ///< det F_p after the step
       types::particle_index id = 0;
       Point<dim>            location;
       double               *props = nullptr;
@@ -173,10 +184,8 @@ namespace dealmpm
         }
       Held held;
       held.dJ     = determinant(increment(dt * L));
-      held.volume = props[FixedCore<dim>::initial_volume] *
-                    determinant(read_tensor<dim>(
-                      &props[FixedCore<dim>::deformation_gradient]));
-      held.group = group_of(particles.body_of(props));
+      held.volume = props[FixedCore<dim>::initial_volume];
+      held.group  = group_of(particles.body_of(props));
       groups[held.group].volume += held.volume;
       groups[held.group].changed += held.volume * held.dJ;
       cell_particles.push_back(held);
@@ -194,22 +203,24 @@ namespace dealmpm
       return groups.size() - 1;
     }
 
-    /** Each body's particles in the cell take the volume-weighted mean of
-     * their mean (in-plane in 2D) normal stress, so that the grid's
-     * internal force does the work the materials count: with one volume
-     * change per cell, a particle's pressure works on the cell's mean
-     * volume rate (B-bar's internal force), not on its own. */
+    /** Each body's particles in the cell share the force of their mean
+     * (in-plane in 2D) normal stresses, P = sum V_p p_p, in the weights of
+     * dJbar: V_p pbar_p = P V0_p / sum V0. So the grid's internal force
+     * does the work the materials count: with one volume change per cell,
+     * a particle's pressure works on the cell's mean volume rate (B-bar's
+     * internal force), not on its own. */
     void
     share_mean_stress()
     {
       for (const Held &held : cell_particles)
-        groups[held.group].stress += held.volume * mean_stress(held);
+        groups[held.group].force += held.volume * held.J * mean_stress(held);
       for (const Held &held : cell_particles)
         {
           const Group &group = groups[held.group];
-          if (!(group.volume > 0))
+          if (!(group.volume > 0 && held.J > 0)) // J <= 0 is reported
             continue;
-          const double shift = group.stress / group.volume - mean_stress(held);
+          const double shared = group.force / (group.volume * held.J);
+          const double shift  = shared - mean_stress(held);
           // The symmetric tensor's first dim entries are its diagonal.
           for (unsigned int d = 0; d < dim; ++d)
             held.props[FixedCore<dim>::stress + d] += shift;
@@ -228,7 +239,7 @@ namespace dealmpm
 
     /** The particle's Fbar and Lbar, then its stress update. */
     void
-    finish(const Held &held)
+    finish(Held &held)
     {
       const double         dJ_bar = groups[held.group].dJ_bar();
       const double         ratio  = dJ_bar / held.dJ;
@@ -242,6 +253,7 @@ namespace dealmpm
       const ArrayView<double> props(
         held.props, particles.handler.n_properties_per_particle());
       write_tensor<dim>(&props[FixedCore<dim>::deformation_gradient], F);
+      held.J = determinant(F);
       inner(Reported{held.id, held.location}, props, L, F, held.h);
     }
 
