@@ -42,7 +42,7 @@ namespace dealmpm
    * CFL number from 0.1 to 0.5 with these weights).
    *
    * Used as a deforming sweep's gradient adjustment (adjusting(), which
-   * records each particle's dJ_p and V_p after the scene's own adjustment)
+   * records each particle's dJ_p and V0_p after the scene's own adjustment)
    * and its after-deformation callback (which holds each particle until its
    * cell is done): the sweeps visit the particles cell by cell, so that
    * when a new cell begins the previous one's particles get their dFbar and
