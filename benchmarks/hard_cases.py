@@ -268,12 +268,12 @@ def all_combinations():
     return updated + total
 
 
-def f_bar_collapse(extra, label):
-    """The granular collapse under F-bar with @p extra overrides: the
-    invariants and the surface, the toe reported only."""
+def f_bar_collapse(extra, label, h=0.005):
+    """The granular collapse under F-bar with @p extra overrides (cells of
+    size @p h): the invariants and the surface, the toe reported only."""
     return dict(scene=os.path.join(SCENES, "granular_collapse.prm"),
                 overrides=["MPM/Anti-locking=F-bar"] + extra, variants=[(label, [])],
-                h=0.005, growth=0.02, answer=lambda run: granular_answer(run, None))
+                h=h, growth=0.02, answer=lambda run: granular_answer(run, None))
 
 
 CASES = {
@@ -305,6 +305,12 @@ CASES = {
     "granular_collapse_f_bar": f_bar_collapse([], "cpGIMP, USL, F-bar"),
     "granular_collapse_f_bar_cfl_0.2": f_bar_collapse(
         ["Time/CFL number=0.2"], "cpGIMP, USL, F-bar, CFL 0.2"),
+    # On cells half as large: with the scaled increment (dJbar / dJ)^(1/dim)
+    # dF, a grain whose own increment nearly collapsed had its other
+    # stretch blown up (F entries of 80 and more) and it stopped with
+    # J <= 0 at t = 0.24 s; with the shared volume rate it runs to rest.
+    "granular_collapse_f_bar_fine": f_bar_collapse(
+        ["Grid/Cells=240, 50"], "cpGIMP, USL, F-bar, 240 x 50 cells", h=0.0025),
     "dam_break": dict(scene=os.path.join(SCENES, "dam_break.prm"), h=0.05715 / 16,
                       growth=0.02, answer=dam_answer),
     "resting_column": dict(scene=os.path.join(SCENES, "resting_column.prm"), h=0.05,

@@ -122,17 +122,18 @@ namespace dealmpm
         "its own volume change, which a material that flows at constant "
         "volume (plasticity, nu near 0.5) cannot follow, so that failure "
         "loads come out high and unstable slopes stand. 'F-bar' gives the "
-        "particles of each body in a cell the cell's mean volume change "
-        "(weighted by their reference volumes) and keeps their own change "
-        "of shape (Coombs et al. 2018, CMAME 333); 'none' leaves each "
-        "particle its own. Updated Lagrangian and the explicit particle "
-        "update only. 'automatic': F-bar where a body's material is plastic "
-        "or has a Poisson's ratio of 0.45 or more (and the formulation and "
-        "particle update allow it), none elsewhere; the run's first lines "
-        "say what it chose. Not the default: F-bar lowers failure loads to "
-        "the closed forms, but in a collapsing granular column it runs "
-        "further than the experiment and on fine cells it can stop with J "
-        "<= 0 (doc/guide/time-stepping-and-schemes.md).");
+        "particles of each body in a cell the cell's mean volume rate (the "
+        "trace of their velocity gradients, weighted by their reference "
+        "volumes) and keeps their own rate of shape change (B-bar on the "
+        "rate; Coombs et al. 2018, CMAME 333); 'none' leaves each particle "
+        "its own. Updated Lagrangian and the explicit particle update only. "
+        "'automatic': F-bar where a body's material is plastic or has a "
+        "Poisson's ratio of 0.45 or more (and the formulation and particle "
+        "update allow it), none elsewhere; the run's first lines say what "
+        "it chose. Not the default: F-bar lowers failure loads to the "
+        "closed forms, but a collapsing granular column on fine cells can "
+        "stop under it with J <= 0 where 'none' runs "
+        "(doc/guide/time-stepping-and-schemes.md).");
       prm.declare_entry("Taylor terms",
                         "4",
                         Patterns::Integer(1, 20),

@@ -6,50 +6,56 @@
 #include <dealmpm/grid/background_grid.h>
 #include <dealmpm/particles/particle_set.h>
 
-#include <cmath>
 #include <vector>
 
 namespace dealmpm
 {
   /**
-   * Anti-locking by a cell-averaged volume change (F-bar; Coombs et al.
-   * 2018, "Overcoming volumetric locking in material point methods", CMAME
-   * 333, after de Souza Neto et al. 1996 for finite elements).
+   * Anti-locking by a cell-averaged volume rate (F-bar in rate form, which
+   * is B-bar on the velocity gradient; after Coombs et al. 2018,
+   * "Overcoming volumetric locking in material point methods", CMAME 333,
+   * and de Souza Neto et al. 1996 for finite elements).
    *
    * A linear cell with 2^dim particles gives each of them its own volume
    * change, and a material that flows without changing volume (plasticity,
    * nearly incompressible elasticity) cannot meet that many constraints:
    * it locks, and failure loads come out too high. F-bar lets the cell
-   * carry one volume change: with dF_p = increment(dt L_p) the step's
-   * deformation increment of particle p, dJ_p = det dF_p and V0_p its
-   * reference volume, each body's particles in a cell share
-   *   dJbar = sum V0_p dJ_p / sum V0_p
-   * and take dFbar_p = (dJbar / dJ_p)^(1/dim) dF_p: their shape change is
-   * their own, their volume change the cell's (in 2D the in-plane block,
-   * so that F_zz stays 1: plane strain). The rate models see
-   * Lbar_p = L_p + (s_p - 1) / dt I with s_p the factor, which differs
-   * from the increment's at O(dt).
+   * carry one volume rate: with L_p the velocity gradient of particle p
+   * and V0_p its reference volume, each body's particles in a cell share
+   *   dbar = sum V0_p tr L_p / sum V0_p
+   * and take Lbar_p = L_p + (dbar - tr L_p) / dim I and
+   * F_p <- increment(dt Lbar_p) F_p: their rate of shape change is their
+   * own, their volume rate the cell's (in 2D the in-plane block, so that
+   * F_zz stays 1: plane strain).
+   *
+   * Why the rate and not the increment's determinant (de Souza Neto's
+   * dFbar = (dJbar / dJ_p)^(1/dim) dF_p, used here before): at a
+   * collapsing column's front a grain's own increment can nearly collapse
+   * (dJ_p near 0, from a cell with tiny nodal masses); scaled to the
+   * cell's volume change, its other stretch was blown up by
+   * (1 / dJ_p)^(1/dim) (F entries of 80 and more), and the collapse on
+   * cells half the shipped size stopped with J <= 0. The rate form shifts
+   * L by at most the spread of its cell's volume rates, never amplifies a
+   * particle's own increment, and has no special case for dJ_p <= 0. Its
+   * price: the cell's volume changes agree to O(dt^2), not exactly.
    *
    * The weights are the reference volumes (the mass, within a body), not
    * the current volumes V_p = V0_p J_p as in Coombs et al.: the two agree
    * while the particles' J are alike, but a cohesionless grain that has
    * opened up (at its yield cone's apex J grows freely, to 20 and more at
    * a collapsing column's front) has a volume that is mostly void, and
-   * weighted by it, it dictated the cell's volume change and took a
-   * dense neighbour's pressure onto its inflated volume: its nodes were
-   * pushed J times as hard as a dense particle's, and the granular
-   * collapse under USL and cpGIMP stopped with J <= 0 (it runs at every
-   * CFL number from 0.1 to 0.5 with these weights).
+   * weighted by it, it dictated the cell's volume rate and took a dense
+   * neighbour's pressure onto its inflated volume: its nodes were pushed J
+   * times as hard as a dense particle's.
    *
    * Used as a deforming sweep's gradient adjustment (adjusting(), which
-   * records each particle's dJ_p and V0_p after the scene's own adjustment)
-   * and its after-deformation callback (which holds each particle until its
-   * cell is done): the sweeps visit the particles cell by cell, so that
-   * when a new cell begins the previous one's particles get their dFbar and
-   * then, through @p Inner (the stress update), their stress. flush() ends
-   * the last cell. Particles whose own or whose cell's dJ is not positive
-   * keep their F (the stress update then reports J <= 0). Nothing is kept
-   * between steps, and a cell's particles are on its owner's rank: no
+   * records each particle's tr L_p, F_p and V0_p after the scene's own
+   * adjustment) and its after-deformation callback (which holds each
+   * particle until its cell is done): the sweeps visit the particles cell
+   * by cell, so that when a new cell begins the previous one's particles
+   * get their Lbar and F and then, through @p Inner (the stress update),
+   * their stress. flush() ends the last cell. Nothing is kept between
+   * steps, and a cell's particles are on its owner's rank: no
    * communication, the same numbers on any number of ranks.
    */
   template <int dim, typename Inner, typename Increment>
@@ -92,21 +98,20 @@ namespace dealmpm
     }
 
     /** The after-deformation callback of the sweep: holds the particle
-     * with its new F until its cell is done. */
+     * until its cell is done (finish() makes its F again, from Lbar). */
     template <typename Particle>
     void
     operator()(const Particle          &p,
                const ArrayView<double> &props,
                const Tensor<2, dim>    &L,
-               const Tensor<2, dim>    &F,
-               const double             h)
+               const Tensor<2, dim> & /*F*/,
+               const double h)
     {
       Held &held    = cell_particles.back();
       held.id       = p.get_id();
       held.location = p.get_location();
       held.props    = props.data();
       held.L        = L;
-      held.F        = F;
       held.h        = h;
     }
 
@@ -143,19 +148,18 @@ namespace dealmpm
     };
 
     /** One body's particles in the cell in hand: their reference volume,
-     * their reference volume times their own volume change, and their
-     * mean normal stresses' force sum V_p p_p (current volumes). */
+     * the sum of V0_p tr L_p, and their mean normal stresses' force
+     * sum V_p p_p (current volumes). */
     struct Group
     {
       unsigned int body;
-      double       volume = 0, changed = 0, force = 0;
+      double       volume = 0, rates = 0, force = 0;
 
-      /** The weighted mean volume change dJbar (0 if the group has no
-       * volume: its particles then keep their F). */
+      /** The weighted mean volume rate dbar. */
       double
-      dJ_bar() const
+      mean_rate() const
       {
-        return volume > 0 ? changed / volume : 0.;
+        return rates / volume;
       }
     };
 
@@ -163,12 +167,12 @@ namespace dealmpm
     struct Held
     {
       unsigned int          group;
-      double                volume, dJ; ///< V0_p and dJ_p
-      double                J  = 1;     ///< det F_p after the step
+      double                volume, rate; ///< V0_p and tr L_p
+      double                J  = 1;       ///< det F_p after the step
       types::particle_index id = 0;
       Point<dim>            location;
       double               *props = nullptr;
-      Tensor<2, dim>        L, F;
+      Tensor<2, dim>        L, F_old; ///< F_old: F_p at the step's start
       double                h = 0;
     };
 
@@ -183,11 +187,13 @@ namespace dealmpm
           cell = &c;
         }
       Held held;
-      held.dJ     = determinant(increment(dt * L));
+      held.rate = trace(L);
+      held.F_old =
+        read_tensor<dim>(&props[FixedCore<dim>::deformation_gradient]);
       held.volume = props[FixedCore<dim>::initial_volume];
       held.group  = group_of(particles.body_of(props));
       groups[held.group].volume += held.volume;
-      groups[held.group].changed += held.volume * held.dJ;
+      groups[held.group].rates += held.volume * held.rate;
       cell_particles.push_back(held);
     }
 
@@ -205,10 +211,10 @@ namespace dealmpm
 
     /** Each body's particles in the cell share the force of their mean
      * (in-plane in 2D) normal stresses, P = sum V_p p_p, in the weights of
-     * dJbar: V_p pbar_p = P V0_p / sum V0. So the grid's internal force
-     * does the work the materials count: with one volume change per cell,
+     * dbar: V_p pbar_p = P V0_p / sum V0. So the grid's internal force
+     * does the work the materials count: with one volume rate per cell,
      * a particle's pressure works on the cell's mean volume rate (B-bar's
-     * internal force), not on its own. */
+     * internal force, sum V_p pbar_p tr L_p = P dbar), not on its own. */
     void
     share_mean_stress()
     {
@@ -237,19 +243,16 @@ namespace dealmpm
       return sum / dim;
     }
 
-    /** The particle's Fbar and Lbar, then its stress update. */
+    /** The particle's Lbar and F, then its stress update. */
     void
     finish(Held &held)
     {
-      const double         dJ_bar = groups[held.group].dJ_bar();
-      const double         ratio  = dJ_bar / held.dJ;
-      const double         s      = (held.dJ > 0 && dJ_bar > 0) ?
-                                      (dim == 2 ? std::sqrt(ratio) : std::cbrt(ratio)) :
-                                      1.;
-      const Tensor<2, dim> F      = s * held.F;
-      Tensor<2, dim>       L      = held.L;
+      // The group holds this particle: its volume is positive.
+      const double   shift = (groups[held.group].mean_rate() - held.rate) / dim;
+      Tensor<2, dim> L     = held.L;
       for (unsigned int d = 0; d < dim; ++d)
-        L[d][d] += (s - 1.) / dt;
+        L[d][d] += shift;
+      const Tensor<2, dim>    F = increment(dt * L) * held.F_old;
       const ArrayView<double> props(
         held.props, particles.handler.n_properties_per_particle());
       write_tensor<dim>(&props[FixedCore<dim>::deformation_gradient], F);
