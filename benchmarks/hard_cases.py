@@ -299,7 +299,7 @@ CASES = {
     # F-bar in the collapsing flow (anti-locking weighted by the particles'
     # reference volumes): it must run to rest at CFL 0.5 and 0.2 (with
     # current volumes as weights it stopped with J <= 0 at t = 0.54 s and
-    # 0.36 s). Its toe runs further than the experiment's (0.51 m against
+    # 0.36 s). Its toe runs further than the experiment's (0.49 m against
     # 0.44; 'none' on cells half as large runs to 0.57 m as well), so only
     # the surface is held to the reference (doc/guide/limits.md).
     "granular_collapse_f_bar": f_bar_collapse([], "cpGIMP, USL, F-bar"),
