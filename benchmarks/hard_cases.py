@@ -306,9 +306,9 @@ CASES = {
     "granular_collapse_f_bar_cfl_0.2": f_bar_collapse(
         ["Time/CFL number=0.2"], "cpGIMP, USL, F-bar, CFL 0.2"),
     # On cells half as large: with the scaled increment (dJbar / dJ)^(1/dim)
-    # dF, a grain whose own increment nearly collapsed had its other
-    # stretch blown up (F entries of 80 and more) and it stopped with
-    # J <= 0 at t = 0.24 s; with the shared volume rate it runs to rest.
+    # dF, which stretches a grain whose own increment nearly collapsed, it
+    # stopped with J <= 0 at t = 0.24 s; with the shared volume rate it
+    # runs to rest.
     "granular_collapse_f_bar_fine": f_bar_collapse(
         ["Grid/Cells=240, 50"], "cpGIMP, USL, F-bar, 240 x 50 cells", h=0.0025),
     "dam_break": dict(scene=os.path.join(SCENES, "dam_break.prm"), h=0.05715 / 16,

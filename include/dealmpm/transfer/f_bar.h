@@ -31,10 +31,11 @@ namespace dealmpm
    * Why the rate and not the increment's determinant (de Souza Neto's
    * dFbar = (dJbar / dJ_p)^(1/dim) dF_p, used here before): at a
    * collapsing column's front a grain's own increment can nearly collapse
-   * (dJ_p near 0, from a cell with tiny nodal masses); scaled to the
-   * cell's volume change, its other stretch was blown up by
-   * (1 / dJ_p)^(1/dim) (F entries of 80 and more), and the collapse on
-   * cells half the shipped size stopped with J <= 0. The rate form shifts
+   * (dJ_p near 0, from a cell with tiny nodal masses), and scaled to the
+   * cell's volume change its other stretch grows by (dJbar / dJ_p)^(1/dim):
+   * our reading of why the collapse on cells half the shipped size
+   * stopped with J <= 0 among grains with F entries up to 83 (not traced
+   * step by step; the rate form runs there). The rate form shifts
    * L by at most the spread of its cell's volume rates, never amplifies a
    * particle's own increment, and has no special case for dJ_p <= 0. Its
    * price: the cell's volume changes agree to O(dt^2), not exactly.
