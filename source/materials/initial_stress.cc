@@ -159,12 +159,15 @@ namespace dealmpm
         return mean;
       };
       double low = -0.01, high = 0;
-      while (target < 0 && !(mean_at(low) <= target) && low > -2)
+      // Whether the bracket [low, high] holds the target.
+      bool holds = target < 0 && mean_at(low) <= target;
+      while (target < 0 && !holds && low > -2)
         {
           high = low;
           low *= 2;
+          holds = mean_at(low) <= target;
         }
-      if (target < 0 && mean_at(low) <= target)
+      if (holds)
         {
           for (unsigned int i = 0; i < 60; ++i)
             {
