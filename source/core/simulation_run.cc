@@ -365,9 +365,8 @@ namespace dealmpm
                   " files the interrupted run wrote after its checkpoint)");
     pcout << std::endl;
     if (!run_settings.method.anti_locking_reason.empty())
-      pcout << "dealmpm: anti-locking F-bar ('MPM/Anti-locking = automatic': "
-            << run_settings.method.anti_locking_reason << " locks in linear "
-            << "cells without it)" << std::endl;
+      pcout << "dealmpm: " << run_settings.method.anti_locking_reason
+            << std::endl;
     // The set-up ends here: the output at t = 0 is the timer's "output".
     const std::string setup_time = setup_clock.report(comm);
     pcout << "dealmpm: " << setup_time << std::endl;

@@ -254,13 +254,28 @@ namespace dealmpm
     if (method.formulation != Formulation::updated_lagrangian ||
         method.particle_update.newmark)
       return;
+    const auto named = [&](const unsigned int material) {
+      return "Material " + std::to_string(material + 1) + " (" +
+             material_models[material] + ")";
+    };
+    for (const Body<dim> &body : bodies)
+      if (materials[body.material]->particles_take_f_bar())
+        {
+          method.anti_locking        = AntiLocking::f_bar;
+          method.anti_locking_reason = "anti-locking F-bar ('MPM/Anti-locking "
+                                       "= automatic': " +
+                                       named(body.material) +
+                                       " locks in linear cells without it)";
+          return;
+        }
     for (const Body<dim> &body : bodies)
       if (materials[body.material]->locks_in_linear_cells())
         {
-          method.anti_locking = AntiLocking::f_bar;
           method.anti_locking_reason =
-            "Material " + std::to_string(body.material + 1) + " (" +
-            material_models[body.material] + ")";
+            "anti-locking none ('MPM/Anti-locking = automatic': " +
+            named(body.material) +
+            " locks in linear cells, but its measured cases gain nothing "
+            "from F-bar; 'MPM/Anti-locking = F-bar' applies it)";
           return;
         }
   }

@@ -116,7 +116,7 @@ namespace dealmpm
         "'Subcycles').");
       prm.declare_entry(
         "Anti-locking",
-        "none",
+        "automatic",
         Patterns::Selection("automatic|none|F-bar"),
         "Volumetric locking: a linear cell with 2^dim particles gives each "
         "its own volume change, which a material that flows at constant "
@@ -127,12 +127,13 @@ namespace dealmpm
         "volumes) and keeps their own rate of shape change (B-bar on the "
         "rate; Coombs et al. 2018, CMAME 333); 'none' leaves each particle "
         "its own. Updated Lagrangian and the explicit particle update only. "
-        "'automatic': F-bar where a body's material is plastic or has a "
-        "Poisson's ratio of 0.45 or more (and the formulation and particle "
-        "update allow it), none elsewhere; the run's first lines say what "
-        "it chose. Not the default: F-bar lowers failure loads to the "
-        "closed forms, but a collapsing granular column on fine cells can "
-        "stop under it with J <= 0 where 'none' runs "
+        "'automatic' (the default): F-bar where a body's material is plastic "
+        "or has a Poisson's ratio of 0.45 or more, except Johnson-Cook (its "
+        "Taylor bars gain nothing from it), when the formulation and "
+        "particle update allow it; none elsewhere. The run's first lines "
+        "say what it chose. The study behind it: failure loads and slopes "
+        "come out right with F-bar and too safe without; the granular "
+        "collapse is less resolution-dependent with it "
         "(doc/guide/time-stepping-and-schemes.md).");
       prm.declare_entry("Taylor terms",
                         "4",

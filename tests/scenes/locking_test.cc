@@ -13,6 +13,9 @@
 #include <cmath>
 #include <map>
 #include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "test_scene.h"
 
@@ -122,5 +125,91 @@ TEST(Locking, AutomaticChoosesFBarWhereTheMaterialLocks)
       std::cout << "nu = " << nu << ": automatic " << automatic << ", "
                 << chosen << " " << expected << std::endl;
       EXPECT_NEAR(automatic, expected, 1e-12 * expected);
+    }
+}
+
+namespace
+{
+  /** The particles' positions (by id) after 20 steps of a block of
+   * @p model (its section's defaults, but E = 1e7 Pa and a Poisson's
+   * ratio @p nu if given) slumping on a no-slip floor under 100 g, with
+   * @p anti_locking ("" leaves the entry out: the default). */
+  std::map<types::particle_index, Point<2>>
+  slumped_block(const std::string &model,
+                const double       nu,
+                const std::string &anti_locking)
+  {
+    std::ostringstream s;
+    s << "set Effects = gravity\n"
+      << "subsection Grid\n set Lower corner = 0, 0\n"
+      << " set Upper corner = 2, 2\n set Cells = 16, 16\n"
+      << " set Boundary conditions = 2: no-slip\nend\n"
+      << "subsection Material 1\n set Model = " << model
+      << "\n set Density = 2000\n";
+    s << " subsection " << model << "\n  set Young's modulus = 1e7\n";
+    if (nu > 0)
+      s << "  set Poisson's ratio = " << nu << "\n";
+    s << " end\nend\n"
+      << "subsection Body 1\n set Shape = box\n set Lower corner = 0.5, 0\n"
+      << " set Upper corner = 1.5, 1\nend\n"
+      << "subsection Gravity\n set Acceleration = 0, -1e3\nend\n";
+    if (!anti_locking.empty())
+      s << "subsection MPM\n set Anti-locking = " << anti_locking << "\nend\n";
+    auto simulation = test::make_simulation<2>(s.str());
+    for (unsigned int step = 0; step < 20; ++step)
+      simulation->advance(simulation->time_step());
+    std::map<types::particle_index, Point<2>> x;
+    for (const auto &p : simulation->particle_set().handler)
+      x[p.get_id()] = p.get_location();
+    return x;
+  }
+
+  /** The largest distance between the same particle in @p a and @p b. */
+  double
+  largest_difference(const std::map<types::particle_index, Point<2>> &a,
+                     const std::map<types::particle_index, Point<2>> &b)
+  {
+    double largest = 0;
+    for (const auto &[id, x] : a)
+      largest = std::max(largest, x.distance(b.at(id)));
+    return largest;
+  }
+} // namespace
+
+// The particles' default is 'automatic': a scene that says nothing about
+// anti-locking runs as F-bar with a soil (Drucker-Prager), J2 or a
+// Poisson's ratio of 0.499, and as none with Johnson-Cook (its Taylor
+// bars gain nothing from F-bar) or an ordinary elastic solid. Each
+// default run equals its choice's to round-off (1e-12 of the block's
+// size) and is at least 1e-9 of it away from the other choice, so the
+// check can tell them apart. On the old code (default none) the three
+// locking materials failed.
+TEST(Locking, TheDefaultGivesFBarWhereTheMaterialTakesIt)
+{
+  struct Case
+  {
+    std::string model;
+    double      nu; ///< 0: the section's default
+    std::string chosen;
+  };
+  for (const Case &c : std::vector<Case>{{"Drucker-Prager", 0, "F-bar"},
+                                         {"J2 plasticity", 0, "F-bar"},
+                                         {"linear elastic", 0.499, "F-bar"},
+                                         {"Johnson-Cook", 0, "none"},
+                                         {"linear elastic", 0.3, "none"}})
+    {
+      const std::string &model      = c.model;
+      const std::string &chosen     = c.chosen;
+      const auto         by_default = slumped_block(model, c.nu, "");
+      const auto         chosen_run = slumped_block(model, c.nu, chosen);
+      const auto         other_run =
+        slumped_block(model, c.nu, chosen == "F-bar" ? "none" : "F-bar");
+      const double same  = largest_difference(by_default, chosen_run);
+      const double other = largest_difference(by_default, other_run);
+      std::cout << model << " (nu " << c.nu << "): default against " << chosen
+                << " " << same << " m, against the other " << other << " m"
+                << std::endl;
+      EXPECT_LE(same, 1e-12) << model;
+      EXPECT_GE(other, 1e-9) << model;
     }
 }

@@ -92,6 +92,12 @@ namespace dealmpm
       return inner->locks_in_linear_cells();
     }
 
+    bool
+    particles_take_f_bar() const override
+    {
+      return inner->particles_take_f_bar();
+    }
+
     /** The wrapped model. */
     Material<dim> &
     inner_model()

@@ -157,13 +157,23 @@ namespace dealmpm
 
     /** Whether a linear cell with 2^dim points locks with this model:
      * plastic flow (at or near constant volume), or an elastic Poisson's
-     * ratio of 0.45 or more. 'Anti-locking = automatic'
+     * ratio of 0.45 or more. An FEM region's 'Anti-locking = automatic'
      * chooses F-bar for such a material (the study behind it:
      * doc/guide/time-stepping-and-schemes.md#anti-locking-f-bar). */
     virtual bool
     locks_in_linear_cells() const
     {
       return false;
+    }
+
+    /** Whether 'MPM/Anti-locking = automatic' (the particles' default)
+     * gives this model's particles F-bar: where the model locks, unless
+     * its measured cases show F-bar in MPM without a gain for its price (a
+     * model that says no says why). */
+    virtual bool
+    particles_take_f_bar() const
+    {
+      return locks_in_linear_cells();
     }
 
     /** Reference mass density, set from the scene's material section. */

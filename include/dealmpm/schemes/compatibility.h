@@ -46,10 +46,10 @@ namespace dealmpm
 
   /**
    * 'MPM/Anti-locking = automatic' made a choice, before the checks: F-bar
-   * when a body's material locks in linear cells
-   * (Material::locks_in_linear_cells(): plastic, or nu >= 0.45) and the
-   * formulation (updated Lagrangian) and particle update (explicit) allow
-   * F-bar, none otherwise; the reason in method.anti_locking_reason.
+   * when a body's material takes it (Material::particles_take_f_bar():
+   * plastic, or nu >= 0.45, but not Johnson-Cook) and the formulation
+   * (updated Lagrangian) and particle update (explicit) allow F-bar, none
+   * otherwise; what it chose and why in method.anti_locking_reason.
    */
   template <int dim>
   void

@@ -26,8 +26,9 @@ namespace dealmpm
   {
     none,
     f_bar,
-    /** F-bar where a body's material locks in linear cells, none
-     * elsewhere: made one of the others by choose_anti_locking(). */
+    /** F-bar where a body's material takes it
+     * (Material::particles_take_f_bar()), none elsewhere: made one of the
+     * others by choose_anti_locking(). The .prm's default. */
     automatic
   };
 
@@ -46,10 +47,13 @@ namespace dealmpm
     bool split_mixed_cells = true;
     /** How F advances over a step. */
     DeformationUpdate deformation_update;
-    /** A cell's particles share its volume change (FBar) or not. */
+    /** A cell's particles share its volume change (FBar) or not. A scene
+     * built in C++ gets none unless it asks ('automatic' is the .prm's
+     * default). */
     AntiLocking anti_locking = AntiLocking::none;
-    /** What 'automatic' chose F-bar for ("Material 1 (J2 plasticity)"),
-     * empty otherwise. */
+    /** What 'automatic' chose and why, for the run's first lines ("anti-
+     * locking F-bar (... Material 1 (J2 plasticity) ...)"), empty where it
+     * had nothing to say. */
     std::string anti_locking_reason;
     /** How particles advance from the grid's acceleration. */
     ParticleUpdate particle_update;
