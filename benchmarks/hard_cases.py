@@ -309,16 +309,22 @@ CASES = {
                                    overrides=["MPM/Anti-locking=none"],
                                    variants=[("cpGIMP, USL, none", [])], h=0.005,
                                    growth=0.02, answer=granular_answer),
-    # F-bar at CFL 0.2 (with current volumes as weights: J <= 0 at t =
-    # 0.36 s).
-    "granular_collapse_f_bar_cfl_0.2": f_bar_collapse(
-        ["Time/CFL number=0.2"], "cpGIMP, USL, F-bar, CFL 0.2"),
     # On cells half as large: with the scaled increment (dJbar / dJ)^(1/dim)
     # dF, which stretches a grain whose own increment nearly collapsed, it
     # stopped with J <= 0 at t = 0.24 s; with the shared volume rate it
-    # runs to rest.
+    # runs to rest. With cpGIMP's light-node weights alone (below), a floor
+    # grain sheared without end reached a condition number of F of 1e8
+    # and went non-finite at t = 0.59 s: the Hencky models now renormalise
+    # such an F (2026-12-02).
     "granular_collapse_f_bar_fine": f_bar_collapse(
         ["Grid/Cells=240, 50"], "cpGIMP, USL, F-bar, 240 x 50 cells", h=0.0025),
+    # The same at CFL 0.3: a front grain whose cpGIMP domain F had squashed
+    # to a sliver across a row of nodes took the full gradient 1/h on that
+    # sliver of mass and turned inside out at t = 0.25 s, until cpGIMP took
+    # USL's light-node weights as linear functions do (2026-12-02).
+    "granular_collapse_fine_cfl_0.3": f_bar_collapse(
+        ["Grid/Cells=240, 50", "Time/CFL number=0.3"],
+        "cpGIMP, USL, F-bar, 240 x 50 cells, CFL 0.3", h=0.0025),
     "dam_break": dict(scene=os.path.join(SCENES, "dam_break.prm"), h=0.05715 / 16,
                       growth=0.02, answer=dam_answer),
     "resting_column": dict(scene=os.path.join(SCENES, "resting_column.prm"), h=0.05,

@@ -109,6 +109,33 @@ namespace dealmpm
   }
 
   template <int dim>
+  void
+  HenckyPlasticity<dim>::renormalise_deformation(
+    Tensor<2, dim>   &F,
+    ArrayView<double> internal) const
+  {
+    const PrincipalStrain b =
+      trial_strain<dim>(embed_deformation<dim>(F), internal);
+    std::array<double, 3> stretch;
+    for (unsigned int a = 0; a < 3; ++a)
+      stretch[a] = std::exp(b.strain[a]);
+    // b_e^(1/2); in 2D its plane block (b_e's zz is C_p^-1's and stays).
+    const SymmetricTensor<2, 3> root = from_principal(stretch, b.direction);
+    Tensor<2, dim>              root_in_plane;
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = 0; j < dim; ++j)
+        root_in_plane[i][j] = root[i][j];
+    const double scale =
+      std::pow(determinant(F) / determinant(root_in_plane), 1. / dim);
+    F = scale * root_in_plane;
+    for (unsigned int c = 0; c < n_inverse_plastic; ++c)
+      if (stored_row[c] != stored_col[c])
+        internal[c] = 0.;
+      else if (stored_row[c] < dim)
+        internal[c] = 1. / (scale * scale);
+  }
+
+  template <int dim>
   double
   HenckyPlasticity<dim>::wave_speed(const Tensor<2, dim> &) const
   {

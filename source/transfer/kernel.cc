@@ -87,6 +87,17 @@ namespace dealmpm
         return false;
       }
 
+      /** uGIMP's fixed domain keeps a node's gradient in proportion to its
+       * weight; cpGIMP's shrinks with F's diagonal (to 1e-3 of a spacing),
+       * and a squashed domain that has just crossed a row of nodes has
+       * linear's full gradient 1/h on a sliver of weight: the fine granular
+       * collapse's front grains turned inside out so at CFL 0.3. */
+      bool
+      gradient_shrinks_with_weight() const override
+      {
+        return !follow_deformation;
+      }
+
     private:
       bool               follow_deformation;
       LatticeBlocks<dim> lattice;

@@ -10,8 +10,9 @@ namespace dealmpm
    * (c dt / h of the fastest particle) in @p dim dimensions, in particles of
    * @p mean_particle_mass: dim courant^2 mean_particle_mass.
    *
-   * Used with linear shape functions only
-   * (ShapeFunction::gradient_shrinks_with_weight()).
+   * Used with the shape functions whose gradient does not shrink with the
+   * weight (ShapeFunction::gradient_shrinks_with_weight()): linear, and
+   * cpGIMP, whose domains F can squash to a sliver.
    *
    * Why: USL deforms a particle with v* = v + dt f / m at every node of its
    * stencil, and with linear shape functions a node that a particle has just

@@ -87,6 +87,22 @@ namespace dealmpm
     }
 
     bool
+    renormalises_deformation() const override
+    {
+      return inner->renormalises_deformation();
+    }
+
+    /** The inner model's, on its variables (the damage and the effective
+     * stress are spatial: F' leaves them). */
+    void
+    renormalise_deformation(Tensor<2, dim>   &F,
+                            ArrayView<double> internal) const override
+    {
+      inner->renormalise_deformation(
+        F, make_array_view(internal.begin(), internal.begin() + n_inner));
+    }
+
+    bool
     locks_in_linear_cells() const override
     {
       return inner->locks_in_linear_cells();

@@ -68,6 +68,21 @@ namespace dealmpm
       return true;
     }
 
+    /** The stress depends on F only through b_e = F C_p^-1 F^T. */
+    bool
+    renormalises_deformation() const override
+    {
+      return true;
+    }
+
+    /** F' = (J / J_e)^(1/dim) b_e^(1/2) in the plane, C_p^-1' = (J_e /
+     * J)^(2/dim) I there (2D keeps its zz): the same b_e, J and plastic
+     * volume change; F's rotation and accumulated plastic distortion, which
+     * an isotropic model never reads, are dropped. */
+    void
+    renormalise_deformation(Tensor<2, dim>   &F,
+                            ArrayView<double> internal) const override;
+
     /** Plastic flow (isochoric for J2 and a dilation angle of 0, little
      * dilation otherwise) cannot follow a volume change of each point's
      * own. */

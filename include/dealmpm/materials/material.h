@@ -155,6 +155,26 @@ namespace dealmpm
       return false;
     }
 
+    /** Whether an ill-conditioned F may be replaced after the stress
+     * update by another of the same J that gives the same stress and
+     * state (renormalise_deformation()): models whose response depends on
+     * F only through an elastic strain they carry. A grain sheared without
+     * end (the floor of a granular flow) otherwise grows F's condition
+     * number past what doubles resolve. Updated Lagrangian only. */
+    virtual bool
+    renormalises_deformation() const
+    {
+      return false;
+    }
+
+    /** Replace @p F by an F' of the same determinant with the same
+     * response, and the state @p internal (after its update) by the one
+     * that matches F'. Called only if renormalises_deformation(). */
+    virtual void
+    renormalise_deformation(Tensor<2, dim> & /*F*/,
+                            ArrayView<double> /*internal*/) const
+    {}
+
     /** Whether a linear cell with 2^dim points locks with this model:
      * plastic flow (at or near constant volume), or an elastic Poisson's
      * ratio of 0.45 or more. An FEM region's 'Anti-locking = automatic'

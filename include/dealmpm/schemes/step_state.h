@@ -63,7 +63,7 @@ namespace dealmpm
       , time(time)
       , dt(dt)
       , timer(timer)
-      , stress_update(materials, particles, dt)
+      , stress_update(materials, particles, dt, method.total_lagrangian())
     {}
 
     const BackgroundGrid<dim>     &grid;

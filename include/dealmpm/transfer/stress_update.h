@@ -143,9 +143,12 @@ namespace dealmpm
   class StressUpdate
   {
   public:
+    /** @p keeps_reference (total Lagrangian): F is the map from the
+     * reference configuration, never renormalised. */
     StressUpdate(const std::vector<std::unique_ptr<Material<dim>>> &materials,
                  const ParticleSet<dim>                            &particles,
-                 const double                                       dt)
+                 const double                                       dt,
+                 const bool keeps_reference = false)
       : materials(materials)
       , particles(particles)
       , dt(dt)
@@ -158,11 +161,14 @@ namespace dealmpm
       laid_out = particles.internal_offset.size() == materials.size();
       for (unsigned int m = 0; m < materials.size(); ++m)
         {
-          slots.push_back({materials[m].get(),
-                           laid_out ? particles.internal_offset[m] : 0,
-                           laid_out ? particles.n_internal[m] : 0,
-                           materials[m]->resets_deformation()});
-          any_resets = any_resets || slots.back().resets;
+          slots.push_back(
+            {materials[m].get(),
+             laid_out ? particles.internal_offset[m] : 0,
+             laid_out ? particles.n_internal[m] : 0,
+             materials[m]->resets_deformation(),
+             !keeps_reference && materials[m]->renormalises_deformation()});
+          any_resets      = any_resets || slots.back().resets;
+          any_renormalise = any_renormalise || slots.back().renormalises;
         }
       const auto &of_body = particles.material_of_body;
       if (!of_body.empty() &&
@@ -251,6 +257,23 @@ namespace dealmpm
         check.describe_state(p.get_id(), m, material, F, internal);
       if (any_resets && slot.resets)
         reset_deformation(props, F);
+      else if (any_renormalise && slot.renormalises && ill_conditioned(F))
+        {
+          Tensor<2, dim> F_new = F;
+          material.renormalise_deformation(F_new, internal);
+          write_tensor<dim>(&props[particles.fields.deformation_gradient],
+                            F_new);
+        }
+    }
+
+    /** Whether F's condition number |F| |F^-1| (Frobenius norms; |F^-1|
+     * = |cof F| / |J|) is above 1e4, where b_e = F C_p^-1 F^T has lost
+     * about eight of its digits to cancellation: past 1e8 it has lost
+     * them all, and the fine granular collapse's floor grains got there. */
+    static bool
+    ill_conditioned(const Tensor<2, dim> &F)
+    {
+      return F.norm() * cofactor(F).norm() > 1e4 * std::abs(determinant(F));
     }
 
     /** F <- J^(1/dim) I. */
@@ -274,11 +297,14 @@ namespace dealmpm
       unsigned int         internal_offset;
       unsigned int         n_internal;
       bool                 resets; ///< resets_deformation()
+      /** renormalises_deformation(), and the formulation allows it. */
+      bool renormalises;
     };
     std::vector<Slot> slots;
     /** Whether the particles' offsets are for these materials. */
-    bool laid_out   = false;
-    bool any_resets = false;
+    bool laid_out        = false;
+    bool any_resets      = false;
+    bool any_renormalise = false;
     /** The material of every body, when they share one (the usual scene):
      * then no particle looks up its body. */
     unsigned int only_material = numbers::invalid_unsigned_int;
