@@ -11,6 +11,7 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <type_traits>
 #include <typeinfo>
 #include <vector>
 
@@ -257,13 +258,28 @@ namespace dealmpm
         check.describe_state(p.get_id(), m, material, F, internal);
       if (any_resets && slot.resets)
         reset_deformation(props, F);
-      else if (any_renormalise && slot.renormalises && ill_conditioned(F))
+      else if (may_renormalise(material, slot.renormalises) &&
+               ill_conditioned(F))
         {
           Tensor<2, dim> F_new = F;
           material.renormalise_deformation(F_new, internal);
           write_tensor<dim>(&props[particles.fields.deformation_gradient],
                             F_new);
         }
+    }
+
+    /** Whether a particle whose slot says @p renormalises may need
+     * renormalising. On the lean path (Model a final class, as
+     * LinearElastic) the model's own answer folds the test away: the
+     * elastic step pays nothing for it. */
+    template <typename Model>
+    DEAL_II_ALWAYS_INLINE bool
+    may_renormalise(const Model &material, const bool renormalises) const
+    {
+      if constexpr (std::is_same_v<Model, Material<dim>>)
+        return any_renormalise && renormalises;
+      else
+        return material.renormalises_deformation() && renormalises;
     }
 
     /** Whether F's condition number |F| |F^-1| (Frobenius norms; |F^-1|
