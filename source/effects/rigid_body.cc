@@ -83,6 +83,19 @@ namespace dealmpm
       }
   }
 
+  template <int dim>
+  bool
+  RigidShape<dim>::under_a_face(const Point<dim> &x) const
+  {
+    if (kind != Kind::box)
+      return true;
+    // Beside one face only: at most one coordinate is outside the box.
+    unsigned int outside = 0;
+    for (unsigned int d = 0; d < dim; ++d)
+      outside += x[d] < lower[d] || x[d] > upper[d];
+    return outside <= 1;
+  }
+
   namespace
   {
     /** The corners of the box [lower, upper] in VTK's order of a quad or
@@ -249,8 +262,10 @@ namespace dealmpm
         const double m = fields.mass.local_element(i);
         if (!(m > state.mass_threshold))
           continue;
-        const Point<dim> x = state.grid.node_positions[i] - shift;
-        if (settings.shape.distance(x) > 0.)
+        const Point<dim> x   = state.grid.node_positions[i] - shift;
+        const double     gap = settings.shape.distance(x);
+        if (gap > 0. &&
+            !(gap <= reach.local_element(i) && settings.shape.under_a_face(x)))
           continue;
         if (settings.touch_check && !(touched.local_element(i) > 0.))
           continue;
@@ -303,6 +318,7 @@ namespace dealmpm
   void
   RigidBody<dim>::grid_changed(const BackgroundGrid<dim> &grid)
   {
+    reach.reinit(grid.partitioner);
     if (settings.touch_check)
       touched.reinit(grid.partitioner);
   }
@@ -312,9 +328,9 @@ namespace dealmpm
   RigidBody<dim>::add_nodal_forces(const EffectContext<dim> &state,
                                    NodalFields<dim> & /*fields*/)
   {
-    if (!settings.touch_check)
-      return;
-    touched = 0;
+    reach = 0;
+    if (settings.touch_check)
+      touched = 0;
     // Where it will be at the end of the step, in its initial frame.
     const Tensor<1, dim> shift =
       moved + state.dt * velocity_at(state.time + 0.5 * state.dt);
@@ -324,16 +340,24 @@ namespace dealmpm
       state.particles,
       [&](const std::size_t k, const auto &p, const GridCell<dim> &) {
         const auto   props = p.get_properties();
-        const double size =
-          std::pow(current_volume<dim>(&props[0], f), 1. / dim);
-        if (settings.shape.distance(p.get_location() - shift) > 0.5 * size)
+        const double half =
+          0.5 * std::pow(current_volume<dim>(&props[0], f), 1. / dim);
+        if (settings.shape.distance(p.get_location() - shift) > half)
           return;
         for (unsigned int e = state.stencil.begin[k];
              e < state.stencil.begin[k + 1];
              ++e)
-          touched.local_element(state.stencil.node[e]) += 1.;
+          {
+            const unsigned int node = state.stencil.node[e];
+            reach.local_element(node) =
+              std::max(reach.local_element(node), half);
+            if (settings.touch_check)
+              touched.local_element(node) += 1.;
+          }
       });
-    touched.compress(VectorOperation::add);
+    reach.compress(VectorOperation::max);
+    if (settings.touch_check)
+      touched.compress(VectorOperation::add);
   }
 
   template <int dim>
@@ -460,8 +484,7 @@ namespace dealmpm
         "true: it acts only on the nodes of particles whose domain "
         "(half a particle spacing around them) reaches it, not on "
         "every node with mass inside it: a disk rolling on it is held "
-        "at its contact point only, not on a cell-wide patch. Costs a "
-        "sweep over the particles.");
+        "at its contact point only, not on a cell-wide patch.");
     }
 
     template <int dim>

@@ -37,6 +37,12 @@ namespace dealmpm
     Tensor<1, dim>
     normal(const Point<dim> &x) const;
 
+    /** Whether the surface point nearest to @p x lies on a face, not on
+     * a box's edge or corner (always, for a cylinder or a half-space):
+     * only there does the surface run level with what lies beneath. */
+    bool
+    under_a_face(const Point<dim> &x) const;
+
     /** Its outline moved by @p shift, for the output: a box as one cell,
      * a cylinder as 64 triangles (2D) or wedges (3D, as long as
      * @p grid_box is high), a half-space as a slab behind its face, as
@@ -50,8 +56,13 @@ namespace dealmpm
    * wall, a punch, a fixed obstacle of any shape): grid nodes inside it
    * (at the end of the step) that move into it lose that normal velocity
    * relative to it, and Coulomb friction acts on their slip; components
-   * outside the direction mask are left alone. Its position is the
-   * integral of its velocity, V(t) = curve(t) v(t) with v expressions of t.
+   * outside the direction mask are left alone. So do the nodes just
+   * outside under a face, as far as the particles that reach the face
+   * extend (half their size): without them it would let go of the
+   * material for half a particle spacing before each row of nodes, where
+   * the particles it presses weigh nothing on the nodes inside it. Its position
+   * is the integral of its velocity, V(t) = curve(t) v(t) with v expressions of
+   * t.
    *
    * The force the material exerts on it, -sum_i m_i dv_i / dt over the
    * corrected nodes, is the statistics' rigid_force_x, _y (, _z) (that of
@@ -86,8 +97,8 @@ namespace dealmpm
     void
     grid_changed(const BackgroundGrid<dim> &grid) override;
 
-    /** With the touch check: mark the nodes of the particles that reach
-     * it. */
+    /** Find how far the particles that reach it extend at their nodes;
+     * with the touch check, mark those nodes. */
     void
     add_nodal_forces(const EffectContext<dim> &state,
                      NodalFields<dim>         &fields) override;
@@ -157,7 +168,8 @@ namespace dealmpm
     Tensor<1, dim>
     velocity_at(double t);
 
-    /** Hold the nodes inside it; returns the momentum given to them. */
+    /** Hold the nodes inside it and those within reach under a face;
+     * returns the momentum given to them. */
     Tensor<1, dim>
     hold(const EffectContext<dim> &state,
          NodalFields<dim>         &fields,
@@ -171,6 +183,9 @@ namespace dealmpm
     Tensor<1, dim>      force; ///< of the last step, this rank's share
     /** With the touch check: > 0 at the nodes of particles that reach it. */
     NodalVector touched;
+    /** The largest half size of the particles that reach it, at their
+     * stencils' nodes (0 elsewhere). */
+    NodalVector reach;
     double      work = 0;
   };
 
