@@ -80,35 +80,12 @@ namespace dealmpm
     template <int dim>
     struct BoxWeights;
 
-    /** Whether a node of particle @p k's stencil is light (asked only
-     * when from.weight is set): a stored stencil (GIMP, CPDI, B-splines)
-     * reaches past the particle's cell, linear weights are its cell's. */
-    template <int dim, typename Weights, typename Arrays>
-    DEAL_II_ALWAYS_INLINE inline bool
-    reaches_light_node(const BackgroundGrid<dim> &grid,
-                       const Weights             &weights,
-                       const std::size_t          k,
-                       const GridCell<dim>       &cell,
-                       const Arrays              &from)
-    {
-      if constexpr (std::is_same_v<Weights, StoredWeights<dim>>)
-        {
-          const Stencil<dim> &s = weights.stencil;
-          for (unsigned int e = s.begin[k]; e < s.begin[k + 1]; ++e)
-            if (from.weight[s.node[e]] < 1)
-              return true;
-          return false;
-        }
-      else
-        return from.has_light_node(grid, cell);
-    }
-
     /** USL's light nodes (update_nodal_velocity()) lend L only the weight
      * w of their own increment and the particle's interpolated dv for the
      * rest: v_i - (1 - w) (dv_i - dv). A second pass over the stencil,
-     * which is in cache, for the particles whose stencil has such nodes
-     * only (@p cell is the particle's, in grid.cells), so that no other
-     * sweep and few particles pay for it. */
+     * which is in cache, in the cells that have such nodes only
+     * (@p cell is the particle's, in grid.cells), so that no other sweep
+     * and few particles pay for it. */
     template <int dim, typename Weights, typename Particle, typename Arrays>
     DEAL_II_ALWAYS_INLINE inline void
     lend_light_nodes(const BackgroundGrid<dim> &grid,
@@ -120,7 +97,7 @@ namespace dealmpm
                      const Tensor<1, dim>      &dv,
                      Tensor<2, dim>            &L)
     {
-      if (from.weight && reaches_light_node(grid, weights, k, cell, from))
+      if (from.weight && from.has_light_node(grid, cell))
         weights(k,
                 p,
                 cell,
