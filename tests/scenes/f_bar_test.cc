@@ -7,11 +7,11 @@
 // particles of each body in a cell all have the same volume rate, where a
 // quarter of them or more have another without F-bar: in 2D and 3D, with
 // USL, MUSL and USF and with the linear, uGIMP, CPDI and B-spline shape
-// functions. Over the first step of four blocks that meet in the middle
-// of a cell, each moving its own way (the same state with and without
-// F-bar, every J = 1, so that F-bar's weights, the reference volumes, are
-// the volumes): each body's mean volume rate in each cell is the one it
-// has without F-bar, and each particle's shape rate is its own.
+// functions, and on an adapted grid. Over the first step of four blocks that
+// meet in the middle of a cell, each moving its own way (the same state with
+// and without F-bar, every J = 1, so that F-bar's weights, the reference
+// volumes, are the volumes): each body's mean volume rate in each cell is the
+// one it has without F-bar, and each particle's shape rate is its own.
 // Tolerances: 1e-12, the round-off of a few sums of numbers of order one.
 #include <dealmpm/transfer/stencil_order.h>
 
@@ -292,4 +292,27 @@ TEST(FBar, KeepsEachBodysCellVolumeAndEachShapeChange)
       SCOPED_TRACE(method);
       check_against_none<2>(four_blocks(method), 4);
     }
+}
+
+// On an adapted grid: the column's cells refined once (the particles
+// criterion, adapted every 5 steps as it settles), the empty cells above
+// left coarse, so that the refined cells at the surface have hanging
+// nodes. A cell is a cell: its particles share one volume rate.
+TEST(FBar, OneVolumeChangePerCellOnAnAdaptedGrid)
+{
+  const std::string scene = column(2, "") +
+                            "subsection Adaptivity\n set Criteria = particles\n"
+                            " set Maximum level = 1\n"
+                            " set Steps between adaptations = 5\nend\n";
+  // Refined where the column is, coarse above it: between 48 and 192
+  // cells.
+  auto simulation = test::make_simulation<2>(scene);
+  for (unsigned int step = 0; step < 20; ++step)
+    simulation->advance(simulation->time_step());
+  const auto cells =
+    simulation->background_grid().triangulation.n_global_active_cells();
+  std::cout << "F-bar on an adapted grid: " << cells << " cells" << std::endl;
+  EXPECT_GT(cells, 48u);
+  EXPECT_LT(cells, 192u);
+  check_one_volume_change<2>(scene);
 }
