@@ -58,25 +58,48 @@ namespace
     return s.str();
   }
 
-  /** The column's scene: base id 0 at x = 0, free top at x = H. */
+  /** Removes the velocity along a face (keeps the normal's): the sides
+   * of a column shaken across. */
+  class AlongTheFace : public BoundaryCondition<2>
+  {
+  public:
+    std::vector<Tensor<1, 2>>
+    removed_directions(const Tensor<1, 2> &normal) const override
+    {
+      return {Tensor<1, 2>({-normal[1], normal[0]})};
+    }
+  };
+
+  /** The column's scene: base id 0 at x = 0, free top at x = H; shaken
+   * along it between slip sides (the rock's Vs_r = c / 2), or @p across
+   * it between sides that keep the nodes from moving along it (Vs_r =
+   * the column's Vs = c / sqrt 2). */
   std::string
   column(const std::string &base,
          const std::string &record,
          const bool         acceleration,
-         const std::string &scheme)
+         const std::string &scheme,
+         const bool         across = false)
   {
+    boundary_condition_registry<2>().add(
+      "along the face", "test: a roller across.", [] {
+        return std::make_unique<AlongTheFace>();
+      });
     std::ostringstream s;
     s.precision(17);
     s << "set Effects = base shaking\n"
       << "subsection MPM\n set Stress update = " << scheme << "\nend\n"
       << "subsection Base shaking\n set Boundary ids = 0\n set Base = " << base
       << "\n set Motion = " << (acceleration ? "acceleration" : "velocity")
-      << "\n set Amplitude = " << W << ", 0\n set Load curve = " << record
-      << "\n set Density = " << 2 * rho << "\n set P-wave speed = " << c
-      << "\n set S-wave speed = " << c / 2 << "\nend\n"
+      << "\n set Amplitude = " << (across ? 0 : W) << ", " << (across ? W : 0)
+      << "\n set Load curve = " << record << "\n set Density = " << 2 * rho
+      << "\n set P-wave speed = " << c
+      << "\n set S-wave speed = " << (across ? c / std::sqrt(2.) : c / 2)
+      << "\nend\n"
       << "subsection Grid\n set Upper corner = " << H << ", " << H / 40
-      << "\n set Cells = 40, 1\n set Boundary conditions = 2: slip, 3: "
-         "slip\nend\n"
+      << "\n set Cells = 40, 1\n set Boundary conditions = "
+      << (across ? "2: along the face, 3: along the face" : "2: slip, 3: slip")
+      << "\nend\n"
       << "subsection Material 1\n set Density = " << rho
       << "\n subsection linear elastic\n  set Young's modulus = " << rho * c * c
       << "\n  set Poisson's ratio = 0\n end\nend\n"
@@ -85,16 +108,16 @@ namespace
     return s.str();
   }
 
-  /** The mean x velocity of the particles in the top cell. */
+  /** The mean velocity along @p axis of the particles in the top cell. */
   double
-  top_velocity(Simulation<2> &simulation)
+  top_velocity(Simulation<2> &simulation, const unsigned int axis = 0)
   {
     const CoreFields &f      = simulation.particle_set().fields;
     double            sum[2] = {0, 0};
     for (const auto &p : simulation.particle_set().handler)
       if (p.get_location()[0] > H * (1 - 1. / 40))
         {
-          sum[0] += p.get_properties()[f.velocity];
+          sum[0] += p.get_properties()[f.velocity + axis];
           sum[1] += 1;
         }
     return Utilities::MPI::sum(sum[0], MPI_COMM_WORLD) /
@@ -221,55 +244,13 @@ TEST(BaseShaking, RigidBaseAmplifiesAsTheTransferFunction)
 // dashpots' tangential impedance.
 namespace
 {
-  /** Removes the velocity along a face (keeps the normal's). */
-  class AlongTheFace : public BoundaryCondition<2>
-  {
-  public:
-    std::vector<Tensor<1, 2>>
-    removed_directions(const Tensor<1, 2> &normal) const override
-    {
-      return {Tensor<1, 2>({-normal[1], normal[0]})};
-    }
-  };
-
   Shaken
   shear_wave(const double f, const std::string &scheme)
   {
-    boundary_condition_registry<2>().add(
-      "along the face", "test: a roller across.", [] {
-        return std::make_unique<AlongTheFace>();
-      });
-    const double       vs = c / std::sqrt(2.);
-    std::ostringstream s;
-    s.precision(17);
-    s << "set Effects = base shaking\n"
-      << "subsection MPM\n set Stress update = " << scheme << "\nend\n"
-      << "subsection Base shaking\n set Boundary ids = 0\n"
-      << " set Base = compliant\n set Motion = velocity\n"
-      << " set Amplitude = 0, " << W
-      << "\n set Load curve = " << sine_record(f, 8, false, false)
-      << "\n set Density = " << 2 * rho << "\n set P-wave speed = " << c
-      << "\n set S-wave speed = " << vs << "\nend\n"
-      << "subsection Grid\n set Upper corner = " << H << ", " << H / 40
-      << "\n set Cells = 40, 1\n set Boundary conditions = "
-         "2: along the face, 3: along the face\nend\n"
-      << "subsection Material 1\n set Density = " << rho
-      << "\n subsection linear elastic\n  set Young's modulus = " << rho * c * c
-      << "\n  set Poisson's ratio = 0\n end\nend\n"
-      << "subsection Body 1\n set Upper corner = " << H << ", " << H / 40
-      << "\nend\n";
-    auto              simulation = test::make_simulation<2>(s.str());
-    const CoreFields &fields     = simulation->particle_set().fields;
+    auto simulation = test::make_simulation<2>(column(
+      "compliant", sine_record(f, 8, false, false), false, scheme, true));
     return shake(*simulation, f, 8, [&] {
-      double sum[2] = {0, 0};
-      for (const auto &p : simulation->particle_set().handler)
-        if (p.get_location()[0] > H * (1 - 1. / 40))
-          {
-            sum[0] += p.get_properties()[fields.velocity + 1];
-            sum[1] += 1;
-          }
-      return Utilities::MPI::sum(sum[0], MPI_COMM_WORLD) /
-             Utilities::MPI::sum(sum[1], MPI_COMM_WORLD);
+      return top_velocity(*simulation, 1);
     });
   }
 } // namespace
