@@ -168,9 +168,12 @@ namespace dealmpm
   ModifiedCamClay<dim>::elastic_energy(
     const std::array<double, 3> &strain) const
   {
+    // Measured from the stress-free soil (p -> 0), not from F = I: the
+    // unstrained soil holds kappa* p_r, which it gives back when it
+    // swells, so the energy put in (and the energy check's scale) counts
+    // the reference pressure of a body that starts at it.
     const double trace = strain[0] + strain[1] + strain[2];
-    return parameters.swelling_index *
-             (pressure(-trace) - parameters.reference_pressure) +
+    return parameters.swelling_index * pressure(-trace) +
            parameters.shear_modulus * this->deviator_squared(strain);
   }
 

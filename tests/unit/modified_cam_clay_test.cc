@@ -310,6 +310,17 @@ TEST(ModifiedCamClay, WaveSpeedAndStoredEnergyFollowThePressure)
     (2 * h);
   const SymmetricTensor<2, 3> K = point.kirchhoff(F);
   EXPECT_NEAR(rate, K[0][0] * -0.3 + K[1][1] + K[2][2], 1e-6 * tau.p);
+
+  // Counted from the stress-free soil: the work of p on the volume from
+  // p = 0, kappa* p for an isotropic state; kappa* p_r unstrained (the
+  // energy a body at rest at p_r holds), falling to 0 as it swells.
+  for (const double swelling : {0., 0.05, 0.5})
+    {
+      const double p = c.reference_pressure * std::exp(-swelling / 0.02);
+      EXPECT_NEAR(W_at(-swelling / 3, swelling / 3),
+                  c.swelling_index * p,
+                  1e-12 * c.swelling_index * c.reference_pressure);
+    }
 }
 
 // One step from a low reference pressure far past it (the geostatic start

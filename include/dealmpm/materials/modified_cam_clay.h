@@ -35,8 +35,9 @@ namespace dealmpm
    * stress tau and the logarithmic elastic strain eps_e:
    * - elasticity: p = p_r exp(eps_v / kappa*) with eps_v = -tr(eps_e)
    *   (the bulk modulus p / kappa* grows with the pressure) and
-   *   dev tau = 2 G dev eps_e; stored energy kappa* p_r (exp(eps_v /
-   *   kappa*) - 1) + G |dev eps_e|^2;
+   *   dev tau = 2 G dev eps_e; stored energy kappa* p + G |dev eps_e|^2
+   *   = kappa* p_r exp(eps_v / kappa*) + G |dev eps_e|^2, counted from
+   *   the stress-free soil (p -> 0): kappa* p_r at F = I;
    * - yield surface f = q^2 / M^2 + p (p - p_c), an ellipse through the
    *   origin and p_c, with associated flow;
    * - hardening by the plastic volume strain (compression positive):
