@@ -255,6 +255,20 @@ namespace dealmpm
   {
     Tensor<1, dim>     given;
     const unsigned int n = fields.mass.locally_owned_size();
+    // The grid update decides which nodes the body presses; MUSL's re-map
+    // holds the same nodes, pressed again or not. A re-map
+    // held only where it presses would hold the re-mapped velocity on one
+    // side of its swings: the stress update would see a compression the
+    // particles' motion never makes, and the top of a layer under a
+    // platen would be squeezed step after step (energy grew sevenfold in
+    // an oedometer once a row of particles crossed a row of nodes).
+    // USF re-maps before this step's grid update: it holds the nodes of
+    // the last step's, whose velocities the particles carry (none in the
+    // first step and after a grid change: there the re-mapped velocity
+    // decides, as in the grid update).
+    const bool same_nodes = !count_work && pressed_in_update.size() == n;
+    if (count_work)
+      pressed_in_update.assign(n, false);
     // Its place at the end of the step, in its initial frame.
     const Tensor<1, dim> shift = moved;
     for (unsigned int i = 0; i < n; ++i)
@@ -275,11 +289,14 @@ namespace dealmpm
         const Tensor<1, dim> normal   = settings.shape.normal(x);
         Tensor<1, dim>       relative = v - V;
         const double         pressed  = -(relative * normal);
-        if (!(pressed > 0.))
+        if (same_nodes ? !pressed_in_update[i] : !(pressed > 0.))
           continue;
+        if (count_work)
+          pressed_in_update[i] = true;
         relative += pressed * normal;
-        relative +=
-          coulomb_change(relative, normal, pressed, settings.friction);
+        if (pressed > 0.)
+          relative +=
+            coulomb_change(relative, normal, pressed, settings.friction);
         Tensor<1, dim> change = V + relative - v;
         for (unsigned int d = 0; d < dim; ++d)
           if (!settings.mask[d])
@@ -319,6 +336,7 @@ namespace dealmpm
   RigidBody<dim>::grid_changed(const BackgroundGrid<dim> &grid)
   {
     reach.reinit(grid.partitioner);
+    pressed_in_update.clear();
     if (settings.touch_check)
       touched.reinit(grid.partitioner);
   }

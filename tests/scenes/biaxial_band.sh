@@ -18,7 +18,7 @@
 #   (5 mm cells, FLIP) its mean lies between 0.9 of the material's
 #   residual strength 2 c_r cos(phi) / (1 - sin(phi)) W = 693 N/m (the
 #   least load on any band) and 1.1 of the load that slides the measured
-#   band at c_r (790 N/m at 49.9 deg; measured 770; PIC's transfer, a
+#   band at c_r (789 N/m at 49.9 deg; measured 792; PIC's transfer, a
 #   shear viscosity, carries 2,108);
 # - with 'Regularisation length' = 5 mm (the coarse cells), the 2.5 mm
 #   grid's load falls from the peak over the same platen displacement as

@@ -69,7 +69,9 @@ namespace dealmpm
    * the last step), beside its displacement; the work it does on the
    * material, sum_i m_i dv_i . v_i, counts in the energy balance
    * (rigid_body_work). Under USF and MUSL it also holds the re-mapped
-   * velocity that the stress update reads.
+   * velocity that the stress update reads, at the nodes it pressed in the
+   * last grid update (MUSL: the step's; USF, which re-maps first: the
+   * last step's).
    */
   template <int dim>
   class RigidBody : public Effect<dim>
@@ -186,7 +188,11 @@ namespace dealmpm
     /** The largest half size of the particles that reach it, at their
      * stencils' nodes (0 elsewhere). */
     NodalVector reach;
-    double      work = 0;
+    /** The locally owned nodes it pressed in the last grid update, which
+     * the re-map holds again (MUSL: this step's, USF: the last step's);
+     * empty after a grid change. */
+    std::vector<bool> pressed_in_update;
+    double            work = 0;
   };
 
   /** Register "rigid body" in the effect table: its parameters (section
