@@ -5,9 +5,9 @@
 # without it the locking of isochoric plastic flow leaves a pressure that
 # alternates between neighbouring particles. Measured over the pairs of
 # neighbours (0.5 mm apart) whose pressures both exceed a tenth of the
-# yield stress (50 MPa), the share of opposite signs: 1 % with F-bar, 38 %
-# without (+0.86 / -1.02 GPa at most, against +0.22 / -0.11 GPa with
-# F-bar). A smooth field has the same sign on both sides of nearly every
+# yield stress (50 MPa), the share of opposite signs: none with F-bar, 41 %
+# without (+0.57 / -0.45 GPa at most, against +0.13 / -0.19 GPa with
+# F-bar; measured 2026-12-03). A smooth field has the same sign on both sides of nearly every
 # pair; the check allows 5 %, and asks the run without anti-locking for
 # 20 % or more (that the measure sees the defect).
 here=$(cd "$(dirname "$0")" && pwd)
