@@ -225,7 +225,9 @@ namespace dealmpm
     // largest relocation plan, whether particles were held at walls.
     const std::string coupling_failure = regions.coupling_failure();
     const double      rate =
-      std::max(check.max_signal_rate, regions.local_signal_rate());
+      std::max({check.max_signal_rate,
+                regions.local_signal_rate(),
+                effects_signal_rate(effects, *particles, grid)});
     double reduced[9] = {-rate,
                          check.min_J,
                          check.failed ? -1. : 0.,

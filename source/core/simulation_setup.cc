@@ -154,8 +154,10 @@ namespace dealmpm
                                      *particles,
                                      run_settings.method.total_lagrangian());
     max_signal_rate =
-      Utilities::MPI::max(std::max(particle_check.max_signal_rate,
-                                   regions.local_signal_rate()),
+      Utilities::MPI::max(std::max(
+                            {particle_check.max_signal_rate,
+                             regions.local_signal_rate(),
+                             effects_signal_rate(effects, *particles, grid)}),
                           comm);
   }
 

@@ -6,6 +6,7 @@
 #include <dealmpm/effects/frictional_contact.h>
 #include <dealmpm/effects/generalized_vortex.h>
 #include <dealmpm/effects/gravity.h>
+#include <dealmpm/effects/heat_conduction.h>
 #include <dealmpm/effects/local_damping.h>
 #include <dealmpm/effects/manufactured_solution.h>
 #include <dealmpm/effects/rigid_body.h>
@@ -45,6 +46,7 @@ namespace dealmpm
       add_manufactured_solution_effect(r);
       add_generalized_vortex_effect(r);
       add_damage_effect(r);
+      add_heat_conduction_effect(r);
       return r;
     }();
     return registry;

@@ -14,6 +14,7 @@
 #include <dealmpm/transfer/stencil.h>
 #include <dealmpm/transfer/stencil_order.h>
 
+#include <algorithm>
 #include <memory>
 #include <string>
 #include <utility>
@@ -312,6 +313,17 @@ namespace dealmpm
       return false;
     }
 
+    /** The largest rate (1/s) of this rank's particles that bounds the step
+     * as a wave speed over the cell size does (dt = CFL / rate): heat
+     * conduction's 2 dim k / (rho c h^2). Asked once a step, at set-up
+     * and after a grid change; 0 by default. */
+    virtual double
+    signal_rate(const ParticleSet<dim> & /*particles*/,
+                const BackgroundGrid<dim> & /*grid*/) const
+    {
+      return 0;
+    }
+
     /** Potential energy of a mass at x, for the statistics. */
     virtual double
     potential_energy(const double /*mass*/, const Point<dim> & /*x*/) const
@@ -421,4 +433,16 @@ namespace dealmpm
   /** "local damping" -> "Local damping". */
   std::string
   section_title(const std::string &name);
+  /** The largest signal_rate() of @p effects on this rank. */
+  template <int dim>
+  double
+  effects_signal_rate(const std::vector<std::unique_ptr<Effect<dim>>> &effects,
+                      const ParticleSet<dim>    &particles,
+                      const BackgroundGrid<dim> &grid)
+  {
+    double rate = 0;
+    for (const auto &effect : effects)
+      rate = std::max(rate, effect->signal_rate(particles, grid));
+    return rate;
+  }
 } // namespace dealmpm

@@ -1,0 +1,136 @@
+#pragma once
+
+#include <deal.II/base/function_parser.h>
+
+#include <dealmpm/effects/effect.h>
+#include <dealmpm/grid/boundary_nodes.h>
+
+#include <map>
+#include <set>
+#include <vector>
+
+namespace dealmpm
+{
+  /**
+   * Heat conduction in the particles (effect 'heat conduction'): each
+   * particle carries a temperature T (K), its material a conductivity k
+   * (W/m/K) and a specific heat c (J/kg/K). Every step, after P2G:
+   * - the heat capacity m c and the heat m c T go to the nodes with the
+   *   mass's weights, C_i = sum N_ip m_p c_p, T_i = sum N_ip m_p c_p T_p /
+   *   C_i; nodes on the 'Fixed temperatures' boundaries take theirs;
+   * - the conducted heat, as the internal force is: Q_i = -sum_p V_p k_p
+   *   grad T_p . grad N_ip with grad T_p = sum_j T_j grad N_jp;
+   * - each node's temperature changes by dT_i = dt Q_i / C_i, a fixed node's
+   *   by T_fixed - T_i (lumped capacity, forward Euler);
+   * and after G2P every particle by sum N_ip dT_i, the same increment for
+   * every shape function and scheme.
+   *
+   * The step obeys dt <= CFL h^2 rho c / (2 dim k) (signal_rate()), which
+   * on fine cells of a good conductor is below the wave's CFL step.
+   * Statistics: heat_stored (sum m c T, J; per metre of thickness in 2D)
+   * and heat_in (the heat the fixed boundaries have given so far, what
+   * they hand to the particles beside them and conduct to the nodes
+   * next to them); heat_stored - heat_in stays at its start unless heat
+   * is lost at nodes too light to hold a temperature.
+   */
+  template <int dim>
+  class HeatConduction : public Effect<dim>
+  {
+  public:
+    struct Settings
+    {
+      /** The initial temperature, an expression of x, y (, z). */
+      std::string initial_temperature;
+      /** One value for every material, or one per material. */
+      std::vector<double>                  conductivity;
+      std::vector<double>                  specific_heat;
+      std::map<types::boundary_id, double> fixed_temperatures;
+    };
+
+    HeatConduction(const Settings &settings, const SceneReader &reader);
+
+    std::vector<FieldDescription>
+    particle_fields() const override
+    {
+      return {{"temperature", 1}};
+    }
+
+    /** The fixed temperatures' ids must be on the grid, and the bodies'
+     * materials have their conductivity and specific heat. */
+    void
+    setup(const EffectSetup<dim> &setup, SceneReader &reader) override;
+
+    void
+    grid_changed(const BackgroundGrid<dim> &grid) override;
+
+    /** Each particle's initial temperature. */
+    void
+    initialize_particles(ParticleSet<dim> &particles) const override;
+
+    /** Maps the heat and conducts it to the nodes (after P2G). */
+    void
+    add_nodal_forces(const EffectContext<dim> &state,
+                     NodalFields<dim>         &fields) override;
+
+    /** Gives each particle its nodes' temperature increments. */
+    void
+    after_g2p(const EffectContext<dim> &state,
+              ParticleSet<dim>         &particles) override;
+
+    double
+    signal_rate(const ParticleSet<dim>    &particles,
+                const BackgroundGrid<dim> &grid) const override;
+
+    std::vector<std::pair<std::string, double>>
+    statistics_columns() const override
+    {
+      return {{"heat_stored", stored}, {"heat_in", heat_in}};
+    }
+
+    std::vector<double>
+    saved_state() const override
+    {
+      return {heat_in};
+    }
+
+    void
+    restore_state(const std::vector<double> &state) override
+    {
+      heat_in = state.at(0);
+    }
+
+  private:
+    /** Material @p m's value of @p values (one for all, or one each). */
+    static double
+    of_material(const std::vector<double> &values, const unsigned int m)
+    {
+      return values.size() == 1 ? values[0] : values[m];
+    }
+
+    /** The particles' heat sum m c T on this rank. */
+    double
+    heat_of(const ParticleSet<dim> &particles) const;
+
+    /** Nodal capacity and temperature from the particles (fixed nodes
+     * held), with ghosts. */
+    void
+    map_temperature(const EffectContext<dim> &state);
+
+    Settings                    settings;
+    mutable FunctionParser<dim> initial;
+    /** Locally owned nodes on a fixed-temperature boundary, each once. */
+    std::vector<std::pair<unsigned int, double>> fixed_nodes;
+    std::vector<double>                          mapped_at_fixed;
+    NodalVector                                  capacity;
+    NodalVector                                  temperature;
+    NodalVector                                  increment;
+    mutable double                               stored  = 0;
+    double                                       heat_in = 0;
+  };
+
+  /** Register "heat conduction" in the effect table: its parameters
+   * (section Heat conduction), their reading and checks. */
+  template <int dim>
+  void
+  add_heat_conduction_effect(Registry<Effect<dim>> &registry);
+} // namespace dealmpm

@@ -1,0 +1,279 @@
+#include <dealmpm/effects/expressions.h>
+#include <dealmpm/effects/heat_conduction.h>
+#include <dealmpm/transfer/stencil_order.h>
+
+#include <algorithm>
+#include <limits>
+
+namespace dealmpm
+{
+  template <int dim>
+  HeatConduction<dim>::HeatConduction(const Settings    &settings,
+                                      const SceneReader &reader)
+    : settings(settings)
+  {
+    parse_expressions(initial,
+                      {settings.initial_temperature},
+                      false,
+                      reader,
+                      "Initial temperature",
+                      "an expression of " + coordinate_names(dim, false) +
+                        " (muparser), in K");
+  }
+
+  template <int dim>
+  void
+  HeatConduction<dim>::setup(const EffectSetup<dim> &setup, SceneReader &reader)
+  {
+    std::map<unsigned int, std::string> listed;
+    for (const auto &[id, value] : settings.fixed_temperatures)
+      listed[id] = std::to_string(value);
+    check_grid_has_ids(reader,
+                       "Fixed temperatures",
+                       listed,
+                       setup.grid.triangulation.get_boundary_ids());
+    unsigned int needed = 0;
+    for (const Body<dim> &body : setup.bodies)
+      needed = std::max(needed, body.material + 1);
+    for (const auto &[entry, values] :
+         {std::make_pair("Conductivity", &settings.conductivity),
+          std::make_pair("Specific heat", &settings.specific_heat)})
+      if (values->size() != 1 && values->size() < needed)
+        reader.fail(entry,
+                    "one value for every material, or one per material (" +
+                      std::to_string(needed) + " or more)");
+    grid_changed(setup.grid);
+  }
+
+  template <int dim>
+  void
+  HeatConduction<dim>::grid_changed(const BackgroundGrid<dim> &grid)
+  {
+    capacity.reinit(grid.partitioner);
+    temperature.reinit(grid.partitioner);
+    increment.reinit(grid.partitioner);
+    std::map<unsigned int, double> held;
+    for (const auto &[id, value] : settings.fixed_temperatures)
+      for (const BoundaryNode<dim> &node : boundary_nodes(grid, {id}))
+        held[node.local_index] = value;
+    fixed_nodes.assign(held.begin(), held.end());
+  }
+
+  template <int dim>
+  void
+  HeatConduction<dim>::initialize_particles(ParticleSet<dim> &particles) const
+  {
+    const unsigned int T = particles.layout.offset("temperature");
+    for (auto &p : particles.handler)
+      p.get_properties()[T] = initial.value(p.get_location());
+    stored = heat_of(particles);
+  }
+
+  template <int dim>
+  double
+  HeatConduction<dim>::heat_of(const ParticleSet<dim> &particles) const
+  {
+    const unsigned int T   = particles.layout.offset("temperature");
+    double             sum = 0;
+    for (const auto &p : particles.handler)
+      {
+        const auto props = p.get_properties();
+        sum +=
+          props[particles.fields.mass] *
+          of_material(settings.specific_heat, particles.material_of(props)) *
+          props[T];
+      }
+    return sum;
+  }
+
+  template <int dim>
+  void
+  HeatConduction<dim>::map_temperature(const EffectContext<dim> &state)
+  {
+    const ParticleSet<dim> &particles = state.particles;
+    const Stencil<dim>     &stencil   = state.stencil;
+    const unsigned int      T         = particles.layout.offset("temperature");
+    capacity                          = 0;
+    temperature                       = 0;
+    for_each_particle_in_stencil_order(
+      state.grid, particles, [&](const std::size_t k, const auto &p, auto &) {
+        const auto   props = p.get_properties();
+        const double mc =
+          props[particles.fields.mass] *
+          of_material(settings.specific_heat, particles.material_of(props));
+        for (unsigned int e = stencil.begin[k]; e < stencil.begin[k + 1]; ++e)
+          {
+            capacity.local_element(stencil.node[e]) += stencil.N[e] * mc;
+            temperature.local_element(stencil.node[e]) +=
+              stencil.N[e] * mc * props[T];
+          }
+      });
+    capacity.compress(VectorOperation::add);
+    temperature.compress(VectorOperation::add);
+    const unsigned int n = capacity.locally_owned_size();
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const double C = capacity.local_element(i);
+        temperature.local_element(i) =
+          C > 0 ? temperature.local_element(i) / C : 0.;
+      }
+    mapped_at_fixed.resize(fixed_nodes.size());
+    for (unsigned int j = 0; j < fixed_nodes.size(); ++j)
+      {
+        double &T_i        = temperature.local_element(fixed_nodes[j].first);
+        mapped_at_fixed[j] = T_i;
+        T_i                = fixed_nodes[j].second;
+      }
+    temperature.update_ghost_values();
+  }
+
+  template <int dim>
+  void
+  HeatConduction<dim>::add_nodal_forces(const EffectContext<dim> &state,
+                                        NodalFields<dim> & /*fields*/)
+  {
+    map_temperature(state);
+    const ParticleSet<dim> &particles = state.particles;
+    const Stencil<dim>     &stencil   = state.stencil;
+    // The conducted heat Q_i, gathered in 'increment' first.
+    increment = 0;
+    for_each_particle_in_stencil_order(
+      state.grid, particles, [&](const std::size_t k, const auto &p, auto &) {
+        const auto     props = p.get_properties();
+        Tensor<1, dim> gradient;
+        for (unsigned int e = stencil.begin[k]; e < stencil.begin[k + 1]; ++e)
+          gradient +=
+            temperature.local_element(stencil.node[e]) * stencil.grad_N[e];
+        const double Vk =
+          current_volume<dim>(&props[0], particles.fields) *
+          of_material(settings.conductivity, particles.material_of(props));
+        for (unsigned int e = stencil.begin[k]; e < stencil.begin[k + 1]; ++e)
+          increment.local_element(stencil.node[e]) -=
+            Vk * (gradient * stencil.grad_N[e]);
+      });
+    increment.compress(VectorOperation::add);
+    // Fixed nodes: what they give the particles beside them and conduct to
+    // the free nodes next to them (-dt Q_i) comes from beyond.
+    for (unsigned int j = 0; j < fixed_nodes.size(); ++j)
+      {
+        const unsigned int i = fixed_nodes[j].first;
+        heat_in += capacity.local_element(i) *
+                     (fixed_nodes[j].second - mapped_at_fixed[j]) -
+                   state.dt * increment.local_element(i);
+      }
+    const unsigned int n = increment.locally_owned_size();
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const double C = capacity.local_element(i);
+        increment.local_element(i) =
+          C > 0 ? state.dt * increment.local_element(i) / C : 0.;
+      }
+    for (unsigned int j = 0; j < fixed_nodes.size(); ++j)
+      increment.local_element(fixed_nodes[j].first) =
+        fixed_nodes[j].second - mapped_at_fixed[j];
+    increment.update_ghost_values();
+  }
+
+  template <int dim>
+  void
+  HeatConduction<dim>::after_g2p(const EffectContext<dim> &state,
+                                 ParticleSet<dim>         &particles)
+  {
+    const Stencil<dim> &stencil = state.stencil;
+    const unsigned int  T       = particles.layout.offset("temperature");
+    stored                      = 0;
+    for_each_particle_in_stencil_order(
+      state.grid, particles, [&](const std::size_t k, auto &p, auto &) {
+        auto   props = p.get_properties();
+        double dT    = 0;
+        for (unsigned int e = stencil.begin[k]; e < stencil.begin[k + 1]; ++e)
+          dT += stencil.N[e] * increment.local_element(stencil.node[e]);
+        props[T] += dT;
+        stored +=
+          props[particles.fields.mass] *
+          of_material(settings.specific_heat, particles.material_of(props)) *
+          props[T];
+      });
+  }
+
+  template <int dim>
+  double
+  HeatConduction<dim>::signal_rate(const ParticleSet<dim>    &particles,
+                                   const BackgroundGrid<dim> &grid) const
+  {
+    double h = std::numeric_limits<double>::max();
+    for (const GridCell<dim> &cell : grid.cells)
+      h = std::min(h, cell.h);
+    double rate = 0;
+    for (const auto &p : particles.handler)
+      {
+        const auto         props = p.get_properties();
+        const unsigned int m     = particles.material_of(props);
+        const double       rho   = props[particles.fields.mass] /
+                           current_volume<dim>(&props[0], particles.fields);
+        rate =
+          std::max(rate,
+                   2 * dim * of_material(settings.conductivity, m) /
+                     (rho * of_material(settings.specific_heat, m) * h * h));
+      }
+    return rate;
+  }
+
+  template class HeatConduction<2>;
+  template class HeatConduction<3>;
+
+  template <int dim>
+  void
+  add_heat_conduction_effect(Registry<Effect<dim>> &registry)
+  {
+    registry.add(
+      "heat conduction",
+      "temperature carried by the particles and conducted through the "
+      "grid (section Heat conduction: Initial temperature, Conductivity, "
+      "Specific heat, Fixed temperatures).",
+      [](ParameterHandler &prm) {
+        prm.declare_entry("Initial temperature",
+                          "293.15",
+                          Patterns::Anything(),
+                          "The particles' temperature at the start (K), an "
+                          "expression of x, y (, z).");
+        prm.declare_entry("Conductivity",
+                          "0",
+                          Patterns::List(Patterns::Double(0)),
+                          "k (W/m/K): one value for every material, or one "
+                          "per material in their order.");
+        prm.declare_entry("Specific heat",
+                          "0",
+                          Patterns::List(Patterns::Double(0)),
+                          "c (J/kg/K), the heat capacity per unit mass: one "
+                          "value for every material, or one per material.");
+        prm.declare_entry("Fixed temperatures",
+                          "",
+                          Patterns::Anything(),
+                          "Temperature (K) held on grid boundary ids, e.g. "
+                          "'0: 373.15, 1: 293.15'.");
+      },
+      [](SceneReader &reader) -> std::unique_ptr<Effect<dim>> {
+        typename HeatConduction<dim>::Settings s;
+        s.initial_temperature = reader.handler().get("Initial temperature");
+        s.conductivity        = reader.get_doubles("Conductivity");
+        s.specific_heat       = reader.get_doubles("Specific heat");
+        for (const double c : s.specific_heat)
+          if (!(c > 0))
+            reader.fail("Specific heat", "values > 0");
+        if (s.conductivity.empty())
+          reader.fail("Conductivity", "one value or one per material");
+        if (s.specific_heat.empty())
+          reader.fail("Specific heat", "one value or one per material");
+        for (const auto &[id, T] :
+             reader.get_id_nonnegatives("Fixed temperatures"))
+          s.fixed_temperatures[static_cast<types::boundary_id>(id)] = T;
+        return std::make_unique<HeatConduction<dim>>(s, reader);
+      });
+  }
+
+  template void
+  add_heat_conduction_effect(Registry<Effect<2>> &);
+  template void
+  add_heat_conduction_effect(Registry<Effect<3>> &);
+} // namespace dealmpm
