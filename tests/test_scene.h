@@ -75,6 +75,27 @@ namespace dealmpm::test
   }
 
   /** An effect's statistics column by name (a test failure if none). */
+  /** The 3 x 3 Kirchhoff stress J sigma of a particle of @p simulation
+   * (sigma_zz from its material in 2D). */
+  template <int dim, class Particle>
+  SymmetricTensor<2, 3>
+  kirchhoff_stress(Simulation<dim> &simulation, const Particle &particle)
+  {
+    const ParticleSet<dim> &particles = simulation.particle_set();
+    const auto              props     = particle.get_properties();
+    const unsigned int      m         = particles.material_of(props);
+    const auto              F =
+      read_tensor<dim>(&props[particles.fields.deformation_gradient]);
+    const ArrayView<const double> internal(&props[0] +
+                                             particles.internal_offset[m],
+                                           particles.n_internal[m]);
+    return determinant(F) * full_stress<dim>(simulation.material(m),
+                                             F,
+                                             read_symmetric<dim>(
+                                               &props[particles.fields.stress]),
+                                             internal);
+  }
+
   inline double
   effect_column(const Statistics &s, const std::string &name)
   {

@@ -105,15 +105,8 @@ end
         const auto props = particle.get_properties();
         const auto F =
           read_tensor<2>(&props[particles.fields.deformation_gradient]);
-        const ArrayView<const double> internal(&props[0] +
-                                                 particles.internal_offset[0],
-                                               particles.n_internal[0]);
-        const SymmetricTensor<2, 3>   tau =
-          determinant(F) *
-          full_stress<2>(simulation.material(0),
-                         F,
-                         read_symmetric<2>(&props[particles.fields.stress]),
-                         internal);
+        const SymmetricTensor<2, 3> tau =
+          test::kirchhoff_stress(simulation, particle);
         mean.ln_J += std::log(determinant(F));
         mean.p += -trace(tau) / 3.;
         mean.q += test::von_mises(tau);

@@ -184,18 +184,9 @@ TEST(Geostatic, ColumnStartsAtRestUnderItsWeight)
     double worst = 0;
     for (const auto &p : particles.handler)
       {
-        const auto props = p.get_properties();
-        const auto F =
-          read_tensor<2>(&props[particles.fields.deformation_gradient]);
-        const ArrayView<const double> internal(&props[0] +
-                                                 particles.internal_offset[0],
-                                               particles.n_internal[0]);
-        const SymmetricTensor<2, 3>   tau =
-          determinant(F) *
-          full_stress<2>(simulation->material(0),
-                         F,
-                         read_symmetric<2>(&props[particles.fields.stress]),
-                         internal);
+        const auto                  props = p.get_properties();
+        const SymmetricTensor<2, 3> tau =
+          test::kirchhoff_stress(*simulation, p);
         const double p_  = -trace(tau) / 3.;
         const double q   = std::sqrt(1.5) * deviator(tau).norm();
         const double p_c = p_ + q * q / (1.2 * 1.2 * p_);
