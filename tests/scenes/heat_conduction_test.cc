@@ -86,6 +86,8 @@ namespace
     const Statistics s       = simulation->statistics();
     const double     stored  = test::effect_column(s, "heat_stored");
     const double     heat_in = test::effect_column(s, "heat_in");
+    sum                      = Utilities::MPI::sum(sum, MPI_COMM_WORLD);
+    n                        = Utilities::MPI::sum(n, MPI_COMM_WORLD);
     return {std::sqrt(sum / n),
             std::abs(stored - stored_0 - heat_in) /
               std::max(std::abs(heat_in), std::abs(stored_0))};
