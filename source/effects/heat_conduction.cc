@@ -19,6 +19,55 @@ namespace dealmpm
                       "Initial temperature",
                       "an expression of " + coordinate_names(dim, false) +
                         " (muparser), in K");
+    has_source = settings.heat_source != "0";
+    if (has_source)
+      parse_expressions(source,
+                        {settings.heat_source},
+                        true,
+                        reader,
+                        "Heat source",
+                        "an expression of " + coordinate_names(dim, true) +
+                          " (muparser), in W/m^3");
+  }
+
+  template <int dim>
+  void
+  HeatConduction<dim>::wrap_materials(MaterialSections<dim> &sections,
+                                      SceneReader           &reader)
+  {
+    const unsigned int         n     = sections.materials.size();
+    const std::vector<double> &alpha = settings.thermal_expansion;
+    if (alpha.size() != 1 && alpha.size() < n)
+      reader.fail("Thermal expansion",
+                  "one value for every material, or one per material (" +
+                    std::to_string(n) + ")");
+    expanding.assign(n, nullptr);
+    std::vector<std::string> models;
+    for (unsigned int m = 0; m < n; ++m)
+      {
+        if (of_material(alpha, m) == 0.)
+          continue;
+        if (dim == 2 && !initial_elastic_constants(*sections.materials[m]))
+          reader.fail("Thermal expansion",
+                      "0 for material " + std::to_string(m + 1) + " ('" +
+                        sections.models[m] +
+                        "', with no elastic response from its initial "
+                        "state): in plane strain the expansion needs its "
+                        "Poisson's ratio; run it in 3D");
+        // Each expanding model keeps its own block of internal variables.
+        const std::string model = sections.models[m] + " expanding";
+        const auto known    = std::find(models.begin(), models.end(), model);
+        const std::size_t k = known - models.begin();
+        if (known == models.end())
+          models.push_back(model);
+        auto wrapped = std::make_unique<ThermallyExpanding<dim>>(
+          std::move(sections.materials[m]),
+          of_material(alpha, m),
+          k == 0 ? "" : "_" + std::to_string(k + 1));
+        expanding[m]          = wrapped.get();
+        sections.materials[m] = std::move(wrapped);
+        sections.models[m]    = model;
+      }
   }
 
   template <int dim>
@@ -151,6 +200,8 @@ namespace dealmpm
           increment.local_element(stencil.node[e]) -=
             Vk * (gradient * stencil.grad_N[e]);
       });
+    if (has_source)
+      add_source(state);
     increment.compress(VectorOperation::add);
     // Fixed nodes: what they give the particles beside them and conduct to
     // the free nodes next to them (-dt Q_i) comes from beyond.
@@ -176,6 +227,24 @@ namespace dealmpm
 
   template <int dim>
   void
+  HeatConduction<dim>::add_source(const EffectContext<dim> &state)
+  {
+    const ParticleSet<dim> &particles = state.particles;
+    const Stencil<dim>     &stencil   = state.stencil;
+    source.set_time(state.time);
+    for_each_particle_in_stencil_order(
+      state.grid, particles, [&](const std::size_t k, const auto &p, auto &) {
+        const double power =
+          current_volume<dim>(&p.get_properties()[0], particles.fields) *
+          source.value(p.get_location());
+        generated += state.dt * power;
+        for (unsigned int e = stencil.begin[k]; e < stencil.begin[k + 1]; ++e)
+          increment.local_element(stencil.node[e]) += stencil.N[e] * power;
+      });
+  }
+
+  template <int dim>
+  void
   HeatConduction<dim>::after_g2p(const EffectContext<dim> &state,
                                  ParticleSet<dim>         &particles)
   {
@@ -189,6 +258,10 @@ namespace dealmpm
         for (unsigned int e = stencil.begin[k]; e < stencil.begin[k + 1]; ++e)
           dT += stencil.N[e] * increment.local_element(stencil.node[e]);
         props[T] += dT;
+        const unsigned int m = particles.material_of(props);
+        if (!expanding.empty() && expanding[m] != nullptr)
+          props[particles.internal_offset[m] + expanding[m]->stretch_index()] +=
+            expanding[m]->stretch_per_kelvin() * dT;
         stored +=
           props[particles.fields.mass] *
           of_material(settings.specific_heat, particles.material_of(props)) *
@@ -230,7 +303,8 @@ namespace dealmpm
       "heat conduction",
       "temperature carried by the particles and conducted through the "
       "grid (section Heat conduction: Initial temperature, Conductivity, "
-      "Specific heat, Fixed temperatures).",
+      "Specific heat, Thermal expansion, Heat source, Fixed "
+      "temperatures).",
       [](ParameterHandler &prm) {
         prm.declare_entry("Initial temperature",
                           "293.15",
@@ -247,6 +321,23 @@ namespace dealmpm
                           Patterns::List(Patterns::Double(0)),
                           "c (J/kg/K), the heat capacity per unit mass: one "
                           "value for every material, or one per material.");
+        prm.declare_entry(
+          "Thermal expansion",
+          "0",
+          Patterns::List(Patterns::Double(0)),
+          "alpha (1/K), the linear thermal expansion coefficient: one value "
+          "for every material, or one per material. A body is stress-free "
+          "at its initial temperature; the stress update divides the "
+          "thermal stretch 1 + alpha (T - T_0) out of F. In 2D (plane "
+          "strain) the held out-of-plane expansion makes it (1 + nu) alpha "
+          "in the plane and lowers sigma_zz by E alpha (T - T_0), nu and E "
+          "of the model's response to a small strain from its initial "
+          "state.");
+        prm.declare_entry("Heat source",
+                          "0",
+                          Patterns::Anything(),
+                          "Heat generated per unit volume (W/m^3), an "
+                          "expression of x, y (, z) and t; 0: none.");
         prm.declare_entry("Fixed temperatures",
                           "",
                           Patterns::Anything(),
@@ -258,6 +349,10 @@ namespace dealmpm
         s.initial_temperature = reader.handler().get("Initial temperature");
         s.conductivity        = reader.get_doubles("Conductivity");
         s.specific_heat       = reader.get_doubles("Specific heat");
+        s.thermal_expansion   = reader.get_doubles("Thermal expansion");
+        s.heat_source         = reader.handler().get("Heat source");
+        if (s.thermal_expansion.empty())
+          reader.fail("Thermal expansion", "one value or one per material");
         for (const double c : s.specific_heat)
           if (!(c > 0))
             reader.fail("Specific heat", "values > 0");

@@ -4,6 +4,7 @@
 
 #include <dealmpm/effects/effect.h>
 #include <dealmpm/grid/boundary_nodes.h>
+#include <dealmpm/materials/thermal_expansion.h>
 
 #include <map>
 #include <set>
@@ -23,15 +24,23 @@ namespace dealmpm
    * - each node's temperature changes by dT_i = dt Q_i / C_i, a fixed node's
    *   by T_fixed - T_i (lumped capacity, forward Euler);
    * and after G2P every particle by sum N_ip dT_i, the same increment for
-   * every shape function and scheme.
+   * every shape function and scheme. A 'Heat source' s(x, t) (W/m^3) adds
+   * sum_p N_ip V_p s(x_p, t) to Q_i.
+   *
+   * A material with a 'Thermal expansion' alpha > 0 is wrapped in
+   * ThermallyExpanding (materials/thermal_expansion.h): each temperature
+   * increment grows its particles' thermal stretch, which the stress
+   * update divides out of F. A body is stress-free at its initial
+   * temperature.
    *
    * The step obeys dt <= CFL h^2 rho c / (2 dim k) (signal_rate()), which
    * on fine cells of a good conductor is below the wave's CFL step.
    * Statistics: heat_stored (sum m c T, J; per metre of thickness in 2D)
    * and heat_in (the heat the fixed boundaries have given so far, what
    * they hand to the particles beside them and conduct to the nodes
-   * next to them); heat_stored - heat_in stays at its start unless heat
-   * is lost at nodes too light to hold a temperature.
+   * next to them) and heat_generated (by the source); heat_stored -
+   * heat_in - heat_generated stays at its start unless heat is lost at
+   * nodes too light to hold a temperature.
    */
   template <int dim>
   class HeatConduction : public Effect<dim>
@@ -45,6 +54,11 @@ namespace dealmpm
       std::vector<double>                  conductivity;
       std::vector<double>                  specific_heat;
       std::map<types::boundary_id, double> fixed_temperatures;
+      /** Linear expansion coefficient (1/K), one or one per material. */
+      std::vector<double> thermal_expansion = {0.};
+      /** Heat generated per unit volume (W/m^3), an expression of x, y
+       * (, z), t; "0": none, and no loop for it. */
+      std::string heat_source = "0";
     };
 
     HeatConduction(const Settings &settings, const SceneReader &reader);
@@ -54,6 +68,13 @@ namespace dealmpm
     {
       return {{"temperature", 1}};
     }
+
+    /** Wrap each material with a thermal expansion coefficient > 0 in
+     * ThermallyExpanding; in 2D its model must have constant elastic
+     * constants. */
+    void
+    wrap_materials(MaterialSections<dim> &sections,
+                   SceneReader           &reader) override;
 
     /** The fixed temperatures' ids must be on the grid, and the bodies'
      * materials have their conductivity and specific heat. */
@@ -84,19 +105,22 @@ namespace dealmpm
     std::vector<std::pair<std::string, double>>
     statistics_columns() const override
     {
-      return {{"heat_stored", stored}, {"heat_in", heat_in}};
+      return {{"heat_stored", stored},
+              {"heat_in", heat_in},
+              {"heat_generated", generated}};
     }
 
     std::vector<double>
     saved_state() const override
     {
-      return {heat_in};
+      return {heat_in, generated};
     }
 
     void
     restore_state(const std::vector<double> &state) override
     {
-      heat_in = state.at(0);
+      heat_in   = state.at(0);
+      generated = state.at(1);
     }
 
   private:
@@ -116,16 +140,26 @@ namespace dealmpm
     void
     map_temperature(const EffectContext<dim> &state);
 
+    /** Adds the source's power sum_p N_ip V_p s(x_p, t) to the conducted
+     * heat in 'increment' (before its compress); counts its heat. */
+    void
+    add_source(const EffectContext<dim> &state);
+
     Settings                    settings;
     mutable FunctionParser<dim> initial;
+    FunctionParser<dim>         source;
+    bool                        has_source = false;
+    /** Each material's expanding wrapper, or none. */
+    std::vector<const ThermallyExpanding<dim> *> expanding;
     /** Locally owned nodes on a fixed-temperature boundary, each once. */
     std::vector<std::pair<unsigned int, double>> fixed_nodes;
     std::vector<double>                          mapped_at_fixed;
     NodalVector                                  capacity;
     NodalVector                                  temperature;
     NodalVector                                  increment;
-    mutable double                               stored  = 0;
-    double                                       heat_in = 0;
+    mutable double                               stored    = 0;
+    double                                       heat_in   = 0;
+    double                                       generated = 0;
   };
 
   /** Register "heat conduction" in the effect table: its parameters
