@@ -3,6 +3,7 @@
 #include <dealmpm/transfer/stencil_order.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace dealmpm
@@ -74,13 +75,19 @@ namespace dealmpm
   void
   HeatConduction<dim>::setup(const EffectSetup<dim> &setup, SceneReader &reader)
   {
-    std::map<unsigned int, std::string> listed;
-    for (const auto &[id, value] : settings.fixed_temperatures)
-      listed[id] = std::to_string(value);
-    check_grid_has_ids(reader,
-                       "Fixed temperatures",
-                       listed,
-                       setup.grid.triangulation.get_boundary_ids());
+    for (const auto &[entry, values] :
+         {std::make_pair("Fixed temperatures", &settings.fixed_temperatures),
+          std::make_pair("Heat fluxes", &settings.heat_fluxes),
+          std::make_pair("Convection", &settings.convection)})
+      {
+        std::map<unsigned int, std::string> listed;
+        for (const auto &[id, value] : *values)
+          listed[id] = std::to_string(value);
+        check_grid_has_ids(reader,
+                           entry,
+                           listed,
+                           setup.grid.triangulation.get_boundary_ids());
+      }
     unsigned int needed = 0;
     for (const Body<dim> &body : setup.bodies)
       needed = std::max(needed, body.material + 1);
@@ -106,6 +113,18 @@ namespace dealmpm
       for (const BoundaryNode<dim> &node : boundary_nodes(grid, {id}))
         held[node.local_index] = value;
     fixed_nodes.assign(held.begin(), held.end());
+    // A node's area on each boundary, times the boundary's q or h.
+    for (auto [values, nodes] :
+         {std::make_pair(&settings.heat_fluxes, &flux_nodes),
+          std::make_pair(&settings.convection, &convection_nodes)})
+      {
+        std::map<unsigned int, double> sum;
+        for (const auto &[id, value] : *values)
+          for (const BoundaryNode<dim> &node : boundary_nodes(grid, {id}))
+            if (held.count(node.local_index) == 0) // held: moot
+              sum[node.local_index] += value * node.area.norm();
+        nodes->assign(sum.begin(), sum.end());
+      }
   }
 
   template <int dim>
@@ -142,19 +161,29 @@ namespace dealmpm
     const ParticleSet<dim> &particles = state.particles;
     const Stencil<dim>     &stencil   = state.stencil;
     const unsigned int      T         = particles.layout.offset("temperature");
-    capacity                          = 0;
-    temperature                       = 0;
+    const unsigned int      G = particles.layout.offset("temperature_gradient");
+    const std::vector<Point<dim>> &x = state.grid.node_positions;
+    capacity                         = 0;
+    temperature                      = 0;
     for_each_particle_in_stencil_order(
       state.grid, particles, [&](const std::size_t k, const auto &p, auto &) {
         const auto   props = p.get_properties();
         const double mc =
           props[particles.fields.mass] *
           of_material(settings.specific_heat, particles.material_of(props));
+        // Each node takes T_p + g_p . (x_i - x_c), x_c = sum N_i x_i: a
+        // linear field maps exactly, also at a wall, and sum C_i T_i =
+        // sum m c T_p.
+        const Tensor<1, dim> g = read_vector<dim>(&props[G]);
+        Point<dim>           centre;
+        for (unsigned int e = stencil.begin[k]; e < stencil.begin[k + 1]; ++e)
+          centre += stencil.N[e] * x[stencil.node[e]];
         for (unsigned int e = stencil.begin[k]; e < stencil.begin[k + 1]; ++e)
           {
-            capacity.local_element(stencil.node[e]) += stencil.N[e] * mc;
-            temperature.local_element(stencil.node[e]) +=
-              stencil.N[e] * mc * props[T];
+            const unsigned int i = stencil.node[e];
+            capacity.local_element(i) += stencil.N[e] * mc;
+            temperature.local_element(i) +=
+              stencil.N[e] * mc * (props[T] + g * (x[i] - centre));
           }
       });
     capacity.compress(VectorOperation::add);
@@ -203,6 +232,27 @@ namespace dealmpm
     if (has_source)
       add_source(state);
     increment.compress(VectorOperation::add);
+    add_fluxes(state.time, state.dt);
+    advance_nodes(state.dt);
+  }
+
+  template <int dim>
+  void
+  HeatConduction<dim>::add_fluxes(const double time, const double dt)
+  {
+    const double factor = settings.flux_curve(time + 0.5 * dt);
+    for (const auto &[i, qA] : flux_nodes)
+      if (capacity.local_element(i) > 0)
+        {
+          increment.local_element(i) += factor * qA;
+          heat_in += dt * factor * qA;
+        }
+  }
+
+  template <int dim>
+  void
+  HeatConduction<dim>::advance_nodes(const double dt)
+  {
     // Fixed nodes: what they give the particles beside them and conduct to
     // the free nodes next to them (-dt Q_i) comes from beyond.
     for (unsigned int j = 0; j < fixed_nodes.size(); ++j)
@@ -210,19 +260,40 @@ namespace dealmpm
         const unsigned int i = fixed_nodes[j].first;
         heat_in += capacity.local_element(i) *
                      (fixed_nodes[j].second - mapped_at_fixed[j]) -
-                   state.dt * increment.local_element(i);
+                   dt * increment.local_element(i);
+      }
+    // Convection at the node's new temperature (backward Euler): stable
+    // at any step however little material a wall node holds, and at a
+    // steady state exactly h A (T_a - T_i).
+    for (const auto &[i, hA] : convection_nodes)
+      {
+        const double C = capacity.local_element(i);
+        if (!(C > 0))
+          continue;
+        const double to_ambient =
+          settings.ambient_temperature - temperature.local_element(i);
+        const double dT =
+          dt * (increment.local_element(i) + hA * to_ambient) / (C + dt * hA);
+        heat_in += dt * hA * (to_ambient - dT);
+        increment.local_element(i) = C * dT / dt; // as a power, divided below
       }
     const unsigned int n = increment.locally_owned_size();
     for (unsigned int i = 0; i < n; ++i)
       {
         const double C = capacity.local_element(i);
         increment.local_element(i) =
-          C > 0 ? state.dt * increment.local_element(i) / C : 0.;
+          C > 0 ? dt * increment.local_element(i) / C : 0.;
       }
     for (unsigned int j = 0; j < fixed_nodes.size(); ++j)
       increment.local_element(fixed_nodes[j].first) =
         fixed_nodes[j].second - mapped_at_fixed[j];
     increment.update_ghost_values();
+    // The nodes' new temperature, whose gradient the particles take.
+    for (unsigned int i = 0; i < n; ++i)
+      temperature.local_element(i) += increment.local_element(i);
+    for (unsigned int j = 0; j < fixed_nodes.size(); ++j)
+      temperature.local_element(fixed_nodes[j].first) = fixed_nodes[j].second;
+    temperature.update_ghost_values();
   }
 
   template <int dim>
@@ -250,14 +321,20 @@ namespace dealmpm
   {
     const Stencil<dim> &stencil = state.stencil;
     const unsigned int  T       = particles.layout.offset("temperature");
-    stored                      = 0;
+    const unsigned int  G = particles.layout.offset("temperature_gradient");
+    stored                = 0;
     for_each_particle_in_stencil_order(
       state.grid, particles, [&](const std::size_t k, auto &p, auto &) {
-        auto   props = p.get_properties();
-        double dT    = 0;
+        auto           props = p.get_properties();
+        double         dT    = 0;
+        Tensor<1, dim> g;
         for (unsigned int e = stencil.begin[k]; e < stencil.begin[k + 1]; ++e)
-          dT += stencil.N[e] * increment.local_element(stencil.node[e]);
+          {
+            dT += stencil.N[e] * increment.local_element(stencil.node[e]);
+            g += stencil.grad_N[e] * temperature.local_element(stencil.node[e]);
+          }
         props[T] += dT;
+        write_vector<dim>(&props[G], g);
         const unsigned int m = particles.material_of(props);
         if (!expanding.empty() && expanding[m] != nullptr)
           props[particles.internal_offset[m] + expanding[m]->stretch_index()] +=
@@ -295,6 +372,129 @@ namespace dealmpm
   template class HeatConduction<2>;
   template class HeatConduction<3>;
 
+  namespace
+  {
+    /** 'id: value' pairs with any finite numbers (a flux may be < 0). */
+    std::map<unsigned int, double>
+    id_numbers(const SceneReader &reader, const std::string &entry)
+    {
+      const std::string              expected = "a number (W/m^2)";
+      std::map<unsigned int, double> map;
+      for (const auto &[id, text] : reader.get_id_map(entry, expected))
+        {
+          double value = std::numeric_limits<double>::quiet_NaN();
+          try
+            {
+              value = Utilities::string_to_double(text);
+            }
+          catch (...)
+            {}
+          if (!std::isfinite(value))
+            reader.fail(entry,
+                        "a list of 'id: value' pairs, each id once, value " +
+                          expected);
+          map[id] = value;
+        }
+      return map;
+    }
+
+    /** The entries of section Heat conduction. */
+    void
+    declare_heat_parameters(ParameterHandler &prm)
+    {
+      prm.declare_entry("Initial temperature",
+                        "293.15",
+                        Patterns::Anything(),
+                        "The particles' temperature at the start (K), an "
+                        "expression of x, y (, z).");
+      prm.declare_entry("Conductivity",
+                        "0",
+                        Patterns::List(Patterns::Double(0)),
+                        "k (W/m/K): one value for every material, or one "
+                        "per material in their order.");
+      prm.declare_entry("Specific heat",
+                        "0",
+                        Patterns::List(Patterns::Double(0)),
+                        "c (J/kg/K), the heat capacity per unit mass: one "
+                        "value for every material, or one per material.");
+      prm.declare_entry(
+        "Thermal expansion",
+        "0",
+        Patterns::List(Patterns::Double(0)),
+        "alpha (1/K), the linear thermal expansion coefficient: one value "
+        "for every material, or one per material. A body is stress-free "
+        "at its initial temperature; the stress update divides the "
+        "thermal stretch 1 + alpha (T - T_0) out of F. In 2D (plane "
+        "strain) the held out-of-plane expansion makes it (1 + nu) alpha "
+        "in the plane and lowers sigma_zz by E alpha (T - T_0), nu and E "
+        "of the model's response to a small strain from its initial "
+        "state.");
+      prm.declare_entry("Heat source",
+                        "0",
+                        Patterns::Anything(),
+                        "Heat generated per unit volume (W/m^3), an "
+                        "expression of x, y (, z) and t; 0: none.");
+      prm.declare_entry("Fixed temperatures",
+                        "",
+                        Patterns::Anything(),
+                        "Temperature (K) held on grid boundary ids, e.g. "
+                        "'0: 373.15, 1: 293.15'.");
+      prm.declare_entry("Heat fluxes",
+                        "",
+                        Patterns::Anything(),
+                        "Heat flux into the material (W/m^2, < 0: out) "
+                        "on grid boundary ids, e.g. '2: 1e4', times the "
+                        "Flux curve; where material touches the face.");
+      prm.declare_entry("Flux curve",
+                        "",
+                        Patterns::Anything(),
+                        "Factor on the heat fluxes against time, 't0: "
+                        "f0, t1: f1, ...' (piecewise linear); empty: 1.");
+      prm.declare_entry("Convection",
+                        "",
+                        Patterns::Anything(),
+                        "Convection coefficient h (W/m^2/K) on grid "
+                        "boundary ids, e.g. '3: 25': the face gives h "
+                        "(T_ambient - T) per unit area.");
+      prm.declare_entry("Ambient temperature",
+                        "293.15",
+                        Patterns::Double(),
+                        "T_ambient (K) of the convection.");
+    }
+
+    /** The section's settings, checked (one-line failures). */
+    template <typename HeatSettings>
+    HeatSettings
+    read_heat_settings(SceneReader &reader)
+    {
+      HeatSettings s;
+      s.initial_temperature = reader.handler().get("Initial temperature");
+      s.conductivity        = reader.get_doubles("Conductivity");
+      s.specific_heat       = reader.get_doubles("Specific heat");
+      s.thermal_expansion   = reader.get_doubles("Thermal expansion");
+      s.heat_source         = reader.handler().get("Heat source");
+      if (s.thermal_expansion.empty())
+        reader.fail("Thermal expansion", "one value or one per material");
+      for (const double c : s.specific_heat)
+        if (!(c > 0))
+          reader.fail("Specific heat", "values > 0");
+      if (s.conductivity.empty())
+        reader.fail("Conductivity", "one value or one per material");
+      if (s.specific_heat.empty())
+        reader.fail("Specific heat", "one value or one per material");
+      for (const auto &[id, T] :
+           reader.get_id_nonnegatives("Fixed temperatures"))
+        s.fixed_temperatures[static_cast<types::boundary_id>(id)] = T;
+      for (const auto &[id, q] : id_numbers(reader, "Heat fluxes"))
+        s.heat_fluxes[static_cast<types::boundary_id>(id)] = q;
+      s.flux_curve = LoadCurve::read(reader, "Flux curve");
+      for (const auto &[id, h] : reader.get_id_nonnegatives("Convection"))
+        s.convection[static_cast<types::boundary_id>(id)] = h;
+      s.ambient_temperature = reader.get_double("Ambient temperature");
+      return s;
+    }
+  } // namespace
+
   template <int dim>
   void
   add_heat_conduction_effect(Registry<Effect<dim>> &registry)
@@ -304,66 +504,13 @@ namespace dealmpm
       "temperature carried by the particles and conducted through the "
       "grid (section Heat conduction: Initial temperature, Conductivity, "
       "Specific heat, Thermal expansion, Heat source, Fixed "
-      "temperatures).",
-      [](ParameterHandler &prm) {
-        prm.declare_entry("Initial temperature",
-                          "293.15",
-                          Patterns::Anything(),
-                          "The particles' temperature at the start (K), an "
-                          "expression of x, y (, z).");
-        prm.declare_entry("Conductivity",
-                          "0",
-                          Patterns::List(Patterns::Double(0)),
-                          "k (W/m/K): one value for every material, or one "
-                          "per material in their order.");
-        prm.declare_entry("Specific heat",
-                          "0",
-                          Patterns::List(Patterns::Double(0)),
-                          "c (J/kg/K), the heat capacity per unit mass: one "
-                          "value for every material, or one per material.");
-        prm.declare_entry(
-          "Thermal expansion",
-          "0",
-          Patterns::List(Patterns::Double(0)),
-          "alpha (1/K), the linear thermal expansion coefficient: one value "
-          "for every material, or one per material. A body is stress-free "
-          "at its initial temperature; the stress update divides the "
-          "thermal stretch 1 + alpha (T - T_0) out of F. In 2D (plane "
-          "strain) the held out-of-plane expansion makes it (1 + nu) alpha "
-          "in the plane and lowers sigma_zz by E alpha (T - T_0), nu and E "
-          "of the model's response to a small strain from its initial "
-          "state.");
-        prm.declare_entry("Heat source",
-                          "0",
-                          Patterns::Anything(),
-                          "Heat generated per unit volume (W/m^3), an "
-                          "expression of x, y (, z) and t; 0: none.");
-        prm.declare_entry("Fixed temperatures",
-                          "",
-                          Patterns::Anything(),
-                          "Temperature (K) held on grid boundary ids, e.g. "
-                          "'0: 373.15, 1: 293.15'.");
-      },
+      "temperatures, Heat fluxes, Flux curve, Convection, Ambient "
+      "temperature).",
+      declare_heat_parameters,
       [](SceneReader &reader) -> std::unique_ptr<Effect<dim>> {
-        typename HeatConduction<dim>::Settings s;
-        s.initial_temperature = reader.handler().get("Initial temperature");
-        s.conductivity        = reader.get_doubles("Conductivity");
-        s.specific_heat       = reader.get_doubles("Specific heat");
-        s.thermal_expansion   = reader.get_doubles("Thermal expansion");
-        s.heat_source         = reader.handler().get("Heat source");
-        if (s.thermal_expansion.empty())
-          reader.fail("Thermal expansion", "one value or one per material");
-        for (const double c : s.specific_heat)
-          if (!(c > 0))
-            reader.fail("Specific heat", "values > 0");
-        if (s.conductivity.empty())
-          reader.fail("Conductivity", "one value or one per material");
-        if (s.specific_heat.empty())
-          reader.fail("Specific heat", "one value or one per material");
-        for (const auto &[id, T] :
-             reader.get_id_nonnegatives("Fixed temperatures"))
-          s.fixed_temperatures[static_cast<types::boundary_id>(id)] = T;
-        return std::make_unique<HeatConduction<dim>>(s, reader);
+        return std::make_unique<HeatConduction<dim>>(
+          read_heat_settings<typename HeatConduction<dim>::Settings>(reader),
+          reader);
       });
   }
 

@@ -2,6 +2,7 @@
 
 #include <deal.II/base/function_parser.h>
 
+#include <dealmpm/base/load_curve.h>
 #include <dealmpm/effects/effect.h>
 #include <dealmpm/grid/boundary_nodes.h>
 #include <dealmpm/materials/thermal_expansion.h>
@@ -25,7 +26,8 @@ namespace dealmpm
    *   by T_fixed - T_i (lumped capacity, forward Euler);
    * and after G2P every particle by sum N_ip dT_i, the same increment for
    * every shape function and scheme. A 'Heat source' s(x, t) (W/m^3) adds
-   * sum_p N_ip V_p s(x_p, t) to Q_i.
+   * sum_p N_ip V_p s(x_p, t) to Q_i, a boundary flux q A_i, convection
+   * h A_i (T_ambient - T_i) (A_i the node's share of the faces' area).
    *
    * A material with a 'Thermal expansion' alpha > 0 is wrapped in
    * ThermallyExpanding (materials/thermal_expansion.h): each temperature
@@ -54,6 +56,14 @@ namespace dealmpm
       std::vector<double>                  conductivity;
       std::vector<double>                  specific_heat;
       std::map<types::boundary_id, double> fixed_temperatures;
+      /** Heat flux into the material (W/m^2) on grid boundary ids, times
+       * flux_curve(t). */
+      std::map<types::boundary_id, double> heat_fluxes;
+      LoadCurve                            flux_curve;
+      /** Convection coefficients (W/m^2/K) on grid boundary ids, to the
+       * ambient temperature. */
+      std::map<types::boundary_id, double> convection;
+      double                               ambient_temperature = 293.15;
       /** Linear expansion coefficient (1/K), one or one per material. */
       std::vector<double> thermal_expansion = {0.};
       /** Heat generated per unit volume (W/m^3), an expression of x, y
@@ -66,7 +76,7 @@ namespace dealmpm
     std::vector<FieldDescription>
     particle_fields() const override
     {
-      return {{"temperature", 1}};
+      return {{"temperature", 1}, {"temperature_gradient", dim}};
     }
 
     /** Wrap each material with a thermal expansion coefficient > 0 in
@@ -145,6 +155,18 @@ namespace dealmpm
     void
     add_source(const EffectContext<dim> &state);
 
+    /** Adds the boundary fluxes' power (times the curve at mid-step) to
+     * the conducted heat in 'increment' (owned nodes, after its compress)
+     * at nodes that hold material; counts it in heat_in. */
+    void
+    add_fluxes(const double time, const double dt);
+
+    /** Turns the nodes' power in 'increment' into their temperature
+     * increments, with convection and the held nodes, counts what the
+     * boundaries gave, and sets 'temperature' to the nodes' new one. */
+    void
+    advance_nodes(const double dt);
+
     Settings                    settings;
     mutable FunctionParser<dim> initial;
     FunctionParser<dim>         source;
@@ -154,6 +176,11 @@ namespace dealmpm
     /** Locally owned nodes on a fixed-temperature boundary, each once. */
     std::vector<std::pair<unsigned int, double>> fixed_nodes;
     std::vector<double>                          mapped_at_fixed;
+    /** Locally owned nodes on the flux (q A) and convection (h A)
+     * boundaries, A a node's share of the faces' area; held nodes have
+     * no convection. */
+    std::vector<std::pair<unsigned int, double>> flux_nodes;
+    std::vector<std::pair<unsigned int, double>> convection_nodes;
     NodalVector                                  capacity;
     NodalVector                                  temperature;
     NodalVector                                  increment;
