@@ -1,5 +1,7 @@
 #include <dealmpm/effects/expressions.h>
 #include <dealmpm/effects/heat_conduction.h>
+#include <dealmpm/materials/damaged_material.h>
+#include <dealmpm/materials/johnson_cook.h>
 #include <dealmpm/transfer/stencil_order.h>
 
 #include <algorithm>
@@ -43,6 +45,22 @@ namespace dealmpm
                   "one value for every material, or one per material (" +
                     std::to_string(n) + ")");
     expanding.assign(n, nullptr);
+    working.assign(n, nullptr);
+    johnson_cook_temperature.assign(n, -1);
+    for (unsigned int m = 0; m < n; ++m)
+      {
+        const Material<dim> *model = sections.materials[m].get();
+        if (settings.taylor_quinney > 0 && model->dissipates())
+          working[m] = model;
+        heats_by_work = heats_by_work || working[m] != nullptr;
+        // Johnson-Cook (also damaged) keeps its temperature after the
+        // shared variables: its own adiabatic heating gives way to ours.
+        if (const auto *damaged =
+              dynamic_cast<const DamagedMaterial<dim> *>(model))
+          model = &damaged->inner_model();
+        if (dynamic_cast<const JohnsonCook<dim> *>(model) != nullptr)
+          johnson_cook_temperature[m] = JohnsonCook<dim>::model_index;
+      }
     std::vector<std::string> models;
     for (unsigned int m = 0; m < n; ++m)
       {
@@ -133,7 +151,21 @@ namespace dealmpm
   {
     const unsigned int T = particles.layout.offset("temperature");
     for (auto &p : particles.handler)
-      p.get_properties()[T] = initial.value(p.get_location());
+      {
+        const auto         props    = p.get_properties();
+        const unsigned int m        = particles.material_of(props);
+        props[T]                    = initial.value(p.get_location());
+        const unsigned int internal = particles.internal_offset[m];
+        if (working.empty()) // no materials were offered to wrap
+          continue;
+        if (johnson_cook_temperature[m] >= 0)
+          props[internal + johnson_cook_temperature[m]] = props[T];
+        if (working[m] != nullptr)
+          props[particles.layout.offset("heated_work")] =
+            working[m]->dissipated_energy_density(
+              ArrayView<const double>(&props[internal],
+                                      particles.n_internal[m]));
+      }
     stored = heat_of(particles);
   }
 
@@ -333,9 +365,15 @@ namespace dealmpm
             dT += stencil.N[e] * increment.local_element(stencil.node[e]);
             g += stencil.grad_N[e] * temperature.local_element(stencil.node[e]);
           }
+        const unsigned int m = particles.material_of(props);
+        if (heats_by_work && working[m] != nullptr)
+          dT += heat_by_work(props, particles, m);
         props[T] += dT;
         write_vector<dim>(&props[G], g);
-        const unsigned int m = particles.material_of(props);
+        if (!johnson_cook_temperature.empty() &&
+            johnson_cook_temperature[m] >= 0)
+          props[particles.internal_offset[m] + johnson_cook_temperature[m]] =
+            props[T];
         if (!expanding.empty() && expanding[m] != nullptr)
           props[particles.internal_offset[m] + expanding[m]->stretch_index()] +=
             expanding[m]->stretch_per_kelvin() * dT;
@@ -344,6 +382,24 @@ namespace dealmpm
           of_material(settings.specific_heat, particles.material_of(props)) *
           props[T];
       });
+  }
+
+  template <int dim>
+  double
+  HeatConduction<dim>::heat_by_work(const ArrayView<double> &props,
+                                    const ParticleSet<dim>  &particles,
+                                    const unsigned int       m)
+  {
+    double      &counted = props[particles.layout.offset("heated_work")];
+    const double work    = working[m]->dissipated_energy_density(
+      ArrayView<const double>(&props[particles.internal_offset[m]],
+                              particles.n_internal[m]));
+    const double heat = settings.taylor_quinney * (work - counted) *
+                        props[particles.fields.initial_volume];
+    counted = work;
+    generated += heat;
+    return heat / (props[particles.fields.mass] *
+                   of_material(settings.specific_heat, m));
   }
 
   template <int dim>
@@ -434,6 +490,13 @@ namespace dealmpm
                         Patterns::Anything(),
                         "Heat generated per unit volume (W/m^3), an "
                         "expression of x, y (, z) and t; 0: none.");
+      prm.declare_entry(
+        "Taylor-Quinney coefficient",
+        "0.9",
+        Patterns::Double(0, 1),
+        "The fraction of the work a material dissipates (plastic, "
+        "viscous) that heats it, in [0, 1]. Johnson-Cook then takes its "
+        "temperature from here (its own heating constants go unused).");
       prm.declare_entry("Fixed temperatures",
                         "",
                         Patterns::Anything(),
@@ -473,6 +536,7 @@ namespace dealmpm
       s.specific_heat       = reader.get_doubles("Specific heat");
       s.thermal_expansion   = reader.get_doubles("Thermal expansion");
       s.heat_source         = reader.handler().get("Heat source");
+      s.taylor_quinney      = reader.get_double("Taylor-Quinney coefficient");
       if (s.thermal_expansion.empty())
         reader.fail("Thermal expansion", "one value or one per material");
       for (const double c : s.specific_heat)

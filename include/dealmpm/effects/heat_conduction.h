@@ -69,6 +69,9 @@ namespace dealmpm
       /** Heat generated per unit volume (W/m^3), an expression of x, y
        * (, z), t; "0": none, and no loop for it. */
       std::string heat_source = "0";
+      /** The fraction of the work a material dissipates (plastic,
+       * viscous) that heats it. */
+      double taylor_quinney = 0.9;
     };
 
     HeatConduction(const Settings &settings, const SceneReader &reader);
@@ -76,12 +79,17 @@ namespace dealmpm
     std::vector<FieldDescription>
     particle_fields() const override
     {
-      return {{"temperature", 1}, {"temperature_gradient", dim}};
+      std::vector<FieldDescription> fields = {{"temperature", 1},
+                                              {"temperature_gradient", dim}};
+      if (heats_by_work)
+        fields.push_back({"heated_work", 1});
+      return fields;
     }
 
-    /** Wrap each material with a thermal expansion coefficient > 0 in
-     * ThermallyExpanding; in 2D its model must have constant elastic
-     * constants. */
+    /** Note which materials heat by the work they dissipate (Johnson-Cook
+     * then takes its temperature from here), and wrap each material with
+     * a thermal expansion coefficient > 0 in ThermallyExpanding; in 2D its
+     * model must have an elastic response. */
     void
     wrap_materials(MaterialSections<dim> &sections,
                    SceneReader           &reader) override;
@@ -103,7 +111,8 @@ namespace dealmpm
     add_nodal_forces(const EffectContext<dim> &state,
                      NodalFields<dim>         &fields) override;
 
-    /** Gives each particle its nodes' temperature increments. */
+    /** Gives each particle its nodes' temperature increments and the
+     * Taylor-Quinney share of the work it dissipated in the step. */
     void
     after_g2p(const EffectContext<dim> &state,
               ParticleSet<dim>         &particles) override;
@@ -141,6 +150,13 @@ namespace dealmpm
       return values.size() == 1 ? values[0] : values[m];
     }
 
+    /** The temperature rise of particle @p props (material @p m) by the
+     * work it dissipated since the last call, counted as generated. */
+    double
+    heat_by_work(const ArrayView<double> &props,
+                 const ParticleSet<dim>  &particles,
+                 const unsigned int       m);
+
     /** The particles' heat sum m c T on this rank. */
     double
     heat_of(const ParticleSet<dim> &particles) const;
@@ -171,6 +187,12 @@ namespace dealmpm
     mutable FunctionParser<dim> initial;
     FunctionParser<dim>         source;
     bool                        has_source = false;
+    /** Each material's model whose dissipated work heats it (before any
+     * wrapper of this effect), or none; where a Johnson-Cook model keeps
+     * its temperature among its internal variables, or -1. */
+    std::vector<const Material<dim> *> working;
+    std::vector<int>                   johnson_cook_temperature;
+    bool                               heats_by_work = false;
     /** Each material's expanding wrapper, or none. */
     std::vector<const ThermallyExpanding<dim> *> expanding;
     /** Locally owned nodes on a fixed-temperature boundary, each once. */

@@ -85,9 +85,11 @@ namespace dealmpm
     std::vector<FieldDescription>
     model_variables() const override
     {
+      // Not "temperature": heat conduction's particle field, which this
+      // one follows when conduction is listed.
       if (jc.damage_indicator)
-        return {{"temperature", 1}, {"damage", 1}};
-      return {{"temperature", 1}};
+        return {{"jc_temperature", 1}, {"damage", 1}};
+      return {{"jc_temperature", 1}};
     }
 
     std::array<double, 2>
