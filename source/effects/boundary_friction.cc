@@ -45,6 +45,7 @@ namespace dealmpm
     // Per node, what the slip condition took off the normal velocity (> 0
     // where it pushed, < 0 where it held a node that was leaving the wall).
     pressed.assign(nodes.size(), 0.);
+    dissipated.clear();
     std::map<types::boundary_id, std::array<double, 2>> sums; // net, pushes
     for (const auto &item : coefficients)
       sums[item.first] = {{0., 0.}};
@@ -96,6 +97,7 @@ namespace dealmpm
         // gave the node within the step and friction took back: counted
         // as work, it grew every step of a block that never moved.
         this->work += m * (change * (v + change));
+        dissipated.emplace_back(i, -m * (change * (v + change)));
         for (unsigned int d = 0; d < dim; ++d)
           {
             fields.velocity[d].local_element(i) += change[d];

@@ -364,12 +364,16 @@ namespace dealmpm
     if (separation_check > 0)
       for (unsigned int b = 0; b < n_bodies; ++b)
         volumes.push_back(&set.per_body("contact volume", b, 0));
+    dissipated.clear();
     for (unsigned int i = 0; i < n_owned; ++i)
       {
         bodies_at(set, i, threshold, present);
         if (present.size() < 2 || !filled(volumes, present, i))
           continue;
+        const double before = taken;
         correct_node(set, i, present, taken, by_friction);
+        if (taken != before)
+          dissipated.emplace_back(i, before - taken);
       }
     return {taken, by_friction};
   }

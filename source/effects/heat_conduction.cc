@@ -1,3 +1,4 @@
+#include <dealmpm/effects/dissipates_at_nodes.h>
 #include <dealmpm/effects/expressions.h>
 #include <dealmpm/effects/heat_conduction.h>
 #include <dealmpm/materials/damaged_material.h>
@@ -351,6 +352,7 @@ namespace dealmpm
   HeatConduction<dim>::after_g2p(const EffectContext<dim> &state,
                                  ParticleSet<dim>         &particles)
   {
+    add_friction_heat(state);
     const Stencil<dim> &stencil = state.stencil;
     const unsigned int  T       = particles.layout.offset("temperature");
     const unsigned int  G = particles.layout.offset("temperature_gradient");
@@ -382,6 +384,35 @@ namespace dealmpm
           of_material(settings.specific_heat, particles.material_of(props)) *
           props[T];
       });
+  }
+
+  template <int dim>
+  void
+  HeatConduction<dim>::add_friction_heat(const EffectContext<dim> &state)
+  {
+    bool any = false;
+    for (const auto &effect : state.effects)
+      if (const auto *source =
+            dynamic_cast<const DissipatesAtNodes *>(effect.get()))
+        {
+          any = true;
+          for (const auto &[i, work] : source->dissipated_at_nodes())
+            {
+              const double C = capacity.local_element(i);
+              if (!(C > 0))
+                continue;
+              const double heat = settings.friction_heat * work;
+              increment.local_element(i) += heat / C;
+              temperature.local_element(i) += heat / C;
+              generated += heat;
+            }
+        }
+    // The same effects on every rank: all of them exchange, or none.
+    if (any)
+      {
+        increment.update_ghost_values();
+        temperature.update_ghost_values();
+      }
   }
 
   template <int dim>
@@ -497,6 +528,14 @@ namespace dealmpm
         "The fraction of the work a material dissipates (plastic, "
         "viscous) that heats it, in [0, 1]. Johnson-Cook then takes its "
         "temperature from here (its own heating constants go unused).");
+      prm.declare_entry(
+        "Friction heat fraction",
+        "1",
+        Patterns::Double(0, 1),
+        "The share of the work friction dissipates (the effects 'boundary "
+        "friction' and 'frictional contact') that heats the material at "
+        "the nodes where it slides, in [0, 1]; the rest goes into the "
+        "walls.");
       prm.declare_entry("Fixed temperatures",
                         "",
                         Patterns::Anything(),
@@ -537,6 +576,7 @@ namespace dealmpm
       s.thermal_expansion   = reader.get_doubles("Thermal expansion");
       s.heat_source         = reader.handler().get("Heat source");
       s.taylor_quinney      = reader.get_double("Taylor-Quinney coefficient");
+      s.friction_heat       = reader.get_double("Friction heat fraction");
       if (s.thermal_expansion.empty())
         reader.fail("Thermal expansion", "one value or one per material");
       for (const double c : s.specific_heat)

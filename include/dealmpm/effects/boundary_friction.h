@@ -1,5 +1,6 @@
 #pragma once
 
+#include <dealmpm/effects/dissipates_at_nodes.h>
 #include <dealmpm/effects/effect_with_work.h>
 #include <dealmpm/grid/boundary_nodes.h>
 
@@ -34,7 +35,7 @@ namespace dealmpm
    * (wants_pic()).
    */
   template <int dim>
-  class BoundaryFriction : public EffectWithWork<dim>
+  class BoundaryFriction : public EffectWithWork<dim>, public DissipatesAtNodes
   {
   public:
     bool

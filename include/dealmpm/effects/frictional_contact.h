@@ -1,5 +1,6 @@
 #pragma once
 
+#include <dealmpm/effects/dissipates_at_nodes.h>
 #include <dealmpm/effects/effect.h>
 
 #include <map>
@@ -32,7 +33,7 @@ namespace dealmpm
    * otherwise (its friction part also alone, friction_work()).
    */
   template <int dim>
-  class FrictionalContact : public Effect<dim>
+  class FrictionalContact : public Effect<dim>, public DissipatesAtNodes
   {
   public:
     /** Contact forces between bodies are equal and opposite. */

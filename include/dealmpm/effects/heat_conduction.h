@@ -72,6 +72,9 @@ namespace dealmpm
       /** The fraction of the work a material dissipates (plastic,
        * viscous) that heats it. */
       double taylor_quinney = 0.9;
+      /** The share of the work friction dissipates (walls, contact) that
+       * heats the material; the rest goes into the walls. */
+      double friction_heat = 1;
     };
 
     HeatConduction(const Settings &settings, const SceneReader &reader);
@@ -149,6 +152,12 @@ namespace dealmpm
     {
       return values.size() == 1 ? values[0] : values[m];
     }
+
+    /** The heat of the work the effects dissipated at nodes in the step
+     * (DissipatesAtNodes: friction) into the nodes' increments and new
+     * temperatures, counted as generated. */
+    void
+    add_friction_heat(const EffectContext<dim> &state);
 
     /** The temperature rise of particle @p props (material @p m) by the
      * work it dissipated since the last call, counted as generated. */
