@@ -1,7 +1,7 @@
 // Thermal expansion (heat conduction's 'Thermal expansion', issue 37): a
 // block heated uniformly by a 'Heat source' from T0 = 0 by about 100 K
 // (alpha = 1e-5: a thermal strain of 1e-3), slowly and smoothly, s(t) =
-// s0 (1 - cos(2 pi t / t_h)) over t_h = 200 wave transits, so that it stays
+// s0 (1 - cos(2 pi t / t_h)) over t_h = 100 wave transits, so that it stays
 // in equilibrium; no conduction is needed (uniform T). Against the closed
 // forms of small-strain thermoelasticity (E = 1e6 Pa, nu = 0.3), dT the
 // particles' mean temperature:
@@ -14,7 +14,7 @@
 //   plane in 2D, unstressed, also while it moves.
 // The tolerance, 1 % of E alpha dT, is the small-strain forms' own error
 // (the thermal strain, 1e-3, times a few) with the ramp's left-over
-// vibration (a smooth ramp over 200 transits leaves < 1e-4).
+// vibration (a smooth ramp over 100 transits leaves < 1e-4).
 // The energy balance closes: the walls do no work, so the stored energy,
 // the kinetic energy and the stress's work on the thermal stretch
 // (dissipated_work) sum to zero, within 1 % of the stored energy.
@@ -34,9 +34,9 @@ namespace
 {
   constexpr double E = 1e6, nu = 0.3, rho = 1000, alpha = 1e-5;
   // The P-wave speed sqrt(E (1 - nu) / ((1 + nu) (1 - 2 nu)) / rho), 36.7
-  // m/s: 200 transits of the unit block.
+  // m/s: 100 transits of the unit block.
   const double c_p = std::sqrt(E * (1 - nu) / ((1 + nu) * (1 - 2 * nu)) / rho);
-  const double t_heat        = 200 / c_p;
+  const double t_heat        = 100 / c_p;
   constexpr double dT_target = 100;
 
   /** A heated block: its grid, walls, body and method. */
