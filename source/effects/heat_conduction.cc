@@ -124,6 +124,9 @@ namespace dealmpm
   void
   HeatConduction<dim>::grid_changed(const BackgroundGrid<dim> &grid)
   {
+    h_min = std::numeric_limits<double>::max();
+    for (const GridCell<dim> &cell : grid.cells)
+      h_min = std::min(h_min, cell.h);
     capacity.reinit(grid.partitioner);
     temperature.reinit(grid.partitioner);
     increment.reinit(grid.partitioner);
@@ -353,6 +356,7 @@ namespace dealmpm
                                  ParticleSet<dim>         &particles)
   {
     add_friction_heat(state);
+    largest_diffusivity         = 0;
     const Stencil<dim> &stencil = state.stencil;
     const unsigned int  T       = particles.layout.offset("temperature");
     const unsigned int  G = particles.layout.offset("temperature_gradient");
@@ -379,10 +383,10 @@ namespace dealmpm
         if (!expanding.empty() && expanding[m] != nullptr)
           props[particles.internal_offset[m] + expanding[m]->stretch_index()] +=
             expanding[m]->stretch_per_kelvin() * dT;
-        stored +=
-          props[particles.fields.mass] *
-          of_material(settings.specific_heat, particles.material_of(props)) *
-          props[T];
+        stored += props[particles.fields.mass] *
+                  of_material(settings.specific_heat, m) * props[T];
+        largest_diffusivity =
+          std::max(largest_diffusivity, diffusivity_of(props, particles, m));
       });
   }
 
@@ -435,25 +439,33 @@ namespace dealmpm
 
   template <int dim>
   double
-  HeatConduction<dim>::signal_rate(const ParticleSet<dim>    &particles,
-                                   const BackgroundGrid<dim> &grid) const
+  HeatConduction<dim>::diffusivity_of(const ArrayView<const double> &props,
+                                      const ParticleSet<dim>        &particles,
+                                      const unsigned int             m) const
   {
-    double h = std::numeric_limits<double>::max();
-    for (const GridCell<dim> &cell : grid.cells)
-      h = std::min(h, cell.h);
-    double rate = 0;
-    for (const auto &p : particles.handler)
+    return of_material(settings.conductivity, m) *
+           current_volume<dim>(&props[0], particles.fields) /
+           (props[particles.fields.mass] *
+            of_material(settings.specific_heat, m));
+  }
+
+  template <int dim>
+  double
+  HeatConduction<dim>::signal_rate(const ParticleSet<dim> &particles,
+                                   const BackgroundGrid<dim> & /*grid*/) const
+  {
+    // After a step, after_g2p has found the largest diffusivity.
+    if (largest_diffusivity < 0)
       {
-        const auto         props = p.get_properties();
-        const unsigned int m     = particles.material_of(props);
-        const double       rho   = props[particles.fields.mass] /
-                           current_volume<dim>(&props[0], particles.fields);
-        rate =
-          std::max(rate,
-                   2 * dim * of_material(settings.conductivity, m) /
-                     (rho * of_material(settings.specific_heat, m) * h * h));
+        largest_diffusivity = 0;
+        for (const auto &p : particles.handler)
+          largest_diffusivity =
+            std::max(largest_diffusivity,
+                     diffusivity_of(p.get_properties(),
+                                    particles,
+                                    particles.material_of(p.get_properties())));
       }
-    return rate;
+    return 2 * dim * largest_diffusivity / (h_min * h_min);
   }
 
   template class HeatConduction<2>;

@@ -166,6 +166,12 @@ namespace dealmpm
                  const ParticleSet<dim>  &particles,
                  const unsigned int       m);
 
+    /** k / (rho c) of particle @p props of material @p m. */
+    double
+    diffusivity_of(const ArrayView<const double> &props,
+                   const ParticleSet<dim>        &particles,
+                   const unsigned int             m) const;
+
     /** The particles' heat sum m c T on this rank. */
     double
     heat_of(const ParticleSet<dim> &particles) const;
@@ -215,9 +221,13 @@ namespace dealmpm
     NodalVector                                  capacity;
     NodalVector                                  temperature;
     NodalVector                                  increment;
-    mutable double                               stored    = 0;
-    double                                       heat_in   = 0;
-    double                                       generated = 0;
+    mutable double                               stored = 0;
+    /** The smallest cell size; the particles' largest k / (rho c), from
+     * the last after_g2p (< 0: not yet, signal_rate() finds it). */
+    double         h_min               = 1;
+    mutable double largest_diffusivity = -1;
+    double         heat_in             = 0;
+    double         generated           = 0;
   };
 
   /** Register "heat conduction" in the effect table: its parameters
