@@ -278,6 +278,14 @@ expect 2 "command line: -s 'Body 1/Shape=bal': expected one of 'box', 'ball', 'c
 expect 2 "command line: -s 'Time/Frobnicate=1': 'Time/Frobnicate' is not an entry of this scene$" "$scene" "${s[@]}" -s "Time/Frobnicate=1"
 expect 2 "command line: -s 'Material 1/linear elastic/Stiffness=1': 'Material 1/linear elastic/Stiffness' is not an entry of this scene$" "$scene" "${s[@]}" -s "Material 1/linear elastic/Stiffness=1"
 touch afile
+# Heat conduction's entries (issue 37).
+heat=(-s "Effects=heat conduction" -s "Heat conduction/Specific heat=1")
+expect 2 "Heat fluxes=0: abc'.*value a number" "$scene" "${s[@]}" "${heat[@]}" -s "Heat conduction/Heat fluxes=0: abc"
+expect 2 "Thermal expansion=-1'.*numbers >= 0" "$scene" "${s[@]}" "${heat[@]}" -s "Heat conduction/Thermal expansion=-1"
+expect 2 "Taylor-Quinney coefficient=2'.*from 0 to 1" "$scene" "${s[@]}" "${heat[@]}" -s "Heat conduction/Taylor-Quinney coefficient=2"
+expect 2 "Convection=9: 1'.*boundary ids the grid has" "$scene" "${s[@]}" "${heat[@]}" -s "Heat conduction/Convection=9: 1"
+expect 2 "Heat source=sin\('.*expression of x,y,t" "$scene" "${s[@]}" "${heat[@]}" -s "Heat conduction/Heat source=sin("
+expect 2 "Flux curve=1: 2, 0: 1'.*increasing times" "$scene" "${s[@]}" "${heat[@]}" -s "Heat conduction/Flux curve=1: 2, 0: 1"
 expect 2 "Output/Directory.*expected a folder that can be created and written" "$scene" -s "Output/Directory=afile/sub"
 # The same under MPI must not hang (only rank 0 makes folders).
 if command -v mpirun > /dev/null; then
