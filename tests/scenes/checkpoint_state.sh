@@ -4,7 +4,8 @@
 # and every particle of the final particle CSV, bit for bit): the
 # checkpoint holds all the state of the methods and effects each case
 # uses (APIC's matrices, Newmark's accelerations and last step, the
-# frictional contact's and boundary friction's work, the rigid body's
+# frictional contact's and boundary friction's work, heat conduction's
+# temperatures and heat, the rigid body's
 # motion, damage and plastic internal variables, the exact solution's
 # error, the rotating frame's, local damping's, cpGIMP and CPDI domains, the
 # B-spline's grid, 3D, FEM regions bonded and in contact; an adaptive grid
@@ -48,6 +49,9 @@ resumes_exactly contact 0 "$prm/colliding_disks.prm" -s "Effects=frictional cont
   -s "MPM/Velocity update=PIC"
 resumes_exactly cpdi 0 "$prm/colliding_disks.prm" -s "MPM/Shape function=CPDI"
 resumes_exactly incline 0 "$prm/incline_block.prm"
+# Heat: temperatures and their gradients, friction heating, expansion.
+resumes_exactly heat 0 "$prm/incline_block.prm" -s "Effects=gravity, boundary friction, heat conduction" \
+  -s "Heat conduction/Specific heat=500" -s "Heat conduction/Conductivity=50" -s "Heat conduction/Thermal expansion=1e-4"
 resumes_exactly punch 0 "$prm/punch.prm"
 resumes_exactly projectile 0 "$prm/projectile_plate.prm"
 resumes_exactly centrifuge 0 "$prm/centrifuge_slope.prm"

@@ -132,10 +132,13 @@ namespace dealmpm
               {"heat_generated", generated}};
     }
 
+    /** The boundaries' and the sources' heat, and the heat stored (this
+     * rank's shares): a resumed run's first row has them before its
+     * first sweep. */
     std::vector<double>
     saved_state() const override
     {
-      return {heat_in, generated};
+      return {heat_in, generated, stored};
     }
 
     void
@@ -143,6 +146,7 @@ namespace dealmpm
     {
       heat_in   = state.at(0);
       generated = state.at(1);
+      stored    = state.at(2);
     }
 
   private:
