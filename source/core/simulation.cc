@@ -156,7 +156,12 @@ namespace dealmpm
   {
     if (!run_settings.time.cfl_time_step)
       return run_settings.time.fixed_time_step;
-    AssertThrow(max_signal_rate > 0, ExcInternalError());
+    // No particle and no FEM region sets a rate: all have left the grid
+    // or were removed (run() says so before it asks).
+    if (!(max_signal_rate > 0))
+      throw RunError(step_and_time(loop.step, loop.time) +
+                     ": no particles are left in the grid to set the time "
+                     "step");
     return run_settings.time.cfl_number / max_signal_rate;
   }
 

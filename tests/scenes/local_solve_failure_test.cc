@@ -110,3 +110,27 @@ TEST(LocalSolveFailure, StopsWithTheMaterialAndItsState)
       EXPECT_NE(what.find("F = "), std::string::npos) << what;
     }
 }
+
+// Every particle leaves the grid (a block thrown at 100 m/s towards an
+// open side): the next call for a time step says so in one RunError,
+// with the step and time, not deal.II's internal-error message (the
+// program's run() says the same before it asks).
+TEST(LocalSolveFailure, NoParticlesLeftIsARunError)
+{
+  auto simulation =
+    test::make_simulation<2>("subsection Body 1\n set Upper corner = 0.2, 0.2\n"
+                             " set Velocity = -100, 0\nend\n");
+  try
+    {
+      for (unsigned int s = 0; s < 50; ++s)
+        simulation->advance(simulation->time_step());
+      FAIL() << "the run went on with no particles";
+    }
+  catch (const RunError &e)
+    {
+      const std::string what = e.what();
+      std::cout << what << std::endl;
+      EXPECT_NE(what.find("no particles are left"), std::string::npos) << what;
+      EXPECT_NE(what.find("step "), std::string::npos) << what;
+    }
+}
