@@ -219,15 +219,6 @@ namespace dealmpm
                               effect_names,
                               bodies,
                               shape.n_fem_regions});
-    if (shape.n_fem_regions > 0 &&
-        std::find(effect_names.begin(),
-                  effect_names.end(),
-                  "heat conduction") != effect_names.end())
-      warn("heat in FEM regions",
-           reader.file_name() +
-             ": 'heat conduction' acts on the particles only: FEM regions "
-             "neither conduct, heat nor expand, and bonded interfaces pass "
-             "no heat (see doc/guide/limits.md)");
   }
 
   template <int dim>

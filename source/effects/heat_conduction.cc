@@ -222,6 +222,8 @@ namespace dealmpm
               stencil.N[e] * mc * (props[T] + g * (x[i] - centre));
           }
       });
+    for (const HeatPartner<dim> *partner : partners)
+      partner->add_capacity(capacity, temperature);
     capacity.compress(VectorOperation::add);
     temperature.compress(VectorOperation::add);
     const unsigned int n = capacity.locally_owned_size();
@@ -243,8 +245,8 @@ namespace dealmpm
 
   template <int dim>
   void
-  HeatConduction<dim>::add_nodal_forces(const EffectContext<dim> &state,
-                                        NodalFields<dim> & /*fields*/)
+  HeatConduction<dim>::after_grid_update(const EffectContext<dim> &state,
+                                         NodalFields<dim> & /*fields*/)
   {
     map_temperature(state);
     const ParticleSet<dim> &particles = state.particles;
@@ -267,9 +269,18 @@ namespace dealmpm
       });
     if (has_source)
       add_source(state);
+    for (const HeatPartner<dim> *partner : partners)
+      partner->add_power(increment);
     increment.compress(VectorOperation::add);
     add_fluxes(state.time, state.dt);
     advance_nodes(state.dt);
+    for (HeatPartner<dim> *partner : partners)
+      {
+        const auto flows =
+          partner->advance(increment, temperature, state.grid.comm, state.dt);
+        heat_in += flows.given;
+        generated += flows.generated;
+      }
   }
 
   template <int dim>
@@ -388,6 +399,8 @@ namespace dealmpm
         largest_diffusivity =
           std::max(largest_diffusivity, diffusivity_of(props, particles, m));
       });
+    for (const HeatPartner<dim> *partner : partners)
+      stored += partner->stored_heat();
   }
 
   template <int dim>
@@ -465,7 +478,10 @@ namespace dealmpm
                                     particles,
                                     particles.material_of(p.get_properties())));
       }
-    return 2 * dim * largest_diffusivity / (h_min * h_min);
+    double rate = 2 * dim * largest_diffusivity / (h_min * h_min);
+    for (const HeatPartner<dim> *partner : partners)
+      rate = std::max(rate, partner->signal_rate());
+    return rate;
   }
 
   template class HeatConduction<2>;

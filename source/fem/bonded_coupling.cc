@@ -57,10 +57,9 @@ namespace dealmpm
   std::vector<double>
   BondedCoupling<dim>::node_values() const
   {
-    // x, m, m v, f (and B) per node.
-    const unsigned int  n_values = 3 * dim + 1 + (affine ? dim * dim : 0);
+    // x, m, m v, f (and B, and the heat) per node.
     std::vector<double> mine;
-    mine.reserve(local.size() * n_values);
+    mine.reserve(local.size() * n_values());
     for (const unsigned int k : local)
       {
         const auto          &node = region.get_nodes()[k];
@@ -79,6 +78,13 @@ namespace dealmpm
               for (unsigned int c = 0; c < dim; ++c)
                 mine.push_back(B[c][j]);
           }
+        if (heat)
+          {
+            const double C = region.heat_capacity_of(node);
+            mine.push_back(C);
+            mine.push_back(C * region.temperature_of(node));
+            mine.push_back(region.conducted_heat_of(node));
+          }
       }
     return mine;
   }
@@ -88,8 +94,7 @@ namespace dealmpm
   BondedCoupling<dim>::deposit(const BackgroundGrid<dim> &grid,
                                NodalFieldSet<dim>        &set)
   {
-    const unsigned int n_values = 3 * dim + 1 + (affine ? dim * dim : 0);
-    points.gather_and_place(grid, node_values(), n_values);
+    points.gather_and_place(grid, node_values(), n_values());
     add_to(set.core, grid);
     if (set.has_body_fields())
       add_to(set.body[body], grid);

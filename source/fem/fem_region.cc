@@ -126,6 +126,15 @@ namespace dealmpm
       "region's current surface); with the 'frictional contact' effect, "
       "each body meets the region on its own. Needs 'MPM/Stress update = "
       "USL'.");
+    prm.declare_entry(
+      "Fixed temperatures",
+      "",
+      Patterns::Anything(),
+      "With the effect 'heat conduction': temperature (K) held on boundary "
+      "ids of the region's mesh, e.g. '0: 373.15'. The region conducts with "
+      "its material's Conductivity and Specific heat (section Heat "
+      "conduction) from its Initial temperature, and its bonded boundaries "
+      "pass heat to the MPM body.");
   }
 
   namespace
@@ -247,6 +256,8 @@ namespace dealmpm
                         " is)");
         s.contact[id] = mu;
       }
+    for (const auto &[id, T] : reader.get_id_nonnegatives("Fixed temperatures"))
+      s.fixed_temperatures[static_cast<types::boundary_id>(id)] = T;
     return s;
   }
 
@@ -273,6 +284,7 @@ namespace dealmpm
       check_ids(reader, "Traction", s.conditions.traction, ids);
       check_ids(reader, "Bonded boundaries", s.bonded_to, ids);
       check_ids(reader, "Contact boundaries", s.contact, ids);
+      check_ids(reader, "Fixed temperatures", s.fixed_temperatures, ids);
       std::map<types::boundary_id, int> shaken;
       for (const types::boundary_id id : s.conditions.shaken)
         shaken[id] = 0;
@@ -356,6 +368,44 @@ namespace dealmpm
           reader.fail("Bonded boundaries", why.str());
         }
     }
+
+    /** The region's heat, with the effect @p heat (or none: then no
+     * fixed temperatures). */
+    template <int dim>
+    void
+    make_region_heat(const SceneReader         &reader,
+                     FemRegion<dim>            &region,
+                     const HeatConduction<dim> *heat)
+    {
+      const FemRegionSettings<dim> &s = region.settings;
+      if (heat == nullptr)
+        {
+          if (!s.fixed_temperatures.empty())
+            reader.fail("Fixed temperatures",
+                        "no entries unless 'Effects' lists 'heat "
+                        "conduction'");
+          return;
+        }
+      if (!heat->knows_material(s.material))
+        reader.fail("Material",
+                    "a material that section Heat conduction gives a "
+                    "Conductivity and a Specific heat (material " +
+                      std::to_string(s.material + 1) + " has none)");
+      typename SolidRegion<dim>::HeatSettings settings;
+      settings.conductivity   = heat->conductivity_of(s.material);
+      settings.specific_heat  = heat->specific_heat_of(s.material);
+      settings.fixed          = s.fixed_temperatures;
+      settings.working        = heat->working_model(s.material);
+      settings.taylor_quinney = heat->taylor_quinney();
+      if (const auto *expanding = heat->expanding_model(s.material))
+        {
+          settings.stretch_index      = expanding->stretch_index();
+          settings.stretch_per_kelvin = expanding->stretch_per_kelvin();
+        }
+      region.solid->use_heat(settings, heat->initial_temperature());
+      region.heat =
+        std::make_unique<RegionHeat<dim>>(*region.solid, region.bonded.get());
+    }
   } // namespace
 
   template <int dim>
@@ -365,7 +415,8 @@ namespace dealmpm
                   const std::vector<std::unique_ptr<Material<dim>>> &materials,
                   const unsigned int                                 n_bodies,
                   const BackgroundGrid<dim>                         &grid,
-                  const BaseMotion<dim>                             *base)
+                  const BaseMotion<dim>                             *base,
+                  const HeatConduction<dim>                         *heat)
   {
     FemRegion<dim> region;
     region.name = "FEM region " + std::to_string(index + 1);
@@ -403,6 +454,7 @@ namespace dealmpm
         region.contact = std::make_unique<RegionContact<dim>>(solid, s.contact);
         region.contact->grid_changed(grid);
       }
+    make_region_heat(reader, region, heat);
     return region;
   }
 
@@ -414,12 +466,14 @@ namespace dealmpm
                   const std::vector<std::unique_ptr<Material<2>>> &,
                   unsigned int,
                   const BackgroundGrid<2> &,
-                  const BaseMotion<2> *);
+                  const BaseMotion<2> *,
+                  const HeatConduction<2> *);
   template FemRegion<3>
   make_fem_region(SceneReader &,
                   unsigned int,
                   const std::vector<std::unique_ptr<Material<3>>> &,
                   unsigned int,
                   const BackgroundGrid<3> &,
-                  const BaseMotion<3> *);
+                  const BaseMotion<3> *,
+                  const HeatConduction<3> *);
 } // namespace dealmpm

@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <dealmpm/effects/base_shaking.h>
+#include <dealmpm/effects/heat_conduction.h>
 #include <dealmpm/fem/fem_regions.h>
 
 #include <algorithm>
@@ -60,12 +61,18 @@ namespace dealmpm
     for (const auto &effect : effects)
       if (const auto *shaking = dynamic_cast<BaseShaking<dim> *>(effect.get()))
         base = &shaking->base_motion();
+    HeatConduction<dim> *heat = nullptr;
+    for (const auto &effect : effects)
+      if (auto *h = dynamic_cast<HeatConduction<dim> *>(effect.get()))
+        heat = h;
     bool shaken = base && !base->ids.empty();
     for (unsigned int r = 0; r < n_regions; ++r)
       {
-        regions.push_back(
-          make_fem_region<dim>(reader, r, materials, n_bodies, grid, base));
+        regions.push_back(make_fem_region<dim>(
+          reader, r, materials, n_bodies, grid, base, heat));
         shaken |= !regions.back().settings.conditions.shaken.empty();
+        if (regions.back().heat)
+          heat->add_partner(*regions.back().heat);
       }
     if (base && !shaken)
       {
@@ -109,6 +116,10 @@ namespace dealmpm
         if (!potential_steady)
           region.solid->track_potential(potential(), true);
         region.solid->compute_forces(time, dt, body_force, uniform);
+        // The heat conducted with the new F, before the bonded nodes send
+        // it to the grid (the effect 'heat conduction' advances it).
+        if (region.heat)
+          region.heat->conduct(dt);
         if (region.bonded)
           region.bonded->deposit(grid, fields);
       }

@@ -55,6 +55,18 @@ namespace dealmpm
       return keys;
     }
 
+    /** Each owned dof's node (index into @p nodes). */
+    template <typename Node>
+    std::map<types::global_dof_index, unsigned int>
+    node_of_dofs(const std::vector<Node> &nodes, const IndexSet &owned)
+    {
+      std::map<types::global_dof_index, unsigned int> map;
+      for (unsigned int k = 0; k < nodes.size(); ++k)
+        for (const unsigned int dof : nodes[k].dof)
+          map[owned.nth_index_in_set(dof)] = k;
+      return map;
+    }
+
     void
     write_hex(std::ostream &out, const double x)
     {
@@ -83,6 +95,7 @@ namespace dealmpm
       write_hex(out, row_impulse[d]);
     out << '\n';
     const IndexSet &owned = dof_handler.locally_owned_dofs();
+    const auto      node  = node_of_dofs(nodes, owned);
     for (const auto &[dof, key] : dof_keys(dof_handler))
       if (owned.is_element(dof))
         {
@@ -91,6 +104,12 @@ namespace dealmpm
           write_hex(out, velocity(dof));
           for (const auto &column : affine)
             write_hex(out, column(dof));
+          if (carries_heat())
+            {
+              // The temperature and the node's debt (region_heat.h).
+              write_hex(out, temperature(dof));
+              write_hex(out, heat.debt[node.at(dof)]);
+            }
           out << '\n';
         }
     const unsigned int n_q = QGauss<dim>(fe.degree + 1).size();
@@ -168,6 +187,9 @@ namespace dealmpm
     row_impulse            = first ? saved.impulse : Tensor<1, dim>();
     load_dofs(saved.dofs);
     load_cells(saved.cells);
+    // The saved run had heated by all the work done (each step does).
+    if (carries_heat())
+      mark_work_heated();
   }
 
   template <int dim>
@@ -175,20 +197,29 @@ namespace dealmpm
   SolidRegion<dim>::load_dofs(
     const std::map<std::string, std::vector<double>> &dofs)
   {
-    // Per dof: u, v and the affine columns.
-    const IndexSet &owned = dof_handler.locally_owned_dofs();
+    // Per dof: u, v, the affine columns and the temperature.
+    const IndexSet   &owned  = dof_handler.locally_owned_dofs();
+    const std::size_t n_heat = carries_heat() ? 2 : 0;
+    const auto        node   = node_of_dofs(nodes, owned);
     for (const auto &[dof, key] : dof_keys(dof_handler))
       if (owned.is_element(dof))
         {
           const auto found = dofs.find(key);
           AssertThrow(found != dofs.end() &&
-                        found->second.size() >= 2 + affine.size(),
+                        found->second.size() >= 2 + affine.size() + n_heat,
                       ExcMessage("the saved FEM region has no node " + key));
           displacement(dof) = found->second[0];
           velocity(dof)     = found->second[1];
           for (unsigned int j = 0; j < affine.size(); ++j)
             affine[j](dof) = found->second[2 + j];
+          if (n_heat > 0)
+            {
+              temperature(dof)        = found->second[2 + affine.size()];
+              heat.debt[node.at(dof)] = found->second[3 + affine.size()];
+            }
         }
+    if (n_heat > 0)
+      temperature.update_ghost_values();
     displacement.update_ghost_values();
     velocity.update_ghost_values();
   }

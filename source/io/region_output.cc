@@ -104,6 +104,9 @@ namespace dealmpm
     Vector_ u(region.get_displacement()), v(region.get_velocity());
     u.update_ghost_values();
     v.update_ghost_values();
+    // The temperature sits at each of a node's dofs: its x component.
+    const bool                         heat = region.carries_heat();
+    const Vector_                     &T    = region.get_temperature();
     std::vector<SymmetricTensor<2, 3>> stress;
     std::vector<double>                von_mises;
     std::vector<std::vector<double>>   internal;
@@ -114,6 +117,8 @@ namespace dealmpm
       add_region_arrays(cloud, region.get_material().internal_variables());
     const unsigned int k        = region.degree(),
                        per_cell = Utilities::pow(k + 1, dim);
+    const unsigned int temperature =
+      heat ? cloud.add_array("temperature", VtuType::Float32, 1) : 0;
     cloud.resize(per_cell * stress.size());
     cloud.cell_type       = dim == 2 ? 9 : 12; // VTK_QUAD, VTK_HEXAHEDRON
     cloud.points_per_cell = Utilities::pow(2, dim);
@@ -124,14 +129,16 @@ namespace dealmpm
                             lattice<dim>(k),
                             update_values | update_quadrature_points);
     const FEValuesExtractors::Vector vector(0);
-    std::vector<Tensor<1, dim>>      u_at(per_cell), v_at(per_cell);
-    std::size_t                      c = 0, i = 0;
+    std::vector<Tensor<1, dim>> u_at(per_cell), v_at(per_cell), T_at(per_cell);
+    std::size_t                 c = 0, i = 0;
     for (const auto &cell : region.get_dof_handler().active_cell_iterators())
       if (cell->is_locally_owned())
         {
           fe_values.reinit(cell);
           fe_values[vector].get_function_values(u, u_at);
           fe_values[vector].get_function_values(v, v_at);
+          if (heat)
+            fe_values[vector].get_function_values(T, T_at);
           add_sub_cells<dim>(k, i, cloud);
           for (unsigned int q = 0; q < per_cell; ++q, ++i)
             {
@@ -150,7 +157,9 @@ namespace dealmpm
                     stress[c][r][s];
               cloud.arrays[a.von_mises].reals[i] = von_mises[c];
               cloud.arrays[a.rank].integers[i]   = cell->subdomain_id();
-              std::size_t j                      = 0;
+              if (heat)
+                cloud.arrays[temperature].reals[i] = T_at[q][0];
+              std::size_t j = 0;
               for (const unsigned int array : a.internal)
                 {
                   VtuArray &values = cloud.arrays[array];

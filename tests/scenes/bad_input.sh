@@ -286,6 +286,16 @@ expect 2 "Taylor-Quinney coefficient=2'.*from 0 to 1" "$scene" "${s[@]}" "${heat
 expect 2 "Convection=9: 1'.*boundary ids the grid has" "$scene" "${s[@]}" "${heat[@]}" -s "Heat conduction/Convection=9: 1"
 expect 2 "Heat source=sin\('.*expression of x,y,t" "$scene" "${s[@]}" "${heat[@]}" -s "Heat conduction/Heat source=sin("
 expect 2 "Flux curve=1: 2, 0: 1'.*increasing times" "$scene" "${s[@]}" "${heat[@]}" -s "Heat conduction/Flux curve=1: 2, 0: 1"
+expect 2 "FEM region 1/Fixed temperatures.*no entries unless 'Effects' lists 'heat conduction'" "$fem" "${s[@]}" \
+  -s "FEM region 1/Fixed temperatures=0: 300"
+expect 2 "FEM region 1/Fixed temperatures.*boundary ids of the region's mesh \(0, 1, 2, 3\), not 7" "$fem" "${s[@]}" \
+  "${heat[@]}" -s "FEM region 1/Fixed temperatures=7: 300"
+three=(-s "Number of materials=3")
+for m in 2 3; do
+  three+=(-s "Material $m/Model=linear elastic" -s "Material $m/Density=1" -s "Material $m/linear elastic/Young's modulus=1")
+done
+expect 2 "FEM region 1/Material.*Conductivity and a Specific heat \(material 3 has none\)" "$fem" "${s[@]}" \
+  "${heat[@]}" "${three[@]}" -s "Heat conduction/Specific heat=1, 2" -s "FEM region 1/Material=3"
 expect 2 "Output/Directory.*expected a folder that can be created and written" "$scene" -s "Output/Directory=afile/sub"
 # The same under MPI must not hang (only rank 0 makes folders).
 if command -v mpirun > /dev/null; then

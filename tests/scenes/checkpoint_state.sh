@@ -67,6 +67,10 @@ resumes_exactly adaptive 1e-12 "$prm/colliding_disks.prm" -s "Adaptivity/Criteri
 # FEM regions: their displacement, velocity and quadrature-point state,
 # bonded to a body and in frictional contact with one.
 resumes_exactly bonded 0 "$prm/bonded_bar.prm"
+# The region's temperatures, heat passing the bond.
+resumes_exactly bonded-heat 0 "$prm/bonded_bar.prm" -s "Effects=heat conduction" \
+  -s "Heat conduction/Specific heat=1" -s "Heat conduction/Conductivity=1e-3" \
+  -s "Heat conduction/Initial temperature=x < 0.5 ? 400 : 300" -s "FEM region 1/Fixed temperatures=0: 500"
 # APIC: the bonded nodes' affine velocity (the grid shifted so that they
 # sit off its node lines, where the affine part counts).
 resumes_exactly bonded_apic 0 "$prm/bonded_bar.prm" -s "MPM/Velocity update=APIC" -s "Grid/Cells=47, 1"

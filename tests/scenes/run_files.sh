@@ -39,13 +39,6 @@ PY
 # Every line printed, in the log; the warning among them.
 grep -q "^dealmpm: warning: .*'Gravity/Acceleration' is set" err.txt || fail "no warning to look for: $(cat err.txt)"
 [ -s out/run.log ] || fail "no out/run.log"
-# A scene with FEM regions and heat conduction says that heat stays out
-# of the regions.
-"$dealmpm" "$(dirname "$scene")/bonded_bar.prm" -s "Effects=heat conduction" \
-  -s "Heat conduction/Specific heat=1" -s "Time/Maximum number of steps=2" \
-  -s "Output/Directory=heat" > heat.txt 2>&1 || fail "bonded bar with heat: $(tail -1 heat.txt)"
-grep -q "^dealmpm: warning: .*'heat conduction' acts on the particles only" heat.txt \
-  || fail "no warning that FEM regions take no heat: $(cat heat.txt)"
 while IFS= read -r line; do
   grep -qxF -- "$line" out/run.log || fail "run.log lacks the line: $line"
 done < <(cat out.txt err.txt)

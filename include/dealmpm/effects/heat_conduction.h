@@ -14,9 +14,58 @@
 namespace dealmpm
 {
   /**
+   * What holds heat on the grid besides the particles (an FEM region,
+   * fem/region_heat.h), which the heat conduction effect's step calls in
+   * turn: it adds its capacity and heat to the grid's nodes before the
+   * nodes' temperature is found, its conducted power before they advance,
+   * and takes their temperature increments back.
+   */
+  template <int dim>
+  class HeatPartner
+  {
+  public:
+    virtual ~HeatPartner() = default;
+
+    /** Add C and C T to the grid's nodes (local entries, ghosts
+     * included; the effect compresses). */
+    virtual void
+    add_capacity(NodalVector &capacity, NodalVector &heat) const = 0;
+
+    /** Add the power it gives the grid's nodes (W; ghosts included). */
+    virtual void
+    add_power(NodalVector &power) const = 0;
+
+    /** What advance() counted in the step: the heat its held boundaries
+     * gave and the heat its sources generated. */
+    struct Flows
+    {
+      double given     = 0;
+      double generated = 0;
+    };
+
+    /** Take the nodes' increments and new temperatures (@p increment,
+     * @p temperature, with ghosts) and advance its own temperatures by
+     * @p dt. Collective. */
+    virtual Flows
+    advance(const NodalVector &increment,
+            const NodalVector &temperature,
+            const MPI_Comm     comm,
+            const double       dt) = 0;
+
+    /** sum C T of this rank's part. */
+    virtual double
+    stored_heat() const = 0;
+
+    /** The inverse of its conduction's stable step (this rank's part). */
+    virtual double
+    signal_rate() const = 0;
+  };
+
+  /**
    * Heat conduction in the particles (effect 'heat conduction'): each
    * particle carries a temperature T (K), its material a conductivity k
-   * (W/m/K) and a specific heat c (J/kg/K). Every step, after P2G:
+   * (W/m/K) and a specific heat c (J/kg/K). Every step, after the grid
+   * update:
    * - the heat capacity m c and the heat m c T go to the nodes with the
    *   mass's weights, C_i = sum N_ip m_p c_p, T_i = sum N_ip m_p c_p T_p /
    *   C_i; nodes on the 'Fixed temperatures' boundaries take theirs;
@@ -109,10 +158,12 @@ namespace dealmpm
     void
     initialize_particles(ParticleSet<dim> &particles) const override;
 
-    /** Maps the heat and conducts it to the nodes (after P2G). */
+    /** Maps the heat and conducts it to the nodes, with the partners'
+     * (after the grid update: after the FEM regions' forces, which
+     * conduct in the regions and place their bonded nodes). */
     void
-    add_nodal_forces(const EffectContext<dim> &state,
-                     NodalFields<dim>         &fields) override;
+    after_grid_update(const EffectContext<dim> &state,
+                      NodalFields<dim>         &fields) override;
 
     /** Gives each particle its nodes' temperature increments and the
      * Taylor-Quinney share of the work it dissipated in the step. */
@@ -147,6 +198,62 @@ namespace dealmpm
       heat_in   = state.at(0);
       generated = state.at(1);
       stored    = state.at(2);
+    }
+
+    /** Whether the section gives material @p m a conductivity and a
+     * specific heat. */
+    bool
+    knows_material(const unsigned int m) const
+    {
+      return (settings.conductivity.size() == 1 ||
+              m < settings.conductivity.size()) &&
+             (settings.specific_heat.size() == 1 ||
+              m < settings.specific_heat.size());
+    }
+
+    /** Material @p m's conductivity and specific heat, for an FEM region
+     * of that material, and the initial temperature. */
+    double
+    conductivity_of(const unsigned int m) const
+    {
+      return of_material(settings.conductivity, m);
+    }
+    double
+    specific_heat_of(const unsigned int m) const
+    {
+      return of_material(settings.specific_heat, m);
+    }
+    const Function<dim> &
+    initial_temperature() const
+    {
+      return initial;
+    }
+
+    /** Material @p m's model whose dissipated work heats it (by
+     * taylor_quinney()), or none; its expanding wrapper, or none. */
+    const Material<dim> *
+    working_model(const unsigned int m) const
+    {
+      return working.empty() ? nullptr : working[m];
+    }
+    double
+    taylor_quinney() const
+    {
+      return settings.taylor_quinney;
+    }
+    const ThermallyExpanding<dim> *
+    expanding_model(const unsigned int m) const
+    {
+      return expanding.empty() ? nullptr : expanding[m];
+    }
+
+    /** @p partner's heat joins the grid's in every step from now on (it
+     * outlives the effect's steps); its heat counts as stored. */
+    void
+    add_partner(HeatPartner<dim> &partner)
+    {
+      partners.push_back(&partner);
+      stored += partner.stored_heat();
     }
 
   private:
@@ -225,6 +332,7 @@ namespace dealmpm
     NodalVector                                  capacity;
     NodalVector                                  temperature;
     NodalVector                                  increment;
+    std::vector<HeatPartner<dim> *>              partners;
     mutable double                               stored = 0;
     /** The smallest cell size; the particles' largest k / (rho c), from
      * the last after_g2p (< 0: not yet, signal_rate() finds it). */

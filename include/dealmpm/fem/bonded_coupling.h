@@ -36,6 +36,32 @@ namespace dealmpm
     void
     use_affine();
 
+    /** Send each node's heat capacity C, heat C T and conducted heat Q
+     * along (the region carries heat, fem/region_heat.h): the values
+     * heat_value() reads after deposit(). */
+    void
+    carry_heat()
+    {
+      heat = true;
+    }
+
+    /** Value @p k (0: C, 1: C T, 2: Q) of placed point @p p, as
+     * deposit() sent it. */
+    double
+    heat_value(const typename NodesOnGrid<dim>::Placed &p,
+               const unsigned int                       k) const
+    {
+      return points.value(p.point, n_values() - 3 + k);
+    }
+
+    /** The indices into region.get_nodes() of this rank's bonded nodes,
+     * in the order of NodesOnGrid::sum_to_owners()'s answer. */
+    const std::vector<unsigned int> &
+    bonded_nodes() const
+    {
+      return local;
+    }
+
     /** After the grid changed: its cells' search tree. */
     void
     grid_changed(const BackgroundGrid<dim> &grid);
@@ -69,8 +95,15 @@ namespace dealmpm
     }
 
   private:
+    /** Values per node: x, m, m v, f, (B), (C, C T, Q). */
+    unsigned int
+    n_values() const
+    {
+      return 3 * dim + 1 + (affine ? dim * dim : 0) + (heat ? 3 : 0);
+    }
+
     /** Per bonded node of this rank: x, m, m v, f (and B column by
-     * column), the values deposit() gathers. */
+     * column, and its heat), the values deposit() gathers. */
     std::vector<double>
     node_values() const;
 
@@ -100,5 +133,6 @@ namespace dealmpm
     std::size_t               n_global = 0;
     NodesOnGrid<dim>          points;
     bool                      affine = false;
+    bool                      heat   = false;
   };
 } // namespace dealmpm

@@ -5,6 +5,7 @@
 #include <dealmpm/base/scene_reader.h>
 #include <dealmpm/fem/bonded_coupling.h>
 #include <dealmpm/fem/region_contact.h>
+#include <dealmpm/fem/region_heat.h>
 #include <dealmpm/fem/solid_region.h>
 #include <dealmpm/grid/background_grid.h>
 #include <dealmpm/materials/material.h>
@@ -46,6 +47,8 @@ namespace dealmpm
     std::map<types::boundary_id, unsigned int> bonded_to;
     /** Contact boundary id -> friction coefficient. */
     std::map<types::boundary_id, double> contact;
+    /** Boundary id -> temperature held there (effect 'heat conduction'). */
+    std::map<types::boundary_id, double> fixed_temperatures;
   };
 
   /** A region of the run: its settings, the solid and, when it has
@@ -58,13 +61,17 @@ namespace dealmpm
     std::unique_ptr<SolidRegion<dim>>    solid;
     std::unique_ptr<BondedCoupling<dim>> bonded;
     std::unique_ptr<RegionContact<dim>>  contact;
+    /** With the effect 'heat conduction': the region's heat. */
+    std::unique_ptr<RegionHeat<dim>> heat;
   };
 
   /** Make region @p index (0-based) from its section: the mesh, the
    * checks against the scene (ids the mesh has, inside the background
    * grid, bonded nodes no coarser than its cells), the solid set up with
    * its initial velocity; @p base is the scene's base motion (effect
-   * 'base shaking'), or none. Collective; InputError on bad input. */
+   * 'base shaking'), or none; with @p heat (effect 'heat conduction') the
+   * region carries a temperature too. Collective; InputError on bad
+   * input. */
   template <int dim>
   FemRegion<dim>
   make_fem_region(SceneReader                                       &reader,
@@ -72,5 +79,6 @@ namespace dealmpm
                   const std::vector<std::unique_ptr<Material<dim>>> &materials,
                   const unsigned int                                 n_bodies,
                   const BackgroundGrid<dim>                         &grid,
-                  const BaseMotion<dim>                             *base);
+                  const BaseMotion<dim>                             *base,
+                  const HeatConduction<dim>                         *heat);
 } // namespace dealmpm

@@ -337,6 +337,124 @@ namespace dealmpm
                              const std::vector<Tensor<1, dim>> &change);
 
     /** @} */
+    /** @name Heat (effect 'heat conduction'; source/fem/solid_region_heat.cc)
+     * Each node carries a temperature T_i, with the lumped heat capacity
+     * C_i = c m_i; the conducted heat Q_i = -int k grad_x T . grad_x N_i
+     * dv over the current configuration (k J C^-1 on the reference
+     * cells); the nodes advance T_i += dt Q_i / C_i (forward Euler, as the
+     * grid's nodes), those on fixed-temperature ids hold theirs and bonded
+     * nodes take theirs from the grid (fem/region_heat.h). */
+    /** @{ */
+
+    struct HeatSettings
+    {
+      double conductivity  = 0; ///< k (W/m/K)
+      double specific_heat = 0; ///< c (J/kg/K)
+      /** Temperature (K) held on the region's boundary ids. */
+      std::map<types::boundary_id, double> fixed;
+      /** The model whose dissipated work (of the internal variables at
+       * the quadrature points) heats the region by the Taylor-Quinney
+       * fraction, or none. */
+      const Material<dim> *working        = nullptr;
+      double               taylor_quinney = 0;
+      /** A thermally expanding material (materials/thermal_expansion.h):
+       * its thermal stretch's index among the internal variables and its
+       * growth per kelvin (0: none). */
+      unsigned int stretch_index      = 0;
+      double       stretch_per_kelvin = 0;
+    };
+
+    /** What advance_temperature() counted in the step: the heat the held
+     * nodes gave and the heat the material's work generated. */
+    struct HeatStep
+    {
+      double given     = 0;
+      double generated = 0;
+    };
+
+    /** Carry a temperature, @p initial at each node's reference position
+     * (those on fixed ids take theirs in the first step); saved with the
+     * state. After setup(). */
+    void
+    use_heat(const HeatSettings &settings, const Function<dim> &initial);
+
+    bool
+    carries_heat() const
+    {
+      return temperature.size() > 0;
+    }
+
+    /** Q from the current temperatures and deformation (the step's
+     * start: the increments advance_temperature() finds are from here).
+     * Collective. */
+    void
+    conduct();
+
+    /** T += dt Q / C at the nodes neither held nor bonded, then the heat
+     * of the material's work since the last call at every node not held;
+     * the thermal stretch of an expanding material grows by each
+     * point's temperature increment in the step. Returns what the held
+     * nodes gave (what keeps them at their temperature, -dt Q) and what
+     * the work generated. Collective. */
+    HeatStep
+    advance_temperature(const double dt);
+
+    /** Bonded node @p indices[k] (into get_nodes()) changes its
+     * temperature by @p change[k]. */
+    void
+    add_to_temperatures(const std::vector<unsigned int> &indices,
+                        const std::vector<double>       &change);
+
+    /** Heat a bonded node owes the grid (fem/region_heat.h), saved with
+     * the state: stored_heat() counts it out. */
+    double &
+    heat_debt_of(const unsigned int k)
+    {
+      return heat.debt[k];
+    }
+
+    /** Node @p k's conducted heat grows by @p power (after conduct()). */
+    void
+    add_conducted_heat(const unsigned int k, const double power)
+    {
+      conducted.local_element(nodes[k].dof[0]) += power;
+    }
+
+    double
+    temperature_of(const Node &node) const
+    {
+      return temperature.local_element(node.dof[0]);
+    }
+    double
+    heat_capacity_of(const Node &node) const
+    {
+      return heat.settings.specific_heat * mass_of(node);
+    }
+    double
+    conducted_heat_of(const Node &node) const
+    {
+      return conducted.local_element(node.dof[0]);
+    }
+
+    /** sum C_i T_i over this rank's nodes. */
+    double
+    stored_heat() const;
+
+    /** 2 dim k / (rho c h^2) of this rank's cells (h the smallest node
+     * spacing in the reference configuration), the inverse of the
+     * conduction's stable step; 0 without heat. */
+    double
+    heat_signal_rate() const;
+
+    /** The nodes' temperature (at each of a node's dofs), with ghosts;
+     * empty without heat. */
+    const LinearAlgebra::distributed::Vector<double> &
+    get_temperature() const
+    {
+      return temperature;
+    }
+
+    /** @} */
     /** @name For output and tests */
     /** @{ */
 
@@ -518,6 +636,23 @@ namespace dealmpm
     local_potential_energy(
       const std::function<double(const Point<dim> &)> &potential) const;
 
+    /** A cell's conducted heat into 'conducted' (ghost entries too). */
+    void
+    cell_conduction(const unsigned int cell);
+    /** The heat of the work dissipated since the last call, at the nodes
+     * (into 'conducted', zeroed first), the held nodes' share dropped;
+     * returns what it added (this rank's). Collective. */
+    double
+    heat_by_work();
+    /** Every point's dissipated work counts as turned into heat (at
+     * the start, and after a saved state is loaded). */
+    void
+    mark_work_heated();
+    /** Each point's thermal stretch grows by its share of the nodes'
+     * temperature increments (@p increment, with ghosts). */
+    void
+    expand(const LinearAlgebra::distributed::Vector<double> &increment);
+
     /** Saved state: the "step" line's values, per dof key u, v and the
      * affine columns, per cell id the rest of its line. */
     struct SavedParts
@@ -575,5 +710,22 @@ namespace dealmpm
     double         row_time = 0;
     /** sum_i m_i potential(x_i) of this rank after the last step. */
     double last_potential = 0;
+    /** Heat (use_heat()): T and Q at each of a node's dofs (all equal);
+     * the held nodes (index into nodes) and their temperature. */
+    LinearAlgebra::distributed::Vector<double> temperature, conducted;
+    struct
+    {
+      HeatSettings                                 settings;
+      std::vector<std::pair<unsigned int, double>> fixed_nodes;
+      double                                       rho_c = 0;
+      /** The scalar shape functions' values at the quadrature points
+       * [s][q] (the same on every cell); per point the dissipated work
+       * density already turned into heat. */
+      std::vector<double> shape_values, heated_work;
+      /** The owned temperatures at the step's start (conduct()). */
+      std::vector<double> at_start;
+      /** Per node, the heat it owes the grid (bonded nodes). */
+      std::vector<double> debt;
+    } heat;
   };
 } // namespace dealmpm

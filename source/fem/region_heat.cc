@@ -1,0 +1,103 @@
+#include <dealmpm/fem/region_heat.h>
+
+namespace dealmpm
+{
+  template <int dim>
+  RegionHeat<dim>::RegionHeat(SolidRegion<dim>    &solid,
+                              BondedCoupling<dim> *bonded)
+    : solid(solid)
+    , bonded(bonded)
+  {
+    if (bonded)
+      bonded->carry_heat();
+  }
+
+  template <int dim>
+  void
+  RegionHeat<dim>::add_capacity(NodalVector &capacity, NodalVector &heat) const
+  {
+    if (!bonded)
+      return;
+    for (const auto &p : bonded->nodes_on_grid().placed())
+      for (unsigned int n = 0; n < p.nodes.size(); ++n)
+        {
+          capacity.local_element(p.nodes[n]) +=
+            p.weights[n] * bonded->heat_value(p, 0);
+          heat.local_element(p.nodes[n]) +=
+            p.weights[n] * bonded->heat_value(p, 1);
+        }
+  }
+
+  template <int dim>
+  void
+  RegionHeat<dim>::add_power(NodalVector &power) const
+  {
+    if (!bonded)
+      return;
+    for (const auto &p : bonded->nodes_on_grid().placed())
+      for (unsigned int n = 0; n < p.nodes.size(); ++n)
+        power.local_element(p.nodes[n]) +=
+          p.weights[n] * bonded->heat_value(p, 2);
+  }
+
+  template <int dim>
+  void
+  RegionHeat<dim>::conduct(const double dt)
+  {
+    solid.conduct();
+    if (bonded)
+      for (const unsigned int k : bonded->bonded_nodes())
+        solid.add_conducted_heat(k, -solid.heat_debt_of(k) / dt);
+  }
+
+  template <int dim>
+  typename HeatPartner<dim>::Flows
+  RegionHeat<dim>::advance(const NodalVector &increment,
+                           const NodalVector &temperature,
+                           const MPI_Comm     comm,
+                           const double       dt)
+  {
+    if (bonded)
+      {
+        // Per point: the increments' and the new temperatures' sums.
+        NodesOnGrid<dim>   &points = bonded->nodes_on_grid();
+        std::vector<double> sums(2 * points.n_points(), 0.);
+        for (const auto &p : points.placed())
+          for (unsigned int n = 0; n < p.nodes.size(); ++n)
+            {
+              sums[2 * p.point] +=
+                p.weights[n] * increment.local_element(p.nodes[n]);
+              sums[2 * p.point + 1] +=
+                p.weights[n] * temperature.local_element(p.nodes[n]);
+            }
+        const std::vector<double> mine = points.sum_to_owners(sums, 2, comm);
+        const std::vector<unsigned int> &local = bonded->bonded_nodes();
+        std::vector<double>              change(local.size());
+        for (std::size_t j = 0; j < local.size(); ++j)
+          {
+            const auto  &node = solid.get_nodes()[local[j]];
+            const double T    = solid.temperature_of(node);
+            change[j]         = mine[2 * j + 1] - T;
+            solid.heat_debt_of(local[j]) =
+              solid.heat_capacity_of(node) * (change[j] - mine[2 * j]);
+          }
+        solid.add_to_temperatures(local, change);
+      }
+    const auto step = solid.advance_temperature(dt);
+    return {step.given, step.generated};
+  }
+
+  template <int dim>
+  double
+  RegionHeat<dim>::stored_heat() const
+  {
+    double owed = 0;
+    if (bonded)
+      for (const unsigned int k : bonded->bonded_nodes())
+        owed += solid.heat_debt_of(k);
+    return solid.stored_heat() - owed;
+  }
+
+  template class RegionHeat<2>;
+  template class RegionHeat<3>;
+} // namespace dealmpm
