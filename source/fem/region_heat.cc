@@ -12,32 +12,39 @@ namespace dealmpm
       bonded->carry_heat();
   }
 
+  namespace
+  {
+    /** Add heat value @p k (BondedCoupling::heat_value()) of every
+     * placed bonded node to @p to at the grid nodes, with the weights. */
+    template <int dim>
+    void
+    add_weighted(BondedCoupling<dim> &bonded,
+                 const unsigned int   k,
+                 NodalVector         &to)
+    {
+      for (const auto &p : bonded.nodes_on_grid().placed())
+        for (unsigned int n = 0; n < p.nodes.size(); ++n)
+          to.local_element(p.nodes[n]) +=
+            p.weights[n] * bonded.heat_value(p, k);
+    }
+  } // namespace
+
   template <int dim>
   void
   RegionHeat<dim>::add_capacity(NodalVector &capacity, NodalVector &heat) const
   {
     if (!bonded)
       return;
-    for (const auto &p : bonded->nodes_on_grid().placed())
-      for (unsigned int n = 0; n < p.nodes.size(); ++n)
-        {
-          capacity.local_element(p.nodes[n]) +=
-            p.weights[n] * bonded->heat_value(p, 0);
-          heat.local_element(p.nodes[n]) +=
-            p.weights[n] * bonded->heat_value(p, 1);
-        }
+    add_weighted(*bonded, 0, capacity);
+    add_weighted(*bonded, 1, heat);
   }
 
   template <int dim>
   void
   RegionHeat<dim>::add_power(NodalVector &power) const
   {
-    if (!bonded)
-      return;
-    for (const auto &p : bonded->nodes_on_grid().placed())
-      for (unsigned int n = 0; n < p.nodes.size(); ++n)
-        power.local_element(p.nodes[n]) +=
-          p.weights[n] * bonded->heat_value(p, 2);
+    if (bonded)
+      add_weighted(*bonded, 2, power);
   }
 
   template <int dim>
