@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 
 namespace dealmpm
 {
@@ -232,18 +233,32 @@ namespace dealmpm
   std::map<unsigned int, double>
   SceneReader::get_id_nonnegatives(const std::string &entry) const
   {
-    const std::string              expected = "a number >= 0";
+    return id_values(entry, "a number >= 0", true);
+  }
+
+  std::map<unsigned int, double>
+  SceneReader::get_id_numbers(const std::string &entry,
+                              const std::string &unit) const
+  {
+    return id_values(entry, "a number (" + unit + ")", false);
+  }
+
+  std::map<unsigned int, double>
+  SceneReader::id_values(const std::string &entry,
+                         const std::string &expected,
+                         const bool         nonnegative) const
+  {
     std::map<unsigned int, double> map;
     for (const auto &[id, text] : get_id_map(entry, expected))
       {
-        double value = -1;
+        double value = std::numeric_limits<double>::quiet_NaN();
         try
           {
             value = Utilities::string_to_double(text);
           }
         catch (...)
           {}
-        if (!(value >= 0.) || !std::isfinite(value))
+        if (!std::isfinite(value) || (nonnegative && !(value >= 0.)))
           fail(entry,
                "a list of 'id: value' pairs, each id once (id a boundary "
                "id, value " +

@@ -407,24 +407,28 @@ namespace dealmpm
   void
   HeatConduction<dim>::add_friction_heat(const EffectContext<dim> &state)
   {
-    bool any = false;
+    std::vector<const DissipatesAtNodes *> sources;
     for (const auto &effect : state.effects)
       if (const auto *source =
             dynamic_cast<const DissipatesAtNodes *>(effect.get()))
+        sources.push_back(source);
+    for (const HeatPartner<dim> *partner : partners)
+      if (const auto *source = partner->friction_source())
+        sources.push_back(source);
+    for (const DissipatesAtNodes *source : sources)
+      for (const auto &[i, work] : source->dissipated_at_nodes())
         {
-          any = true;
-          for (const auto &[i, work] : source->dissipated_at_nodes())
-            {
-              const double C = capacity.local_element(i);
-              if (!(C > 0))
-                continue;
-              const double heat = settings.friction_heat * work;
-              increment.local_element(i) += heat / C;
-              temperature.local_element(i) += heat / C;
-              generated += heat;
-            }
+          const double C = capacity.local_element(i);
+          if (!(C > 0))
+            continue;
+          const double heat = settings.friction_heat * work;
+          increment.local_element(i) += heat / C;
+          temperature.local_element(i) += heat / C;
+          generated += heat;
         }
-    // The same effects on every rank: all of them exchange, or none.
+    const bool any = !sources.empty();
+    // The same effects and partners on every rank: all of them
+    // exchange, or none.
     if (any)
       {
         increment.update_ghost_values();
@@ -489,28 +493,38 @@ namespace dealmpm
 
   namespace
   {
-    /** 'id: value' pairs with any finite numbers (a flux may be < 0). */
-    std::map<unsigned int, double>
-    id_numbers(const SceneReader &reader, const std::string &entry)
+    /** Section Heat conduction's entries for the grid's boundaries. */
+    void
+    declare_boundary_entries(ParameterHandler &prm)
     {
-      const std::string              expected = "a number (W/m^2)";
-      std::map<unsigned int, double> map;
-      for (const auto &[id, text] : reader.get_id_map(entry, expected))
-        {
-          double value = std::numeric_limits<double>::quiet_NaN();
-          try
-            {
-              value = Utilities::string_to_double(text);
-            }
-          catch (...)
-            {}
-          if (!std::isfinite(value))
-            reader.fail(entry,
-                        "a list of 'id: value' pairs, each id once, value " +
-                          expected);
-          map[id] = value;
-        }
-      return map;
+      prm.declare_entry("Fixed temperatures",
+                        "",
+                        Patterns::Anything(),
+                        "Temperature (K) held on grid boundary ids, e.g. "
+                        "'0: 373.15, 1: 293.15'.");
+      prm.declare_entry("Heat fluxes",
+                        "",
+                        Patterns::Anything(),
+                        "Heat flux into the material (W/m^2, < 0: out) "
+                        "on grid boundary ids, e.g. '2: 1e4', times the "
+                        "Flux curve; where material touches the face.");
+      prm.declare_entry("Flux curve",
+                        "",
+                        Patterns::Anything(),
+                        "Factor on the heat fluxes (the FEM regions' "
+                        "too) against time, 't0: f0, t1: f1, ...' "
+                        "(piecewise linear); empty: 1.");
+      prm.declare_entry("Convection",
+                        "",
+                        Patterns::Anything(),
+                        "Convection coefficient h (W/m^2/K) on grid "
+                        "boundary ids, e.g. '3: 25': the face gives h "
+                        "(T_ambient - T) per unit area.");
+      prm.declare_entry("Ambient temperature",
+                        "293.15",
+                        Patterns::Double(),
+                        "T_ambient (K) of the convection (the FEM "
+                        "regions' too).");
     }
 
     /** The entries of section Heat conduction. */
@@ -548,7 +562,9 @@ namespace dealmpm
                         "0",
                         Patterns::Anything(),
                         "Heat generated per unit volume (W/m^3), an "
-                        "expression of x, y (, z) and t; 0: none.");
+                        "expression of x, y (, z) and t; 0: none. It "
+                        "heats the FEM regions too (per current "
+                        "volume).");
       prm.declare_entry(
         "Taylor-Quinney coefficient",
         "0.9",
@@ -561,35 +577,12 @@ namespace dealmpm
         "1",
         Patterns::Double(0, 1),
         "The share of the work friction dissipates (the effects 'boundary "
-        "friction' and 'frictional contact') that heats the material at "
-        "the nodes where it slides, in [0, 1]; the rest goes into the "
-        "walls.");
-      prm.declare_entry("Fixed temperatures",
-                        "",
-                        Patterns::Anything(),
-                        "Temperature (K) held on grid boundary ids, e.g. "
-                        "'0: 373.15, 1: 293.15'.");
-      prm.declare_entry("Heat fluxes",
-                        "",
-                        Patterns::Anything(),
-                        "Heat flux into the material (W/m^2, < 0: out) "
-                        "on grid boundary ids, e.g. '2: 1e4', times the "
-                        "Flux curve; where material touches the face.");
-      prm.declare_entry("Flux curve",
-                        "",
-                        Patterns::Anything(),
-                        "Factor on the heat fluxes against time, 't0: "
-                        "f0, t1: f1, ...' (piecewise linear); empty: 1.");
-      prm.declare_entry("Convection",
-                        "",
-                        Patterns::Anything(),
-                        "Convection coefficient h (W/m^2/K) on grid "
-                        "boundary ids, e.g. '3: 25': the face gives h "
-                        "(T_ambient - T) per unit area.");
-      prm.declare_entry("Ambient temperature",
-                        "293.15",
-                        Patterns::Double(),
-                        "T_ambient (K) of the convection.");
+        "friction' and 'frictional contact', an FEM region's 'Contact "
+        "boundaries') that heats the material at the nodes where it "
+        "slides (the MPM material's, also against a region), in [0, 1]; "
+        "the rest leaves through the walls or the region, which keeps "
+        "none of it.");
+      declare_boundary_entries(prm);
     }
 
     /** The section's settings, checked (one-line failures). */
@@ -617,7 +610,7 @@ namespace dealmpm
       for (const auto &[id, T] :
            reader.get_id_nonnegatives("Fixed temperatures"))
         s.fixed_temperatures[static_cast<types::boundary_id>(id)] = T;
-      for (const auto &[id, q] : id_numbers(reader, "Heat fluxes"))
+      for (const auto &[id, q] : reader.get_id_numbers("Heat fluxes", "W/m^2"))
         s.heat_fluxes[static_cast<types::boundary_id>(id)] = q;
       s.flux_curve = LoadCurve::read(reader, "Flux curve");
       for (const auto &[id, h] : reader.get_id_nonnegatives("Convection"))

@@ -54,6 +54,36 @@ namespace dealmpm
                         "Factor of 'Traction' against time, like "
                         "'Displacement curve'.");
     }
+
+    /** The region's entries of the effect 'heat conduction'. */
+    void
+    declare_heat_entries(ParameterHandler &prm)
+    {
+      prm.declare_entry(
+        "Fixed temperatures",
+        "",
+        Patterns::Anything(),
+        "With the effect 'heat conduction': temperature (K) held on boundary "
+        "ids of the region's mesh, e.g. '0: 373.15'. The region conducts with "
+        "its material's Conductivity and Specific heat (section Heat "
+        "conduction) from its Initial temperature, and its bonded boundaries "
+        "pass heat to the MPM body.");
+      prm.declare_entry(
+        "Heat fluxes",
+        "",
+        Patterns::Anything(),
+        "With the effect 'heat conduction': heat flux into the region (W/m^2, "
+        "< 0: out) on boundary ids of its mesh, e.g. '1: 5e4', over the "
+        "faces' current area, times section Heat conduction's 'Flux curve'.");
+      prm.declare_entry(
+        "Convection",
+        "",
+        Patterns::Anything(),
+        "With the effect 'heat conduction': convection coefficient h (W/m^2/K) "
+        "on boundary ids of the region's mesh, e.g. '1: 25': the faces give "
+        "h (T_ambient - T) per current area, T_ambient section Heat "
+        "conduction's 'Ambient temperature'.");
+    }
   } // namespace
 
   template <int dim>
@@ -126,15 +156,7 @@ namespace dealmpm
       "region's current surface); with the 'frictional contact' effect, "
       "each body meets the region on its own. Needs 'MPM/Stress update = "
       "USL'.");
-    prm.declare_entry(
-      "Fixed temperatures",
-      "",
-      Patterns::Anything(),
-      "With the effect 'heat conduction': temperature (K) held on boundary "
-      "ids of the region's mesh, e.g. '0: 373.15'. The region conducts with "
-      "its material's Conductivity and Specific heat (section Heat "
-      "conduction) from its Initial temperature, and its bonded boundaries "
-      "pass heat to the MPM body.");
+    declare_heat_entries(prm);
   }
 
   namespace
@@ -258,6 +280,10 @@ namespace dealmpm
       }
     for (const auto &[id, T] : reader.get_id_nonnegatives("Fixed temperatures"))
       s.fixed_temperatures[static_cast<types::boundary_id>(id)] = T;
+    for (const auto &[id, q] : reader.get_id_numbers("Heat fluxes", "W/m^2"))
+      s.heat_fluxes[static_cast<types::boundary_id>(id)] = q;
+    for (const auto &[id, h] : reader.get_id_nonnegatives("Convection"))
+      s.convection[static_cast<types::boundary_id>(id)] = h;
     return s;
   }
 
@@ -285,6 +311,8 @@ namespace dealmpm
       check_ids(reader, "Bonded boundaries", s.bonded_to, ids);
       check_ids(reader, "Contact boundaries", s.contact, ids);
       check_ids(reader, "Fixed temperatures", s.fixed_temperatures, ids);
+      check_ids(reader, "Heat fluxes", s.heat_fluxes, ids);
+      check_ids(reader, "Convection", s.convection, ids);
       std::map<types::boundary_id, int> shaken;
       for (const types::boundary_id id : s.conditions.shaken)
         shaken[id] = 0;
@@ -380,10 +408,14 @@ namespace dealmpm
       const FemRegionSettings<dim> &s = region.settings;
       if (heat == nullptr)
         {
-          if (!s.fixed_temperatures.empty())
-            reader.fail("Fixed temperatures",
-                        "no entries unless 'Effects' lists 'heat "
-                        "conduction'");
+          for (const auto &[entry, values] :
+               {std::make_pair("Fixed temperatures", &s.fixed_temperatures),
+                std::make_pair("Heat fluxes", &s.heat_fluxes),
+                std::make_pair("Convection", &s.convection)})
+            if (!values->empty())
+              reader.fail(entry,
+                          "no entries unless 'Effects' lists 'heat "
+                          "conduction'");
           return;
         }
       if (!heat->knows_material(s.material))
@@ -392,19 +424,26 @@ namespace dealmpm
                     "Conductivity and a Specific heat (material " +
                       std::to_string(s.material + 1) + " has none)");
       typename SolidRegion<dim>::HeatSettings settings;
-      settings.conductivity   = heat->conductivity_of(s.material);
-      settings.specific_heat  = heat->specific_heat_of(s.material);
-      settings.fixed          = s.fixed_temperatures;
-      settings.working        = heat->working_model(s.material);
-      settings.taylor_quinney = heat->taylor_quinney();
+      settings.conductivity      = heat->conductivity_of(s.material);
+      settings.specific_heat     = heat->specific_heat_of(s.material);
+      settings.fixed             = s.fixed_temperatures;
+      settings.working           = heat->working_model(s.material);
+      settings.taylor_quinney    = heat->taylor_quinney();
+      settings.fluxes            = s.heat_fluxes;
+      settings.convection        = s.convection;
+      settings.flux_curve        = &heat->flux_curve();
+      settings.ambient           = heat->ambient_temperature();
+      settings.source            = heat->heat_source();
+      settings.model_temperature = heat->model_temperature_index(s.material);
       if (const auto *expanding = heat->expanding_model(s.material))
         {
           settings.stretch_index      = expanding->stretch_index();
           settings.stretch_per_kelvin = expanding->stretch_per_kelvin();
         }
       region.solid->use_heat(settings, heat->initial_temperature());
-      region.heat =
-        std::make_unique<RegionHeat<dim>>(*region.solid, region.bonded.get());
+      region.heat = std::make_unique<RegionHeat<dim>>(*region.solid,
+                                                      region.bonded.get(),
+                                                      region.contact.get());
     }
   } // namespace
 

@@ -119,7 +119,7 @@ namespace dealmpm
         // The heat conducted with the new F, before the bonded nodes send
         // it to the grid (the effect 'heat conduction' advances it).
         if (region.heat)
-          region.heat->conduct(dt);
+          region.heat->conduct(time, dt);
         if (region.bonded)
           region.bonded->deposit(grid, fields);
       }

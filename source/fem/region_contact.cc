@@ -118,8 +118,10 @@ namespace dealmpm
     const Tensor<1, dim> dv_b  = -m_a / m_b * dv_a;
     const Tensor<1, dim> a_new = v_a + dv_a, b_new = v_b + dv_b;
     work_done += m_a * (dv_a * a_new) + m_b * (dv_b * b_new);
-    friction_done +=
-      m_a * (friction_change * a_new) - m_a * (friction_change * b_new);
+    const double friction = m_a * (friction_change * (a_new - b_new));
+    friction_done += friction;
+    if (friction < 0)
+      dissipated.emplace_back(i, -friction);
     for (unsigned int d = 0; d < dim; ++d)
       {
         fields.velocity[d].local_element(i) += dv_a[d];
@@ -274,6 +276,7 @@ namespace dealmpm
         mpm_fields.push_back(&body);
     else
       mpm_fields.push_back(&set.core);
+    dissipated.clear();
     const unsigned int n_owned = mass.locally_owned_size();
     for (unsigned int b = 0; b < mpm_fields.size(); ++b)
       for (unsigned int i = 0; i < n_owned; ++i)

@@ -3,10 +3,12 @@
 namespace dealmpm
 {
   template <int dim>
-  RegionHeat<dim>::RegionHeat(SolidRegion<dim>    &solid,
-                              BondedCoupling<dim> *bonded)
+  RegionHeat<dim>::RegionHeat(SolidRegion<dim>         &solid,
+                              BondedCoupling<dim>      *bonded,
+                              const RegionContact<dim> *contact)
     : solid(solid)
     , bonded(bonded)
+    , contact(contact)
   {
     if (bonded)
       bonded->carry_heat();
@@ -49,9 +51,9 @@ namespace dealmpm
 
   template <int dim>
   void
-  RegionHeat<dim>::conduct(const double dt)
+  RegionHeat<dim>::conduct(const double time, const double dt)
   {
-    solid.conduct();
+    solid.conduct(time, dt);
     if (bonded)
       for (const unsigned int k : bonded->bonded_nodes())
         solid.add_conducted_heat(k, -solid.heat_debt_of(k) / dt);

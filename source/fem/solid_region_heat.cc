@@ -1,4 +1,5 @@
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
 
 #include <dealmpm/fem/solid_region.h>
 
@@ -57,7 +58,137 @@ namespace dealmpm
       for (unsigned int q = 0; q < reference.n_q; ++q)
         heat.shape_values[s * reference.n_q + q] =
           fe.shape_value(reference.fe_index[s * dim], gauss.point(q));
+    heat.points.clear();
+    if (settings.source != nullptr)
+      {
+        // The owned cells in make_reference_data()'s order.
+        FEValues<dim> values(mapping, fe, gauss, update_quadrature_points);
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned())
+            {
+              values.reinit(cell);
+              for (unsigned int q = 0; q < reference.n_q; ++q)
+                heat.points.push_back(values.quadrature_point(q));
+            }
+      }
     mark_work_heated();
+    set_model_temperatures();
+  }
+
+  template <int dim>
+  void
+  SolidRegion<dim>::set_model_temperatures()
+  {
+    if (heat.settings.model_temperature < 0)
+      return;
+    const ReferenceData &r = reference;
+    const unsigned int   n = r.n_scalar;
+    for (std::size_t c = 0; c < r.centre.size(); ++c)
+      for (unsigned int q = 0; q < r.n_q; ++q)
+        {
+          double T = 0;
+          for (unsigned int s = 0; s < n; ++s)
+            T +=
+              heat.shape_values[s * r.n_q + q] *
+              temperature.local_element(r.local_dofs[c * r.n_dofs + s * dim]);
+          internal[(c * r.n_q + q) * n_internal +
+                   heat.settings.model_temperature] = T;
+        }
+  }
+
+  template <int dim>
+  std::vector<double>
+  SolidRegion<dim>::face_shares(
+    const std::map<types::boundary_id, double> &per_id) const
+  {
+    LinearAlgebra::distributed::Vector<double> a(conducted);
+    a = 0;
+    displacement.update_ghost_values();
+    const ReferenceData &r = reference;
+    for (std::size_t face = 0; face < r.face_cell.size(); ++face)
+      if (const auto found = per_id.find(r.face_id[face]);
+          found != per_id.end())
+        {
+          const unsigned int c = r.face_cell[face];
+          for (unsigned int q = 0; q < r.n_face_q; ++q)
+            {
+              const std::size_t    k = face * r.n_face_q + q;
+              const Tensor<2, dim> F =
+                unit_symmetric_tensor<dim>() +
+                reference_gradient(displacement,
+                                   c,
+                                   &r.face_grad[k * r.n_scalar]);
+              // Nanson: n da = J F^-T N dA.
+              const double da =
+                (determinant(F) * transpose(invert(F)) * r.face_normal_dA[k])
+                  .norm();
+              for (unsigned int s = 0; s < r.n_scalar; ++s)
+                a.local_element(r.local_dofs[c * r.n_dofs + s * dim]) +=
+                  found->second * r.face_value[k * r.n_scalar + s] * da;
+            }
+        }
+    a.compress(VectorOperation::add);
+    std::vector<double> shares(nodes.size());
+    for (unsigned int k = 0; k < nodes.size(); ++k)
+      shares[k] = a.local_element(nodes[k].dof[0]);
+    return shares;
+  }
+
+  template <int dim>
+  void
+  SolidRegion<dim>::add_source(const double time, const double dt)
+  {
+    Function<dim> *source = heat.settings.source;
+    if (source == nullptr)
+      return;
+    const ReferenceData &r = reference;
+    const unsigned int   n = r.n_scalar;
+    source->set_time(time);
+    for (std::size_t c = 0; c < r.centre.size(); ++c)
+      for (unsigned int q = 0; q < r.n_q; ++q)
+        {
+          const std::size_t   k    = c * r.n_q + q;
+          const unsigned int *dofs = &r.local_dofs[c * r.n_dofs];
+          // The point's current position and volume.
+          Point<dim> x = heat.points[k];
+          for (unsigned int s = 0; s < n; ++s)
+            for (unsigned int d = 0; d < dim; ++d)
+              x[d] += heat.shape_values[s * r.n_q + q] *
+                      displacement.local_element(dofs[s * dim + d]);
+          const double power =
+            source->value(x) * determinant(deformation[k]) * r.JxW[k];
+          heat.step.generated += dt * power;
+          for (unsigned int s = 0; s < n; ++s)
+            conducted.local_element(dofs[s * dim]) +=
+              heat.shape_values[s * r.n_q + q] * power;
+        }
+  }
+
+  template <int dim>
+  void
+  SolidRegion<dim>::add_boundary_heat(const double time, const double dt)
+  {
+    if (!heat.settings.fluxes.empty())
+      {
+        const std::vector<double> qA = face_shares(heat.settings.fluxes);
+        const double factor = (*heat.settings.flux_curve)(time + 0.5 * dt);
+        for (unsigned int k = 0; k < nodes.size(); ++k)
+          {
+            add_conducted_heat(k, factor * qA[k]);
+            heat.step.given += dt * factor * qA[k];
+          }
+      }
+    if (heat.settings.convection.empty())
+      return;
+    heat.convective = face_shares(heat.settings.convection);
+    for (unsigned int k = 0; k < nodes.size(); ++k)
+      if (nodes[k].kind == Node::Kind::bonded)
+        {
+          const double power =
+            heat.convective[k] * (heat.settings.ambient - heat.at_start[k]);
+          add_conducted_heat(k, power);
+          heat.step.given += dt * power;
+        }
   }
 
   template <int dim>
@@ -105,15 +236,18 @@ namespace dealmpm
 
   template <int dim>
   void
-  SolidRegion<dim>::conduct()
+  SolidRegion<dim>::conduct(const double time, const double dt)
   {
     heat.at_start.resize(nodes.size());
     for (unsigned int k = 0; k < nodes.size(); ++k)
       heat.at_start[k] = temperature_of(nodes[k]);
+    heat.step = HeatStep();
     conducted = 0;
     for (std::size_t c = 0; c < reference.centre.size(); ++c)
       cell_conduction(c);
+    add_source(time, dt);
     conducted.compress(VectorOperation::add);
+    add_boundary_heat(time, dt);
   }
 
   template <int dim>
@@ -125,7 +259,7 @@ namespace dealmpm
     // there): C (T_held - T) and, unless bonded (its Q went to the grid,
     // whose increment is in T), -dt Q.
     std::vector<bool> held(nodes.size(), false);
-    HeatStep          step;
+    HeatStep          step = heat.step;
     for (const auto &[k, T] : heat.fixed_nodes)
       {
         held[k] = true;
@@ -139,8 +273,15 @@ namespace dealmpm
     for (unsigned int k = 0; k < nodes.size(); ++k)
       if (!held[k] && nodes[k].kind != Node::Kind::bonded)
         {
-          const double dT =
-            dt * conducted_heat_of(nodes[k]) / heat_capacity_of(nodes[k]);
+          // Convection at the new temperature (backward Euler): stable
+          // however light the node.
+          const double hA = heat.convective.empty() ? 0. : heat.convective[k];
+          const double to_ambient =
+            heat.settings.ambient - temperature_of(nodes[k]);
+          const double dT = dt *
+                            (conducted_heat_of(nodes[k]) + hA * to_ambient) /
+                            (heat_capacity_of(nodes[k]) + dt * hA);
+          step.given += dt * hA * (to_ambient - dT);
           for (unsigned int d = 0; d < dim; ++d)
             temperature.local_element(nodes[k].dof[d]) += dT;
         }
@@ -168,6 +309,7 @@ namespace dealmpm
         expand(conducted);
       }
     temperature.update_ghost_values();
+    set_model_temperatures();
     return step;
   }
 
@@ -257,7 +399,7 @@ namespace dealmpm
 #define DEALMPM_INSTANTIATE(dim)                                     \
   template void SolidRegion<dim>::use_heat(const HeatSettings &,     \
                                            const Function<dim> &);   \
-  template void SolidRegion<dim>::conduct();                         \
+  template void SolidRegion<dim>::conduct(double, double);           \
   template typename SolidRegion<dim>::HeatStep                       \
                 SolidRegion<dim>::advance_temperature(double);       \
   template void SolidRegion<dim>::add_to_temperatures(               \

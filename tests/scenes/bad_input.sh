@@ -290,6 +290,14 @@ expect 2 "FEM region 1/Fixed temperatures.*no entries unless 'Effects' lists 'he
   -s "FEM region 1/Fixed temperatures=0: 300"
 expect 2 "FEM region 1/Fixed temperatures.*boundary ids of the region's mesh \(0, 1, 2, 3\), not 7" "$fem" "${s[@]}" \
   "${heat[@]}" -s "FEM region 1/Fixed temperatures=7: 300"
+expect 2 "FEM region 1/Heat fluxes.*no entries unless 'Effects' lists 'heat conduction'" "$fem" "${s[@]}" \
+  -s "FEM region 1/Heat fluxes=0: 300"
+expect 2 "FEM region 1/Heat fluxes=0: x'.*value a number \(W/m\^2\)" "$fem" "${s[@]}" \
+  "${heat[@]}" -s "FEM region 1/Heat fluxes=0: x"
+expect 2 "FEM region 1/Convection=0: -1'.*value a number >= 0" "$fem" "${s[@]}" \
+  "${heat[@]}" -s "FEM region 1/Convection=0: -1"
+expect 2 "FEM region 1/Convection.*boundary ids of the region's mesh \(0, 1, 2, 3\), not 7" "$fem" "${s[@]}" \
+  "${heat[@]}" -s "FEM region 1/Convection=7: 10"
 three=(-s "Number of materials=3")
 for m in 2 3; do
   three+=(-s "Material $m/Model=linear elastic" -s "Material $m/Density=1" -s "Material $m/linear elastic/Young's modulus=1")

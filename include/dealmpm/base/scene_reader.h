@@ -67,6 +67,10 @@ namespace dealmpm
     /** get_id_map() with values that are numbers >= 0. */
     std::map<unsigned int, double>
     get_id_nonnegatives(const std::string &entry) const;
+    /** get_id_map() with values that are finite numbers (@p unit for
+     * the message). */
+    std::map<unsigned int, double>
+    get_id_numbers(const std::string &entry, const std::string &unit) const;
 
     /** Exactly dim comma-separated numbers. */
     template <int dim>
@@ -107,6 +111,12 @@ namespace dealmpm
     path_of(const std::string &entry) const;
 
   private:
+    /** get_id_map() with finite numbers (>= 0 if @p nonnegative). */
+    std::map<unsigned int, double>
+    id_values(const std::string &entry,
+              const std::string &expected,
+              const bool         nonnegative) const;
+
     ParameterHandler                  &prm;
     std::string                        file;
     std::vector<std::string>           sections;

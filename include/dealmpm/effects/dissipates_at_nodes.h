@@ -18,7 +18,7 @@ namespace dealmpm
 
     /** The work (J, per metre in 2D) dissipated at this rank's locally
      * owned nodes in this step's after_grid_update: (local index, work),
-     * a node at most once. */
+     * a node may appear more than once (the works add up). */
     const std::vector<std::pair<unsigned int, double>> &
     dissipated_at_nodes() const
     {

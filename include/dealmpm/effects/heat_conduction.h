@@ -3,6 +3,7 @@
 #include <deal.II/base/function_parser.h>
 
 #include <dealmpm/base/load_curve.h>
+#include <dealmpm/effects/dissipates_at_nodes.h>
 #include <dealmpm/effects/effect.h>
 #include <dealmpm/grid/boundary_nodes.h>
 #include <dealmpm/materials/thermal_expansion.h>
@@ -59,6 +60,15 @@ namespace dealmpm
     /** The inverse of its conduction's stable step (this rank's part). */
     virtual double
     signal_rate() const = 0;
+
+    /** What dissipates work at the grid's nodes on its behalf (the
+     * friction of an FEM region's contact), heating them as the effects
+     * that do; none by default. */
+    virtual const DissipatesAtNodes *
+    friction_source() const
+    {
+      return nullptr;
+    }
   };
 
   /**
@@ -246,6 +256,33 @@ namespace dealmpm
     {
       return expanding.empty() ? nullptr : expanding[m];
     }
+    /** Where material @p m's model keeps its own temperature among its
+     * internal variables (Johnson-Cook), which conduction sets; or -1. */
+    int
+    model_temperature_index(const unsigned int m) const
+    {
+      return johnson_cook_temperature.empty() ? -1 :
+                                                johnson_cook_temperature[m];
+    }
+
+    /** The boundaries' flux curve and ambient temperature, and the
+     * 'Heat source' (none when "0"), for FEM regions' boundaries and
+     * volume. */
+    const LoadCurve &
+    flux_curve() const
+    {
+      return settings.flux_curve;
+    }
+    double
+    ambient_temperature() const
+    {
+      return settings.ambient_temperature;
+    }
+    Function<dim> *
+    heat_source() const
+    {
+      return has_source ? &source : nullptr;
+    }
 
     /** @p partner's heat joins the grid's in every step from now on (it
      * outlives the effect's steps); its heat counts as stored. */
@@ -311,7 +348,7 @@ namespace dealmpm
 
     Settings                    settings;
     mutable FunctionParser<dim> initial;
-    FunctionParser<dim>         source;
+    mutable FunctionParser<dim> source; ///< its time set where used
     bool                        has_source = false;
     /** Each material's model whose dissipated work heats it (before any
      * wrapper of this effect), or none; where a Johnson-Cook model keeps

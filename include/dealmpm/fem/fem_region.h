@@ -47,8 +47,11 @@ namespace dealmpm
     std::map<types::boundary_id, unsigned int> bonded_to;
     /** Contact boundary id -> friction coefficient. */
     std::map<types::boundary_id, double> contact;
-    /** Boundary id -> temperature held there (effect 'heat conduction'). */
-    std::map<types::boundary_id, double> fixed_temperatures;
+    /** Boundary id -> temperature held there, heat flux into the region
+     * (W/m^2), convection coefficient (W/m^2/K) (effect 'heat
+     * conduction'). */
+    std::map<types::boundary_id, double> fixed_temperatures, heat_fluxes,
+      convection;
   };
 
   /** A region of the run: its settings, the solid and, when it has

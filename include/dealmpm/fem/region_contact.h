@@ -1,5 +1,6 @@
 #pragma once
 
+#include <dealmpm/effects/dissipates_at_nodes.h>
 #include <dealmpm/fem/nodes_on_grid.h>
 #include <dealmpm/fem/solid_region.h>
 #include <dealmpm/grid/background_grid.h>
@@ -44,9 +45,13 @@ namespace dealmpm
    * surface's normal (Huang et al. 2011's distance check), must close
    * within the step, gap + (v_mpm - v_fe) . n dt < 0; a particle's
    * domain is its initial volume's cube carried by F.
+   *
+   * The work friction dissipates in a step is listed at the grid's nodes
+   * where it acts (DissipatesAtNodes), for heat conduction to heat the
+   * MPM material there.
    */
   template <int dim>
-  class RegionContact
+  class RegionContact : public DissipatesAtNodes
   {
   public:
     /** The nodes of @p region on the ids of @p friction (id -> mu). */

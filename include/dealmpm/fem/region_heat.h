@@ -2,6 +2,7 @@
 
 #include <dealmpm/effects/heat_conduction.h>
 #include <dealmpm/fem/bonded_coupling.h>
+#include <dealmpm/fem/region_contact.h>
 #include <dealmpm/fem/solid_region.h>
 
 namespace dealmpm
@@ -21,13 +22,20 @@ namespace dealmpm
    * its next step's conducted heat carries -D / dt there, and the heat
    * stored counts D out meanwhile, so the heat crossing the bond is
    * conserved to round-off.
+   *
+   * The friction of the region's contact heats the MPM material at the
+   * grid's nodes where it acts (friction_source()), by the effect's
+   * 'Friction heat' share: the region, which takes no heat across a
+   * contact, gets none of it.
    */
   template <int dim>
   class RegionHeat : public HeatPartner<dim>
   {
   public:
-    /** @p bonded: the region's bonded coupling, or none. */
-    RegionHeat(SolidRegion<dim> &solid, BondedCoupling<dim> *bonded);
+    /** @p bonded, @p contact: the region's couplings, or none. */
+    RegionHeat(SolidRegion<dim>         &solid,
+               BondedCoupling<dim>      *bonded,
+               const RegionContact<dim> *contact);
 
     void
     add_capacity(NodalVector &capacity, NodalVector &heat) const override;
@@ -35,10 +43,11 @@ namespace dealmpm
     void
     add_power(NodalVector &power) const override;
 
-    /** The region's conducted heat of the step (before its bonded nodes
-     * are deposited), with what they owe the grid. Collective. */
+    /** The region's conducted heat of the step from @p time (before its
+     * bonded nodes are deposited), with what they owe the grid.
+     * Collective. */
     void
-    conduct(const double dt);
+    conduct(const double time, const double dt);
 
     typename HeatPartner<dim>::Flows
     advance(const NodalVector &increment,
@@ -55,8 +64,15 @@ namespace dealmpm
       return solid.heat_signal_rate();
     }
 
+    const DissipatesAtNodes *
+    friction_source() const override
+    {
+      return contact;
+    }
+
   private:
-    SolidRegion<dim>    &solid;
-    BondedCoupling<dim> *bonded;
+    SolidRegion<dim>         &solid;
+    BondedCoupling<dim>      *bonded;
+    const RegionContact<dim> *contact;
   };
 } // namespace dealmpm

@@ -362,10 +362,25 @@ namespace dealmpm
        * growth per kelvin (0: none). */
       unsigned int stretch_index      = 0;
       double       stretch_per_kelvin = 0;
+      /** Heat flux into the region (W/m^2) on its boundary ids, times
+       * (*flux_curve)(t) at mid-step; convection coefficients h (W/m^2/K)
+       * on its ids, to the ambient temperature; both over the current
+       * area. */
+      std::map<types::boundary_id, double> fluxes, convection;
+      const LoadCurve                     *flux_curve = nullptr;
+      double                               ambient    = 0;
+      /** Heat generated per unit current volume (W/m^3), a function of
+       * the current position and the time, or none. */
+      Function<dim> *source = nullptr;
+      /** Where the model keeps a temperature of its own among the
+       * internal variables (Johnson-Cook), which the nodes' then set at
+       * every point; -1: none. */
+      int model_temperature = -1;
     };
 
-    /** What advance_temperature() counted in the step: the heat the held
-     * nodes gave and the heat the material's work generated. */
+    /** What advance_temperature() counted in the step: the heat the
+     * boundaries gave (held nodes, fluxes, convection) and the heat the
+     * material's work and the source generated. */
     struct HeatStep
     {
       double given     = 0;
@@ -385,12 +400,14 @@ namespace dealmpm
     }
 
     /** Q from the current temperatures and deformation (the step's
-     * start: the increments advance_temperature() finds are from here).
-     * Collective. */
+     * start: the increments advance_temperature() finds are from here),
+     * with the source's power at @p time and the fluxes' at mid-step;
+     * the convection's share of the faces' area per node. Collective. */
     void
-    conduct();
+    conduct(const double time, const double dt);
 
-    /** T += dt Q / C at the nodes neither held nor bonded, then the heat
+    /** T += dt Q / C at the nodes neither held nor bonded (with
+     * convection at the new temperature, backward Euler), then the heat
      * of the material's work since the last call at every node not held;
      * the thermal stretch of an expanding material grows by each
      * point's temperature increment in the step. Returns what the held
@@ -648,6 +665,26 @@ namespace dealmpm
      * the start, and after a saved state is loaded). */
     void
     mark_work_heated();
+    /** Per owned node (index into nodes), sum over the faces with an id
+     * in @p per_id of per_id[id] times the node's share of the face's
+     * current area (Nanson). Collective. */
+    std::vector<double>
+    face_shares(const std::map<types::boundary_id, double> &per_id) const;
+    /** The source's power into 'conducted' (before its compress), its
+     * heat over the step into heat.step. */
+    void
+    add_source(const double time, const double dt);
+    /** The fluxes' power into 'conducted' (owned entries, after its
+     * compress) and the nodes' h A (heat.convective); convection is
+     * explicit at the bonded nodes (their Q goes to the grid), backward
+     * Euler at the others in advance_temperature(). The heat given over
+     * the step into heat.step. Collective. */
+    void
+    add_boundary_heat(const double time, const double dt);
+    /** Every point's model temperature (settings.model_temperature) from
+     * the nodes'. */
+    void
+    set_model_temperatures();
     /** Each point's thermal stretch grows by its share of the nodes'
      * temperature increments (@p increment, with ghosts). */
     void
@@ -726,6 +763,15 @@ namespace dealmpm
       std::vector<double> at_start;
       /** Per node, the heat it owes the grid (bonded nodes). */
       std::vector<double> debt;
+      /** Per owned cell and quadrature point, its reference position
+       * (with a source). */
+      std::vector<Point<dim>> points;
+      /** Per node, h A to the ambient temperature (conduct(); empty
+       * without convection). */
+      std::vector<double> convective;
+      /** What conduct() counted for the step (fluxes, bonded
+       * convection, source). */
+      HeatStep step;
     } heat;
   };
 } // namespace dealmpm
