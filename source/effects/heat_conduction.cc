@@ -238,7 +238,7 @@ namespace dealmpm
       {
         double &T_i        = temperature.local_element(fixed_nodes[j].first);
         mapped_at_fixed[j] = T_i;
-        T_i                = fixed_nodes[j].second;
+        T_i                = held_factor * fixed_nodes[j].second;
       }
     temperature.update_ghost_values();
   }
@@ -248,6 +248,9 @@ namespace dealmpm
   HeatConduction<dim>::after_grid_update(const EffectContext<dim> &state,
                                          NodalFields<dim> & /*fields*/)
   {
+    held_factor = settings.temperature_curve(state.time + state.dt);
+    ambient     = settings.ambient_temperature *
+              settings.ambient_curve(state.time + state.dt);
     map_temperature(state);
     const ParticleSet<dim> &particles = state.particles;
     const Stencil<dim>     &stencil   = state.stencil;
@@ -305,9 +308,10 @@ namespace dealmpm
     for (unsigned int j = 0; j < fixed_nodes.size(); ++j)
       {
         const unsigned int i = fixed_nodes[j].first;
-        heat_in += capacity.local_element(i) *
-                     (fixed_nodes[j].second - mapped_at_fixed[j]) -
-                   dt * increment.local_element(i);
+        heat_in +=
+          capacity.local_element(i) *
+            (held_factor * fixed_nodes[j].second - mapped_at_fixed[j]) -
+          dt * increment.local_element(i);
       }
     // Convection at the node's new temperature (backward Euler): stable
     // at any step however little material a wall node holds, and at a
@@ -317,8 +321,7 @@ namespace dealmpm
         const double C = capacity.local_element(i);
         if (!(C > 0))
           continue;
-        const double to_ambient =
-          settings.ambient_temperature - temperature.local_element(i);
+        const double to_ambient = ambient - temperature.local_element(i);
         const double dT =
           dt * (increment.local_element(i) + hA * to_ambient) / (C + dt * hA);
         heat_in += dt * hA * (to_ambient - dT);
@@ -333,13 +336,14 @@ namespace dealmpm
       }
     for (unsigned int j = 0; j < fixed_nodes.size(); ++j)
       increment.local_element(fixed_nodes[j].first) =
-        fixed_nodes[j].second - mapped_at_fixed[j];
+        held_factor * fixed_nodes[j].second - mapped_at_fixed[j];
     increment.update_ghost_values();
     // The nodes' new temperature, whose gradient the particles take.
     for (unsigned int i = 0; i < n; ++i)
       temperature.local_element(i) += increment.local_element(i);
     for (unsigned int j = 0; j < fixed_nodes.size(); ++j)
-      temperature.local_element(fixed_nodes[j].first) = fixed_nodes[j].second;
+      temperature.local_element(fixed_nodes[j].first) =
+        held_factor * fixed_nodes[j].second;
     temperature.update_ghost_values();
   }
 
@@ -524,7 +528,20 @@ namespace dealmpm
                         "293.15",
                         Patterns::Double(),
                         "T_ambient (K) of the convection (the FEM "
-                        "regions' too).");
+                        "regions' too), times the Ambient curve.");
+      prm.declare_entry("Temperature curve",
+                        "",
+                        Patterns::Anything(),
+                        "Factor on the Fixed temperatures (the grid's and "
+                        "the FEM regions') against time, 't0: f0, t1: "
+                        "f1, ...' (piecewise linear), at each step's end; "
+                        "e.g. '0: 1, 10: 1.5' takes 300 K to 450 K over "
+                        "10 s; empty: 1.");
+      prm.declare_entry("Ambient curve",
+                        "",
+                        Patterns::Anything(),
+                        "Factor on the Ambient temperature against time, "
+                        "like the Temperature curve; empty: 1.");
     }
 
     /** The entries of section Heat conduction. */
@@ -616,6 +633,8 @@ namespace dealmpm
       for (const auto &[id, h] : reader.get_id_nonnegatives("Convection"))
         s.convection[static_cast<types::boundary_id>(id)] = h;
       s.ambient_temperature = reader.get_double("Ambient temperature");
+      s.temperature_curve   = LoadCurve::read(reader, "Temperature curve");
+      s.ambient_curve       = LoadCurve::read(reader, "Ambient curve");
       return s;
     }
   } // namespace
@@ -629,8 +648,8 @@ namespace dealmpm
       "temperature carried by the particles and conducted through the "
       "grid (section Heat conduction: Initial temperature, Conductivity, "
       "Specific heat, Thermal expansion, Heat source, Fixed "
-      "temperatures, Heat fluxes, Flux curve, Convection, Ambient "
-      "temperature).",
+      "temperatures, Temperature curve, Heat fluxes, Flux curve, "
+      "Convection, Ambient temperature, Ambient curve).",
       declare_heat_parameters,
       [](SceneReader &reader) -> std::unique_ptr<Effect<dim>> {
         return std::make_unique<HeatConduction<dim>>(

@@ -433,6 +433,8 @@ namespace dealmpm
       settings.convection        = s.convection;
       settings.flux_curve        = &heat->flux_curve();
       settings.ambient           = heat->ambient_temperature();
+      settings.temperature_curve = &heat->temperature_curve();
+      settings.ambient_curve     = &heat->ambient_curve();
       settings.source            = heat->heat_source();
       settings.model_temperature = heat->model_temperature_index(s.material);
       if (const auto *expanding = heat->expanding_model(s.material))

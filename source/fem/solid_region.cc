@@ -49,16 +49,9 @@ namespace dealmpm
           const unsigned int *dofs = &r.local_dofs[c * r.n_dofs];
           for (unsigned int q = 0; q < r.n_face_q; ++q)
             {
-              const std::size_t    k = face * r.n_face_q + q;
-              const Tensor<2, dim> F =
-                unit_symmetric_tensor<dim>() +
-                reference_gradient(displacement,
-                                   c,
-                                   &r.face_grad[k * r.n_scalar]);
-              // Nanson: n da = J F^-T N dA.
-              const Tensor<1, dim> n_da =
-                determinant(F) * transpose(invert(F)) * r.face_normal_dA[k];
-              const double *N = &r.face_value[k * r.n_scalar];
+              const std::size_t    k    = face * r.n_face_q + q;
+              const Tensor<1, dim> n_da = current_normal_area(face, q);
+              const double        *N    = &r.face_value[k * r.n_scalar];
               for (unsigned int i = 0; i < r.n_dofs; ++i)
                 a.local_element(dofs[i]) +=
                   N[r.scalar[i]] * n_da[r.component[i]];
@@ -69,6 +62,21 @@ namespace dealmpm
     for (unsigned int k = 0; k < nodes.size(); ++k)
       normals[k] = node_vector(a, nodes[k]);
     return normals;
+  }
+
+  template <int dim>
+  Tensor<1, dim>
+  SolidRegion<dim>::current_normal_area(const std::size_t  face,
+                                        const unsigned int q) const
+  {
+    const ReferenceData &r = reference;
+    const std::size_t    k = face * r.n_face_q + q;
+    const Tensor<2, dim> F = unit_symmetric_tensor<dim>() +
+                             reference_gradient(displacement,
+                                                r.face_cell[face],
+                                                &r.face_grad[k * r.n_scalar]);
+    // Nanson: n da = J F^-T N dA.
+    return determinant(F) * transpose(invert(F)) * r.face_normal_dA[k];
   }
 
   template <int dim>

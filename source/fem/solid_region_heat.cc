@@ -1,6 +1,7 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 
+#include <dealmpm/base/smallest_stretch.h>
 #include <dealmpm/fem/solid_region.h>
 
 #include <algorithm>
@@ -76,24 +77,31 @@ namespace dealmpm
   }
 
   template <int dim>
+  double
+  SolidRegion<dim>::value_at_point(
+    const LinearAlgebra::distributed::Vector<double> &v,
+    const std::size_t                                 c,
+    const unsigned int                                q) const
+  {
+    const ReferenceData &r     = reference;
+    double               value = 0;
+    for (unsigned int s = 0; s < r.n_scalar; ++s)
+      value += heat.shape_values[s * r.n_q + q] *
+               v.local_element(r.local_dofs[c * r.n_dofs + s * dim]);
+    return value;
+  }
+
+  template <int dim>
   void
   SolidRegion<dim>::set_model_temperatures()
   {
     if (heat.settings.model_temperature < 0)
       return;
-    const ReferenceData &r = reference;
-    const unsigned int   n = r.n_scalar;
-    for (std::size_t c = 0; c < r.centre.size(); ++c)
-      for (unsigned int q = 0; q < r.n_q; ++q)
-        {
-          double T = 0;
-          for (unsigned int s = 0; s < n; ++s)
-            T +=
-              heat.shape_values[s * r.n_q + q] *
-              temperature.local_element(r.local_dofs[c * r.n_dofs + s * dim]);
-          internal[(c * r.n_q + q) * n_internal +
-                   heat.settings.model_temperature] = T;
-        }
+    for (std::size_t c = 0; c < reference.centre.size(); ++c)
+      for (unsigned int q = 0; q < reference.n_q; ++q)
+        internal[(c * reference.n_q + q) * n_internal +
+                 heat.settings.model_temperature] =
+          value_at_point(temperature, c, q);
   }
 
   template <int dim>
@@ -112,16 +120,8 @@ namespace dealmpm
           const unsigned int c = r.face_cell[face];
           for (unsigned int q = 0; q < r.n_face_q; ++q)
             {
-              const std::size_t    k = face * r.n_face_q + q;
-              const Tensor<2, dim> F =
-                unit_symmetric_tensor<dim>() +
-                reference_gradient(displacement,
-                                   c,
-                                   &r.face_grad[k * r.n_scalar]);
-              // Nanson: n da = J F^-T N dA.
-              const double da =
-                (determinant(F) * transpose(invert(F)) * r.face_normal_dA[k])
-                  .norm();
+              const std::size_t k  = face * r.n_face_q + q;
+              const double      da = current_normal_area(face, q).norm();
               for (unsigned int s = 0; s < r.n_scalar; ++s)
                 a.local_element(r.local_dofs[c * r.n_dofs + s * dim]) +=
                   found->second * r.face_value[k * r.n_scalar + s] * da;
@@ -185,7 +185,7 @@ namespace dealmpm
       if (nodes[k].kind == Node::Kind::bonded)
         {
           const double power =
-            heat.convective[k] * (heat.settings.ambient - heat.at_start[k]);
+            heat.convective[k] * (heat.ambient - heat.at_start[k]);
           add_conducted_heat(k, power);
           heat.step.given += dt * power;
         }
@@ -241,8 +241,13 @@ namespace dealmpm
     heat.at_start.resize(nodes.size());
     for (unsigned int k = 0; k < nodes.size(); ++k)
       heat.at_start[k] = temperature_of(nodes[k]);
-    heat.step = HeatStep();
-    conducted = 0;
+    heat.step         = HeatStep();
+    const auto factor = [&](const LoadCurve *curve) {
+      return curve == nullptr ? 1. : (*curve)(time + dt);
+    };
+    heat.held_factor = factor(heat.settings.temperature_curve);
+    heat.ambient = heat.settings.ambient * factor(heat.settings.ambient_curve);
+    conducted    = 0;
     for (std::size_t c = 0; c < reference.centre.size(); ++c)
       cell_conduction(c);
     add_source(time, dt);
@@ -260,9 +265,10 @@ namespace dealmpm
     // whose increment is in T), -dt Q.
     std::vector<bool> held(nodes.size(), false);
     HeatStep          step = heat.step;
-    for (const auto &[k, T] : heat.fixed_nodes)
+    for (const auto &[k, T_held] : heat.fixed_nodes)
       {
-        held[k] = true;
+        const double T = heat.held_factor * T_held;
+        held[k]        = true;
         step.given +=
           heat_capacity_of(nodes[k]) * (T - temperature_of(nodes[k]));
         if (nodes[k].kind != Node::Kind::bonded)
@@ -276,9 +282,8 @@ namespace dealmpm
           // Convection at the new temperature (backward Euler): stable
           // however light the node.
           const double hA = heat.convective.empty() ? 0. : heat.convective[k];
-          const double to_ambient =
-            heat.settings.ambient - temperature_of(nodes[k]);
-          const double dT = dt *
+          const double to_ambient = heat.ambient - temperature_of(nodes[k]);
+          const double dT         = dt *
                             (conducted_heat_of(nodes[k]) + hA * to_ambient) /
                             (heat_capacity_of(nodes[k]) + dt * hA);
           step.given += dt * hA * (to_ambient - dT);
@@ -345,19 +350,11 @@ namespace dealmpm
   SolidRegion<dim>::expand(
     const LinearAlgebra::distributed::Vector<double> &increment)
   {
-    const ReferenceData &r = reference;
-    const unsigned int   n = r.n_scalar;
-    for (std::size_t c = 0; c < r.centre.size(); ++c)
-      for (unsigned int q = 0; q < r.n_q; ++q)
-        {
-          double dT = 0;
-          for (unsigned int s = 0; s < n; ++s)
-            dT += heat.shape_values[s * r.n_q + q] *
-                  increment.local_element(r.local_dofs[c * r.n_dofs + s * dim]);
-          internal[(c * r.n_q + q) * n_internal +
-                   heat.settings.stretch_index] +=
-            heat.settings.stretch_per_kelvin * dT;
-        }
+    for (std::size_t c = 0; c < reference.centre.size(); ++c)
+      for (unsigned int q = 0; q < reference.n_q; ++q)
+        internal[(c * reference.n_q + q) * n_internal +
+                 heat.settings.stretch_index] +=
+          heat.settings.stretch_per_kelvin * value_at_point(increment, c, q);
   }
 
   template <int dim>
@@ -388,12 +385,24 @@ namespace dealmpm
   {
     if (!carries_heat() || heat.settings.conductivity == 0)
       return 0;
-    double h = std::numeric_limits<double>::max();
-    for (const double d : reference.min_vertex_distance)
-      h = std::min(h, d / fe.degree);
-    return reference.min_vertex_distance.empty() ?
-             0. :
-             2 * dim * heat.settings.conductivity / (heat.rho_c * h * h);
+    // On the reference cells the diffusivity is k J C^-1 / (rho_0 c): at
+    // most J / lambda_min^2 times k / (rho_0 c), lambda_min the smallest
+    // principal stretch (a region squeezed to a tenth conducts across its
+    // reference spacing 100 times faster, and took the reference
+    // configuration's step before: it diverged).
+    double largest = 0;
+    for (std::size_t c = 0; c < reference.centre.size(); ++c)
+      {
+        const double h = reference.min_vertex_distance[c] / fe.degree;
+        for (unsigned int q = 0; q < reference.n_q; ++q)
+          {
+            const Tensor<2, dim> &F = deformation[c * reference.n_q + q];
+            largest =
+              std::max(largest,
+                       determinant(F) / (smallest_stretch_squared(F) * h * h));
+          }
+      }
+    return 2 * dim * heat.settings.conductivity / heat.rho_c * largest;
   }
 
 #define DEALMPM_INSTANTIATE(dim)                                     \

@@ -286,6 +286,8 @@ expect 2 "Taylor-Quinney coefficient=2'.*from 0 to 1" "$scene" "${s[@]}" "${heat
 expect 2 "Convection=9: 1'.*boundary ids the grid has" "$scene" "${s[@]}" "${heat[@]}" -s "Heat conduction/Convection=9: 1"
 expect 2 "Heat source=sin\('.*expression of x,y,t" "$scene" "${s[@]}" "${heat[@]}" -s "Heat conduction/Heat source=sin("
 expect 2 "Flux curve=1: 2, 0: 1'.*increasing times" "$scene" "${s[@]}" "${heat[@]}" -s "Heat conduction/Flux curve=1: 2, 0: 1"
+expect 2 "Temperature curve=1: 2, 0: 1'.*increasing times" "$scene" "${s[@]}" "${heat[@]}" -s "Heat conduction/Temperature curve=1: 2, 0: 1"
+expect 2 "Ambient curve=x'.*expected a table" "$scene" "${s[@]}" "${heat[@]}" -s "Heat conduction/Ambient curve=x"
 expect 2 "FEM region 1/Fixed temperatures.*no entries unless 'Effects' lists 'heat conduction'" "$fem" "${s[@]}" \
   -s "FEM region 1/Fixed temperatures=0: 300"
 expect 2 "FEM region 1/Fixed temperatures.*boundary ids of the region's mesh \(0, 1, 2, 3\), not 7" "$fem" "${s[@]}" \

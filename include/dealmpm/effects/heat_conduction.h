@@ -123,6 +123,10 @@ namespace dealmpm
        * ambient temperature. */
       std::map<types::boundary_id, double> convection;
       double                               ambient_temperature = 293.15;
+      /** Factors on the fixed temperatures (the grid's and the FEM
+       * regions') and on the ambient temperature against time, taken at
+       * the step's end. */
+      LoadCurve temperature_curve, ambient_curve;
       /** Linear expansion coefficient (1/K), one or one per material. */
       std::vector<double> thermal_expansion = {0.};
       /** Heat generated per unit volume (W/m^3), an expression of x, y
@@ -278,6 +282,16 @@ namespace dealmpm
     {
       return settings.ambient_temperature;
     }
+    const LoadCurve &
+    temperature_curve() const
+    {
+      return settings.temperature_curve;
+    }
+    const LoadCurve &
+    ambient_curve() const
+    {
+      return settings.ambient_curve;
+    }
     Function<dim> *
     heat_source() const
     {
@@ -361,6 +375,9 @@ namespace dealmpm
     /** Locally owned nodes on a fixed-temperature boundary, each once. */
     std::vector<std::pair<unsigned int, double>> fixed_nodes;
     std::vector<double>                          mapped_at_fixed;
+    /** The step's temperature_curve and ambient temperature (at its
+     * end). */
+    double held_factor = 1, ambient = 0;
     /** Locally owned nodes on the flux (q A) and convection (h A)
      * boundaries, A a node's share of the faces' area; held nodes have
      * no convection. */

@@ -369,6 +369,9 @@ namespace dealmpm
       std::map<types::boundary_id, double> fluxes, convection;
       const LoadCurve                     *flux_curve = nullptr;
       double                               ambient    = 0;
+      /** Factors on the fixed temperatures and the ambient temperature
+       * against time (at the step's end), or none: 1. */
+      const LoadCurve *temperature_curve = nullptr, *ambient_curve = nullptr;
       /** Heat generated per unit current volume (W/m^3), a function of
        * the current position and the time, or none. */
       Function<dim> *source = nullptr;
@@ -457,9 +460,10 @@ namespace dealmpm
     double
     stored_heat() const;
 
-    /** 2 dim k / (rho c h^2) of this rank's cells (h the smallest node
-     * spacing in the reference configuration), the inverse of the
-     * conduction's stable step; 0 without heat. */
+    /** 2 dim k J / (rho c (lambda_min h)^2) at this rank's points (h
+     * the cell's node spacing in the reference configuration, lambda_min
+     * the smallest stretch), the inverse of the conduction's stable
+     * step; 0 without heat. */
     double
     heat_signal_rate() const;
 
@@ -685,6 +689,17 @@ namespace dealmpm
      * the nodes'. */
     void
     set_model_temperatures();
+    /** The scalar field @p v (at each node's x dof, with ghosts) at
+     * quadrature point @p q of owned cell @p c. */
+    double
+    value_at_point(const LinearAlgebra::distributed::Vector<double> &v,
+                   const std::size_t                                 c,
+                   const unsigned int                                q) const;
+    /** The current outward normal times area of point @p q of boundary
+     * face @p face (Nanson: J F^-T N dA; displacement's ghosts
+     * updated). */
+    Tensor<1, dim>
+    current_normal_area(const std::size_t face, const unsigned int q) const;
     /** Each point's thermal stretch grows by its share of the nodes'
      * temperature increments (@p increment, with ghosts). */
     void
@@ -772,6 +787,9 @@ namespace dealmpm
       /** What conduct() counted for the step (fluxes, bonded
        * convection, source). */
       HeatStep step;
+      /** The step's factor on the fixed temperatures and its ambient
+       * temperature (conduct()). */
+      double held_factor = 1, ambient = 0;
     } heat;
   };
 } // namespace dealmpm
