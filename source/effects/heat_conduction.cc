@@ -430,10 +430,9 @@ namespace dealmpm
           temperature.local_element(i) += heat / C;
           generated += heat;
         }
-    const bool any = !sources.empty();
     // The same effects and partners on every rank: all of them
     // exchange, or none.
-    if (any)
+    if (!sources.empty())
       {
         increment.update_ghost_values();
         temperature.update_ghost_values();

@@ -375,8 +375,8 @@ namespace dealmpm
     /** Locally owned nodes on a fixed-temperature boundary, each once. */
     std::vector<std::pair<unsigned int, double>> fixed_nodes;
     std::vector<double>                          mapped_at_fixed;
-    /** The step's temperature_curve and ambient temperature (at its
-     * end). */
+    /** The step's temperature_curve factor and ambient temperature (at
+     * its end). */
     double held_factor = 1, ambient = 0;
     /** Locally owned nodes on the flux (q A) and convection (h A)
      * boundaries, A a node's share of the faces' area; held nodes have
