@@ -272,6 +272,15 @@ namespace dealmpm
       for (unsigned int e = 0; e < dim; ++e)
         if (d != e && std::abs(J[e][d]) > 1e-12 * c.h)
           box = false;
+    // A refined box cell's vertices are midpoints, off an axis by round-off
+    // (1e-17 m); its K must be exactly diagonal, or the sweeps take the
+    // general path in it (LinearWeights::is_box(): a 3D column refined once
+    // took 1,308 instead of 859 instructions per particle-step).
+    if (affine && box)
+      for (unsigned int d = 0; d < dim; ++d)
+        for (unsigned int e = 0; e < dim; ++e)
+          if (d != e)
+            J[e][d] = 0.;
     c.affine           = affine;
     c.inverse_jacobian = invert(J);
     if (!affine)
