@@ -41,14 +41,14 @@ namespace dealmpm
       Patterns::Anything(),
       "Rectangle: a grid of more cells is made of fewer coarse cells (Cells "
       "divided by the least power of two they share that leaves at most "
-      "this many) refined back to Cells. Every rank holds every coarse cell "
-      "(about 1 KB each) and only its share of the rest, so large grids need "
-      "this on many ranks. But a refined grid's order ran the column at "
-      "0.87-1.0 of the speed (18k-74k cells, one rank, benchmarks/README.md): "
-      "lower it on clusters, raise it on one machine. 'auto': 1e5, or 1 "
-      "(as few as the counts allow) when 'Adaptivity/Criteria' lists one: "
-      "p4est's balance across coarse cells is the largest part of a grid "
-      "change (3D, 16k cells: 8,000 coarse cells 290 ms, 125 190 ms).");
+      "this many) refined back to Cells. Every rank holds every coarse cell, "
+      "which costs about 250 B (2D) or 500-600 B (3D) more than a refined "
+      "cell, and only its share of the rest. 'auto': 1e4 (the column ran as "
+      "fast as with 1e5 and held 3-8 % less memory; 1, as few as the counts "
+      "allow, ran it at 0.92-1.0: benchmarks/README.md), or 1 when "
+      "'Adaptivity/Criteria' lists one: p4est's balance across coarse cells "
+      "is the largest part of a grid change (3D, 16k cells: 8,000 coarse "
+      "cells 290 ms, 125 190 ms).");
     prm.declare_entry("Global refinements",
                       "0",
                       Patterns::Integer(0, 12),
@@ -79,7 +79,7 @@ namespace dealmpm
     {
       const std::string entry = "Most coarse cells";
       if (reader.get(entry) == "auto")
-        return adaptive ? 1 : 1e5;
+        return adaptive ? 1 : 1e4;
       double value = 0;
       try
         {
@@ -119,8 +119,9 @@ namespace dealmpm
             ": the coarse grid (section 'Grid', its mesh file) differs from "
             "the saved run's (" +
             saved->file +
-            "; a checkpoint written before 2026-11-29, or of a scene with "
-            "'Adaptivity/Criteria' before 2026-11-30, when a rectangle had "
+            "; a checkpoint written before 2026-11-29, of a scene with "
+            "'Adaptivity/Criteria' before 2026-11-30, or of a rectangle of "
+            "1e4 to 1e5 cells before 2026-12-04, when such a rectangle had "
             "a coarse cell per cell, cannot be resumed: run it again)");
         // The saved cells and partition; a different number of ranks
         // gets the cells shared by count (the caller repartitions).

@@ -78,11 +78,22 @@ TEST(GridChange, RectangleIsFewCoarseCellsRefinedToTheScenesCells)
     expect_uniform_cells(grid, Tensor<1, 2>({0.00625, 0.00625}), 0);
   }
   {
-    // The default, at most 1e5 coarse cells: 61,440 cells stay their own
-    // coarse mesh.
+    // At most 1e5 coarse cells (the default before 2026-12-04): 61,440
+    // cells stay their own coarse mesh.
     auto simulation = scene_with_grid<2>(
       " set Most coarse cells = 1e5\n set Cells = 192, 320\n");
     EXPECT_EQ(simulation->background_grid().base_level, 0u);
+  }
+  {
+    // 'auto' is 1e4 without adaptivity: the same 3,840 coarse cells as
+    // above.
+    auto simulation = test::make_simulation<2>(
+      "subsection Grid\n set Upper corner = 1.2, 2\n set Cells = 192, 320\n"
+      "end\nsubsection Body 1\n set Lower corner = 0.1, 0.1\n"
+      " set Upper corner = 0.2, 0.2\nend\n");
+    const BackgroundGrid<2> &grid = simulation->background_grid();
+    EXPECT_EQ(grid.base_level, 2u);
+    EXPECT_EQ(grid.triangulation.n_cells(0), 3840u);
   }
   {
     // At most 1e4 cells: the grid is its own coarse mesh, as before.
@@ -150,7 +161,7 @@ TEST(GridChange, AdaptiveRectangleIsTheFewestCoarseCells)
 {
   // 'Most coarse cells = auto': with a criterion the rectangle is made of
   // as few coarse cells as its counts allow (p4est's balance across
-  // coarse cells is most of a grid change); without, of at most 1e5.
+  // coarse cells is most of a grid change); without, of at most 1e4.
   const std::string grid = "subsection Grid\n set Upper corner = 1.2, 2\n"
                            " set Cells = 24, 40\n";
   const std::string body = "subsection Body 1\n set Lower corner = 0.1, 0.1\n"

@@ -6,7 +6,9 @@
 #   particles and most others none; a trigger on the particle imbalance
 #   repartitioned at every check (24 times in 233 steps before 2026-11-30,
 #   and the 3D cube in a large box 159 times in 1,598 steps, 14x slower
-#   than 1 rank). Only the start's repartition is allowed;
+#   than 1 rank). Only the start's repartition is allowed, and none where
+#   the box is refined from coarse cells (its refinement shares the cells
+#   by the particles to come);
 # - a grid of 4 cells on 3 ranks, checked every step: no partition comes
 #   within the limit, so after the start's repartition the check waits for
 #   the imbalance to grow past the limit times what it reached;
@@ -30,11 +32,18 @@ expect() { # name found wanted-test wanted-text
   [ "$2" $3 ] || exit 1
 }
 
-box=(-s "Grid/Upper corner=20, 5" -s "Grid/Cells=400, 100" -s "Time/End time=0.5")
+# The box as its own coarse mesh (40,000 cells, above 'auto''s 1e4), so
+# that the start repartitions.
+box=(-s "Grid/Upper corner=20, 5" -s "Grid/Cells=400, 100" -s "Time/End time=0.5"
+  -s "Grid/Most coarse cells=1e5")
 for n in 2 3; do
   expect "block at rest in a large box, $n ranks" \
     "$(repartitions box$n $n "${box[@]}" -s "Body 1/Velocity=0, 0")" "-eq 1" 1
 done
+# Refined from 100 x 25 coarse cells ('auto'), the refinement shares the
+# cells by the particles the bodies will make: no repartition at all.
+expect "block at rest in a large box refined from coarse cells, 2 ranks" \
+  "$(repartitions refined 2 "${box[@]::6}" -s "Body 1/Velocity=0, 0")" "-eq 0" 0
 expect "4 cells on 3 ranks, checked every step" \
   "$(repartitions coarse 3 -s "Grid/Cells=4, 1" -s "Body 1/Velocity=0, 0" \
     -s "Time/End time=0.5" -s "Load balance/Check interval=1")" "-eq 1" 1
