@@ -244,7 +244,8 @@ namespace
    * particles as the G2P without it does, and the nodal mass and momentum
    * that particle_to_grid() re-maps after that G2P (to round-off: a cell
    * with hanging nodes or a distorted cell adds its particles in another
-   * order), with the weights computed where used and stored. */
+   * order), with the weights computed where used and stored; with the
+   * mass kept, the same momentum and the mass untouched. */
   template <int dim>
   void
   check_remap_in_sweep(const std::string &scene)
@@ -293,6 +294,19 @@ namespace
           in_the_sweep(RemapInSweep<dim>(in_sweep, grid));
         EXPECT_NE(moved, before);
         expect_same_sums(after_sweep.mass, in_sweep.mass);
+        for (unsigned int d = 0; d < dim; ++d)
+          expect_same_sums(after_sweep.momentum[d], in_sweep.momentum[d]);
+
+        // Keeping P2G's mass (no bonded FE region): the same momentum, and
+        // the mass as it was, to the bit.
+        in_sweep.mass = 7.;
+        const NodalVector kept(in_sweep.mass);
+        if (particles.fields.affine_velocity != numbers::invalid_unsigned_int)
+          in_the_sweep(RemapInSweep<dim, true, true>(in_sweep, grid));
+        else
+          in_the_sweep(RemapInSweep<dim, false, true>(in_sweep, grid));
+        for (unsigned int i = 0; i < kept.locally_owned_size(); ++i)
+          EXPECT_EQ(in_sweep.mass.local_element(i), kept.local_element(i));
         for (unsigned int d = 0; d < dim; ++d)
           expect_same_sums(after_sweep.momentum[d], in_sweep.momentum[d]);
       }

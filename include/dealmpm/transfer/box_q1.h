@@ -133,9 +133,13 @@ namespace dealmpm
    * sum_j +-K_jj T_jd[u], T_jd[u] = sum_p S_p,dj prod_(k != j) f_k over
    * the 2^(dim-1) sides u of the other directions: a particle adds
    * dim^2 2^(dim-1) products instead of dim^2 2^dim, and K comes in once a
-   * cell.
+   * cell. Without @p with_mass the momentum is summed and the mass is not
+   * (MUSL's re-map that keeps P2G's mass, RemapInSweep).
    */
-  template <int dim, bool mass_and_momentum, bool internal_force>
+  template <int  dim,
+            bool mass_and_momentum,
+            bool internal_force,
+            bool with_mass = mass_and_momentum>
   struct BoxCellSums
   {
     /** Two doubles, added and multiplied as one SSE2 register (GCC's
@@ -170,7 +174,8 @@ namespace dealmpm
           {
             const Pair mN =
               m * (dim == 2 ? f01[w] : f01[w & 1] * f[dim - 1][w >> 1]);
-            mass[w] += mN;
+            if (with_mass)
+              mass[w] += mN;
             for (unsigned int d = 0; d < dim; ++d)
               momentum[d][w] += mN * v[d];
           }
@@ -268,7 +273,7 @@ namespace dealmpm
       for (unsigned int v = 0; v < n_vertices; ++v)
         {
           const unsigned int n = nodes[v];
-          if (mass_and_momentum)
+          if (mass_and_momentum && with_mass)
             to.mass[n] += mass[v / 2][v % 2];
           for (unsigned int d = 0; d < dim; ++d)
             {
