@@ -9,7 +9,8 @@
 # with an adaptive grid, and a block sliding on an FEM base (the region's
 # state and the effects' work shares). SIGTERM saves one, and so does the
 # wall clock, also at a step chosen (DEALMPM_TERM_AT_STEP).
-# A scene changed in what matters is refused with one line, a damaged
+# A scene changed in what matters (an entry, or the mesh file an entry
+# names) is refused with one line, a damaged
 # newest checkpoint is passed over for the one before, a folder without
 # checkpoints is refused, and a run that does not resume removes the
 # earlier checkpoints.
@@ -243,6 +244,38 @@ echo "clock: $n checkpoints by wall time"
 "$dealmpm" "$scene" -s "Output/Directory=mid" "${run[@]}" -s "Time/End time=1.2" \
   -s "Checks/Mass loss limit=0" --resume > longer.log 2>&1 \
   || fail "longer: $(tail -1 longer.log)"
+# A mesh file edited between the runs (one inner vertex moved; the
+# entries the same) is refused with one line: the saved grid refines the
+# old coarse cells. The file unchanged resumes.
+cp "$here/../data/distorted_square.msh" square.msh
+cat > mesh.prm <<'EOF'
+set Dimension = 2
+subsection Grid
+  set Type = mesh file
+  set Mesh file = square.msh
+  set Global refinements = 2
+  set Boundary conditions = 10: no-slip, 12: slip
+end
+subsection Material 1
+  set Model = neo-Hookean
+end
+subsection Body 1
+  set Lower corner = 0.2, 0.2
+  set Upper corner = 0.6, 0.6
+  set Velocity = 0.3, 0.1
+end
+EOF
+mesh=(-s "Time/Maximum number of steps=20" -s "Checkpoint/Steps between checkpoints=10"
+      -s "Output/Interval=0" -s "Output/Progress interval=0" -s "Output/Directory=mesh")
+"$dealmpm" mesh.prm "${mesh[@]}" > mesh.log 2>&1 || fail "mesh: the run failed: $(tail -1 mesh.log)"
+"$dealmpm" mesh.prm "${mesh[@]}" --resume > mesh-same.log 2>&1 \
+  || fail "mesh: the resume of the same mesh failed: $(tail -1 mesh-same.log)"
+sed -i 's/^5 0.58 0.43 0$/5 0.56 0.44 0/' square.msh
+grep -q '^5 0.56 0.44 0$' square.msh || fail "mesh: the vertex to move is not in the file"
+"$dealmpm" mesh.prm "${mesh[@]}" --resume > mesh-edited.log 2>&1
+[ $? = 2 ] || fail "mesh-edited: exit code not 2"
+[ "$(wc -l < mesh-edited.log)" = 1 ] && grep -q "error: .*: the coarse grid (section 'Grid', its mesh file) differs from the saved run's (mesh/checkpoints/checkpoint-00000020/grid" mesh-edited.log \
+  || fail "mesh-edited: $(cat mesh-edited.log)"
 # No checkpoint there.
 "$dealmpm" "$scene" -s "Output/Directory=none" "${run[@]}" --resume > none.log 2>&1
 [ $? = 2 ] && grep -q "error: none/checkpoints: no such folder of checkpoints" none.log || fail "none: $(cat none.log)"
