@@ -39,6 +39,23 @@ namespace dealmpm
       double *force[dim];
       double *mass_gradient[dim] = {}; ///< body targets only
 
+      DEAL_II_ALWAYS_INLINE void
+      add_mass_and_momentum(const unsigned int    n,
+                            const double          mN,
+                            const Tensor<1, dim> &v) const
+      {
+        mass[n] += mN;
+        for (unsigned int d = 0; d < dim; ++d)
+          momentum[d][n] += mN * v[d];
+      }
+
+      DEAL_II_ALWAYS_INLINE void
+      add_force(const unsigned int n, const double (&f)[dim]) const
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          force[d][n] += f[d];
+      }
+
       explicit NodalPointers(NodalFields<dim> &f)
         : mass(f.mass.begin())
       {
@@ -50,11 +67,45 @@ namespace dealmpm
       }
     };
 
+    /** Where P2G adds through stored weights into one set of nodal
+     * fields: a block of 1 + 2 dim numbers per node (mass, momentum,
+     * force), copied into the nodal vectors after the sweep. A stored
+     * stencil adds into 3^dim nodes a particle (quadratic B-spline, GIMP);
+     * each entry then touches one cache line instead of 1 + 2 dim, from
+     * one address, and the pairs of momentum and force are added as
+     * pairs. */
+    template <int dim>
+    struct InterleavedNodes
+    {
+      static constexpr unsigned int stride = 1 + 2 * dim;
+      double                       *block;
+
+      DEAL_II_ALWAYS_INLINE void
+      add_mass_and_momentum(const unsigned int    n,
+                            const double          mN,
+                            const Tensor<1, dim> &v) const
+      {
+        double *const x = block + std::size_t(n) * stride;
+        x[0] += mN;
+        for (unsigned int d = 0; d < dim; ++d)
+          x[1 + d] += mN * v[d];
+      }
+
+      DEAL_II_ALWAYS_INLINE void
+      add_force(const unsigned int n, const double (&f)[dim]) const
+      {
+        double *const x = block + std::size_t(n) * stride + 1 + dim;
+        for (unsigned int d = 0; d < dim; ++d)
+          x[d] += f[d];
+      }
+    };
+
     /** Where P2G adds: one set of nodal fields. */
     template <int dim>
     struct SharedTarget
     {
-      static constexpr bool per_body = false;
+      static constexpr bool per_body    = false;
+      static constexpr bool interleaved = false;
       NodalPointers<dim>    fields;
 
       explicit SharedTarget(NodalFields<dim> &f)
@@ -68,12 +119,29 @@ namespace dealmpm
       }
     };
 
+    /** Where P2G adds through stored weights: an InterleavedNodes
+     * block. */
+    template <int dim>
+    struct InterleavedTarget
+    {
+      static constexpr bool per_body    = false;
+      static constexpr bool interleaved = true;
+      InterleavedNodes<dim> fields;
+
+      DEAL_II_ALWAYS_INLINE const InterleavedNodes<dim>                             &
+      of(const ArrayView<const double> &) const
+      {
+        return fields;
+      }
+    };
+
     /** Where P2G adds: the fields of the particle's body, whose mass
      * gradient sum_p m_p grad N it adds too (contact's normals). */
     template <int dim>
     struct BodyTargets
     {
-      static constexpr bool           per_body = true;
+      static constexpr bool           per_body    = true;
+      static constexpr bool           interleaved = false;
       std::vector<NodalPointers<dim>> bodies;
       const ParticleSet<dim>         &particles;
 
@@ -333,59 +401,60 @@ namespace dealmpm
                                !Targets::per_body && !total_lagrangian &&
                                !predictor;
       const auto per_particle =
-        [&](const std::size_t k, const auto &p, const GridCell<dim> &c)
-          DEAL_II_ALWAYS_INLINE {
-            const ArrayView<const double> props = p.get_properties();
-            const double                  m     = props[FixedCore<dim>::mass];
-            const NodalPointers<dim>     &to    = targets.of(props);
-            Tensor<1, dim>                v =
-              read_vector<dim>(&props[FixedCore<dim>::velocity]);
-            // Newmark: the grid carries the predicted velocity.
-            if constexpr (predictor)
-              v -= predictor_offset * read_vector<dim>(&props[f.acceleration]);
-            Tensor<2, dim> C;
-            Point<dim>     x_p;
-            if (affine)
-              x_p = affine_origin(grid, stencil, weights, k, p, c, f, C);
-            // Once per particle, as a plain array (deal.II's symmetric
-            // tensor times a vector goes through accessor objects).
-            double force_per_gradient_component[dim][dim] = {};
-            if (internal_force)
-              {
-                const auto P = force_per_gradient<total_lagrangian, dim>(props);
-                for (unsigned int i = 0; i < dim; ++i)
-                  for (unsigned int j = 0; j < dim; ++j)
-                    force_per_gradient_component[i][j] = P[i][j];
-              }
-            weights(k,
-                    p,
-                    c,
-                    [&](const unsigned int    n,
-                        const double          N,
-                        const Tensor<1, dim> &grad_N) DEAL_II_ALWAYS_INLINE {
-                      if (mass_and_momentum)
-                        {
-                          const double mN = m * N;
-                          to.mass[n] += mN;
-                          const Tensor<1, dim> v_n =
-                            affine ? v + C * (grid.node_positions[n] - x_p) : v;
+        [&](const std::size_t    k,
+            const auto          &p,
+            const GridCell<dim> &c) DEAL_II_ALWAYS_INLINE {
+          const ArrayView<const double> props = p.get_properties();
+          const double                  m     = props[FixedCore<dim>::mass];
+          const auto                   &to    = targets.of(props);
+          Tensor<1, dim> v = read_vector<dim>(&props[FixedCore<dim>::velocity]);
+          // Newmark: the grid carries the predicted velocity.
+          if constexpr (predictor)
+            v -= predictor_offset * read_vector<dim>(&props[f.acceleration]);
+          Tensor<2, dim> C;
+          Point<dim>     x_p;
+          if (affine)
+            x_p = affine_origin(grid, stencil, weights, k, p, c, f, C);
+          // Once per particle, as a plain array (deal.II's symmetric
+          // tensor times a vector goes through accessor objects).
+          double force_per_gradient_component[dim][dim] = {};
+          if (internal_force)
+            {
+              const auto P = force_per_gradient<total_lagrangian, dim>(props);
+              for (unsigned int i = 0; i < dim; ++i)
+                for (unsigned int j = 0; j < dim; ++j)
+                  force_per_gradient_component[i][j] = P[i][j];
+            }
+          weights(k,
+                  p,
+                  c,
+                  [&](const unsigned int    n,
+                      const double          N,
+                      const Tensor<1, dim> &grad_N) DEAL_II_ALWAYS_INLINE {
+                    if (mass_and_momentum)
+                      {
+                        to.add_mass_and_momentum(
+                          n,
+                          m * N,
+                          affine ? v + C * (grid.node_positions[n] - x_p) : v);
+                        if constexpr (Targets::per_body)
                           for (unsigned int d = 0; d < dim; ++d)
-                            to.momentum[d][n] += mN * v_n[d];
-                          if constexpr (Targets::per_body)
-                            for (unsigned int d = 0; d < dim; ++d)
-                              to.mass_gradient[d][n] += m * grad_N[d];
-                        }
-                      if (internal_force)
+                            to.mass_gradient[d][n] += m * grad_N[d];
+                      }
+                    if (internal_force)
+                      {
+                        double fi[dim];
                         for (unsigned int d = 0; d < dim; ++d)
                           {
-                            const double *P  = force_per_gradient_component[d];
-                            double        fi = P[0] * grad_N[0];
+                            const double *P = force_per_gradient_component[d];
+                            fi[d]           = P[0] * grad_N[0];
                             for (unsigned int j = 1; j < dim; ++j)
-                              fi += P[j] * grad_N[j];
-                            to.force[d][n] += fi;
+                              fi[d] += P[j] * grad_N[j];
                           }
-                    });
-          };
+                        to.add_force(n, fi);
+                      }
+                  });
+        };
       if constexpr (by_cell)
         transfer_by_cell<dim, mass_and_momentum, internal_force, affine>(
           grid, particles, weights, targets.fields, per_particle);
@@ -412,6 +481,43 @@ namespace dealmpm
       if (internal_force)
         for (unsigned int d = 0; d < dim; ++d)
           fields.force[d] = 0.;
+    }
+
+    /** The InterleavedNodes @p block into the nodal vectors of @p fields
+     * (owned and ghost entries) it stands for, which leaves them in the
+     * state zero() and the additions would have (not ghosted: the ghost
+     * entries hold this rank's sums for their owners). */
+    template <int dim>
+    void
+    copy_block(const std::vector<double> &block,
+               NodalFields<dim>          &fields,
+               const bool                 mass_and_momentum,
+               const bool                 internal_force)
+    {
+      constexpr unsigned int stride = InterleavedNodes<dim>::stride;
+      const std::size_t      n      = block.size() / stride;
+      if (mass_and_momentum)
+        {
+          fields.mass.zero_out_ghost_values();
+          double *const mass = fields.mass.begin();
+          for (std::size_t i = 0; i < n; ++i)
+            mass[i] = block[i * stride];
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              fields.momentum[d].zero_out_ghost_values();
+              double *const momentum = fields.momentum[d].begin();
+              for (std::size_t i = 0; i < n; ++i)
+                momentum[i] = block[i * stride + 1 + d];
+            }
+        }
+      if (internal_force)
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            fields.force[d].zero_out_ghost_values();
+            double *const force = fields.force[d].begin();
+            for (std::size_t i = 0; i < n; ++i)
+              force[i] = block[i * stride + 1 + dim + d];
+          }
     }
 
     /** Add to @p exchange what P2G added into @p fields. */
@@ -447,10 +553,15 @@ namespace dealmpm
         particles.fields.affine_velocity != numbers::invalid_unsigned_int;
       const bool reference = formulation == Formulation::total_lagrangian;
       const auto run       = [&](auto... choices) {
-        with_weights(grid, stencil, [&](const auto &weights) {
+        const auto sweep = [&](const auto &weights) {
           transfer<dim, decltype(choices)::value...>(
             grid, particles, stencil, weights, targets, predictor_offset);
-        });
+        };
+        // The interleaved block is for stored weights (particle_to_grid).
+        if constexpr (Targets::interleaved)
+          sweep(StoredWeights<dim>{stencil});
+        else
+          with_weights(grid, stencil, sweep);
       };
       using Yes = std::true_type;
       using No  = std::false_type;
@@ -499,15 +610,38 @@ namespace dealmpm
                    const Formulation          formulation,
                    const double               predictor_offset)
   {
-    zero(fields, mass_and_momentum, internal_force);
-    dispatch(grid,
-             particles,
-             stencil,
-             SharedTarget<dim>(fields),
-             mass_and_momentum,
-             internal_force,
-             formulation,
-             predictor_offset);
+    if (stencil.where_used)
+      {
+        zero(fields, mass_and_momentum, internal_force);
+        dispatch(grid,
+                 particles,
+                 stencil,
+                 SharedTarget<dim>(fields),
+                 mass_and_momentum,
+                 internal_force,
+                 formulation,
+                 predictor_offset);
+      }
+    else
+      {
+        // Stored weights (3^dim or more nodes a particle): one block entry
+        // a node instead of 1 + 2 dim vectors (InterleavedNodes).
+        std::vector<double>               &block = fields.p2g_block;
+        const Utilities::MPI::Partitioner &nodes =
+          *fields.mass.get_partitioner();
+        block.assign((nodes.locally_owned_size() + nodes.n_ghost_indices()) *
+                       InterleavedNodes<dim>::stride,
+                     0.);
+        dispatch(grid,
+                 particles,
+                 stencil,
+                 InterleavedTarget<dim>{{block.data()}},
+                 mass_and_momentum,
+                 internal_force,
+                 formulation,
+                 predictor_offset);
+        copy_block(block, fields, mass_and_momentum, internal_force);
+      }
     NodalExchange sums;
     add_sums(sums, fields, mass_and_momentum, internal_force);
     sums.sum_ghosts_into_owners();
