@@ -8,6 +8,8 @@
 #include <type_traits>
 #include <vector>
 
+#include "p2g_targets.h"
+
 namespace dealmpm
 {
   namespace
@@ -29,139 +31,6 @@ namespace dealmpm
       else
         return minus_V_sigma;
     }
-
-    /** The raw arrays P2G adds into. */
-    template <int dim>
-    struct NodalPointers
-    {
-      double *mass;
-      double *momentum[dim];
-      double *force[dim];
-      double *mass_gradient[dim] = {}; ///< body targets only
-
-      DEAL_II_ALWAYS_INLINE void
-      add_mass_and_momentum(const unsigned int    n,
-                            const double          mN,
-                            const Tensor<1, dim> &v) const
-      {
-        mass[n] += mN;
-        for (unsigned int d = 0; d < dim; ++d)
-          momentum[d][n] += mN * v[d];
-      }
-
-      DEAL_II_ALWAYS_INLINE void
-      add_force(const unsigned int n, const double (&f)[dim]) const
-      {
-        for (unsigned int d = 0; d < dim; ++d)
-          force[d][n] += f[d];
-      }
-
-      explicit NodalPointers(NodalFields<dim> &f)
-        : mass(f.mass.begin())
-      {
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            momentum[d] = f.momentum[d].begin();
-            force[d]    = f.force[d].begin();
-          }
-      }
-    };
-
-    /** Where P2G adds through stored weights into one set of nodal
-     * fields: a block of 1 + 2 dim numbers per node (mass, momentum,
-     * force), copied into the nodal vectors after the sweep. A stored
-     * stencil adds into 3^dim nodes a particle (quadratic B-spline, GIMP);
-     * each entry then touches one cache line instead of 1 + 2 dim, from
-     * one address, and the pairs of momentum and force are added as
-     * pairs. */
-    template <int dim>
-    struct InterleavedNodes
-    {
-      static constexpr unsigned int stride = 1 + 2 * dim;
-      double                       *block;
-
-      DEAL_II_ALWAYS_INLINE void
-      add_mass_and_momentum(const unsigned int    n,
-                            const double          mN,
-                            const Tensor<1, dim> &v) const
-      {
-        double *const x = block + std::size_t(n) * stride;
-        x[0] += mN;
-        for (unsigned int d = 0; d < dim; ++d)
-          x[1 + d] += mN * v[d];
-      }
-
-      DEAL_II_ALWAYS_INLINE void
-      add_force(const unsigned int n, const double (&f)[dim]) const
-      {
-        double *const x = block + std::size_t(n) * stride + 1 + dim;
-        for (unsigned int d = 0; d < dim; ++d)
-          x[d] += f[d];
-      }
-    };
-
-    /** Where P2G adds: one set of nodal fields. */
-    template <int dim>
-    struct SharedTarget
-    {
-      static constexpr bool per_body    = false;
-      static constexpr bool interleaved = false;
-      NodalPointers<dim>    fields;
-
-      explicit SharedTarget(NodalFields<dim> &f)
-        : fields(f)
-      {}
-
-      DEAL_II_ALWAYS_INLINE const NodalPointers<dim>                             &
-      of(const ArrayView<const double> &) const
-      {
-        return fields;
-      }
-    };
-
-    /** Where P2G adds through stored weights: an InterleavedNodes
-     * block. */
-    template <int dim>
-    struct InterleavedTarget
-    {
-      static constexpr bool per_body    = false;
-      static constexpr bool interleaved = true;
-      InterleavedNodes<dim> fields;
-
-      DEAL_II_ALWAYS_INLINE const InterleavedNodes<dim>                             &
-      of(const ArrayView<const double> &) const
-      {
-        return fields;
-      }
-    };
-
-    /** Where P2G adds: the fields of the particle's body, whose mass
-     * gradient sum_p m_p grad N it adds too (contact's normals). */
-    template <int dim>
-    struct BodyTargets
-    {
-      static constexpr bool           per_body    = true;
-      static constexpr bool           interleaved = false;
-      std::vector<NodalPointers<dim>> bodies;
-      const ParticleSet<dim>         &particles;
-
-      BodyTargets(NodalFieldSet<dim> &set, const ParticleSet<dim> &particles)
-        : particles(particles)
-      {
-        for (unsigned int b = 0; b < set.body.size(); ++b)
-          {
-            bodies.emplace_back(set.body[b]);
-            for (unsigned int d = 0; d < dim; ++d)
-              bodies.back().mass_gradient[d] = set.mass_gradient[b][d].begin();
-          }
-      }
-
-      DEAL_II_ALWAYS_INLINE const NodalPointers<dim>                             &
-      of(const ArrayView<const double> &props) const
-      {
-        return bodies[particles.body_of(props)];
-      }
-    };
 
     /** One cell's shares of mass, momentum and internal force in its
      * 2^dim nodes, summed in locals by vertex from any weights (a box
