@@ -210,7 +210,7 @@ namespace dealmpm
     const ReferenceData &r    = reference;
     const unsigned int   n    = r.n_scalar;
     const unsigned int  *dofs = &r.local_dofs[c * r.n_dofs];
-    const double        *grad = &r.grad[c * dim * n * r.n_q];
+    const double        *grad = r.gradients(c);
     const double         k    = heat.settings.conductivity;
     for (unsigned int q = 0; q < r.n_q; ++q)
       {

@@ -5,7 +5,9 @@
 #include <dealmpm/fem/solid_region.h>
 
 #include <cmath>
+#include <cstring>
 #include <map>
+#include <string_view>
 
 namespace dealmpm
 {
@@ -291,8 +293,9 @@ namespace dealmpm
     r.n_q                   = gauss.size();
     r.n_face_q              = face_gauss.size();
     const auto &partitioner = *displacement.get_partitioner();
-    std::vector<types::global_dof_index> dofs(r.n_dofs);
-    unsigned int                         c = 0;
+    std::vector<types::global_dof_index>               dofs(r.n_dofs);
+    std::unordered_multimap<std::size_t, unsigned int> known_gradients;
+    unsigned int                                       c = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -302,7 +305,7 @@ namespace dealmpm
           r.centre.push_back(cell->center());
           r.min_vertex_distance.push_back(cell->minimum_vertex_distance());
           values.reinit(cell);
-          add_cell_reference(values);
+          add_cell_reference(values, known_gradients);
           for (const unsigned int f : cell->face_indices())
             if (cell->face(f)->at_boundary())
               {
@@ -317,14 +320,15 @@ namespace dealmpm
 
   template <int dim>
   void
-  SolidRegion<dim>::add_cell_reference(const FEValues<dim, dim> &values)
+  SolidRegion<dim>::add_cell_reference(
+    const FEValues<dim, dim>                           &values,
+    std::unordered_multimap<std::size_t, unsigned int> &known)
   {
     ReferenceData &r = reference;
     for (unsigned int q = 0; q < r.n_q; ++q)
       r.JxW.push_back(values.JxW(q));
-    const unsigned int n     = r.n_scalar;
-    const std::size_t  first = r.grad.size();
-    r.grad.resize(first + dim * n * r.n_q);
+    const unsigned int  n = r.n_scalar;
+    std::vector<double> set(dim * n * r.n_q);
     for (unsigned int s = 0; s < n; ++s)
       for (unsigned int q = 0; q < r.n_q; ++q)
         {
@@ -332,8 +336,26 @@ namespace dealmpm
           const Tensor<1, dim> dN =
             values.shape_grad_component(r.fe_index[s * dim], q, 0);
           for (unsigned int b = 0; b < dim; ++b)
-            r.grad[first + (b * n + s) * r.n_q + q] = dN[b];
+            set[(b * n + s) * r.n_q + q] = dN[b];
         }
+    // The same bits, the same set: the force loop's numbers are those of
+    // the cell's own copy.
+    const std::size_t bytes = set.size() * sizeof(double);
+    const std::size_t hash  = std::hash<std::string_view>()(
+      std::string_view(reinterpret_cast<const char *>(set.data()), bytes));
+    const auto [first, last] = known.equal_range(hash);
+    for (auto it = first; it != last; ++it)
+      if (std::memcmp(&r.grad[std::size_t(it->second) * set.size()],
+                      set.data(),
+                      bytes) == 0)
+        {
+          r.gradient_set.push_back(it->second);
+          return;
+        }
+    const unsigned int index = r.grad.size() / set.size();
+    known.emplace(hash, index);
+    r.gradient_set.push_back(index);
+    r.grad.insert(r.grad.end(), set.begin(), set.end());
   }
 
   template <int dim>

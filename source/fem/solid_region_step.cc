@@ -256,7 +256,7 @@ namespace dealmpm
   {
     const ReferenceData &r    = reference;
     const unsigned int  *dofs = &r.local_dofs[c * r.n_dofs];
-    const double        *grad = &r.grad[c * dim * n * n];
+    const double        *grad = r.gradients(c);
     CellArrays<dim, n>   cell;
     for (unsigned int s = 0; s < n; ++s)
       for (unsigned int a = 0; a < dim; ++a)

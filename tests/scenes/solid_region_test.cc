@@ -147,13 +147,33 @@ namespace
    * region's, relative to the largest force and the rate. */
   template <int dim>
   std::pair<double, double>
-  force_and_rate_errors(const unsigned int degree)
+  force_and_rate_errors(const unsigned int degree, const bool curved)
   {
     NeoHookean<dim> material(LameParameters{2e3, 1e3});
     material.density = 1;
     SolidRegion<dim> region(MPI_COMM_WORLD, material, degree);
-    test::make_curved_mesh(region.get_triangulation(), 2);
+    if (curved)
+      test::make_curved_mesh(region.get_triangulation(), 2);
+    else
+      {
+        // A box whose cells' sizes are not binary fractions (0.7 / 3).
+        Point<dim> upper;
+        for (unsigned int d = 0; d < dim; ++d)
+          upper[d] = 0.7;
+        GridGenerator::subdivided_hyper_rectangle(region.get_triangulation(),
+                                                  std::vector<unsigned int>(dim,
+                                                                            3),
+                                                  Point<dim>(),
+                                                  upper);
+      }
     region.setup(std::set<types::boundary_id>{});
+    // The force loop reads the cells' gradients from shared sets: a box's
+    // cells are translates of one another, a curved mesh's are not.
+    const std::size_t n_cells = region.get_triangulation().n_active_cells();
+    if (curved)
+      EXPECT_EQ(region.n_gradient_sets(), n_cells);
+    else
+      EXPECT_EQ(region.n_gradient_sets(), 1u);
     region.set_velocity(Swirl<dim>());
     const double dt = 0.05; // strains of a few percent
     region.step(dt);
@@ -216,19 +236,22 @@ namespace
 // The force loop reads the cell's gradients in its own order and sums in
 // its own arrays; this is the textbook assembly it must equal. Round-off
 // only: the sums over nodes and points run in different orders (1e-12 of
-// the largest force leaves room for about 1e4 ulps).
+// the largest force leaves room for about 1e4 ulps). On a curved mesh
+// (a set of gradients a cell) and a box (one set all cells share).
 TEST(SolidRegion, ForceLoopMatchesPlainAssembly)
 {
-  for (const unsigned int degree : {1u, 2u})
-    {
-      const auto [force2, rate2] = force_and_rate_errors<2>(degree);
-      const auto [force3, rate3] = force_and_rate_errors<3>(degree);
-      std::cout << "Q" << degree << ": force error " << force2 << " (2D), "
-                << force3 << " (3D); signal rate " << rate2 << ", " << rate3
-                << std::endl;
-      EXPECT_LT(force2, 1e-12);
-      EXPECT_LT(force3, 1e-12);
-      EXPECT_LT(rate2, 1e-14);
-      EXPECT_LT(rate3, 1e-14);
-    }
+  for (const bool curved : {true, false})
+    for (const unsigned int degree : {1u, 2u})
+      {
+        const auto [force2, rate2] = force_and_rate_errors<2>(degree, curved);
+        const auto [force3, rate3] = force_and_rate_errors<3>(degree, curved);
+        std::cout << (curved ? "curved" : "box") << " Q" << degree
+                  << ": force error " << force2 << " (2D), " << force3
+                  << " (3D); signal rate " << rate2 << ", " << rate3
+                  << std::endl;
+        EXPECT_LT(force2, 1e-12);
+        EXPECT_LT(force3, 1e-12);
+        EXPECT_LT(rate2, 1e-14);
+        EXPECT_LT(rate3, 1e-14);
+      }
 }

@@ -16,6 +16,7 @@
 #include <map>
 #include <set>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace dealmpm
@@ -275,6 +276,15 @@ namespace dealmpm
     get_nodes() const
     {
       return nodes;
+    }
+
+    /** How many sets of reference gradients the owned cells share (one
+     * for a box region, about one a cell for a curved mesh). */
+    std::size_t
+    n_gradient_sets() const
+    {
+      return reference.grad.size() /
+             std::max<std::size_t>(dim * reference.n_scalar * reference.n_q, 1);
     }
 
     /** Current position of an owned node. */
@@ -542,11 +552,22 @@ namespace dealmpm
       std::vector<Point<dim>>   centre;
       /** Per cell: its smallest vertex distance (the time step's length). */
       std::vector<double> min_vertex_distance;
-      /** Per cell and quadrature point: JxW. Per cell, the reference
-       * gradients of the scalar shape functions at the points, as
-       * [direction][shape function][point] (the force loop's order). */
+      /** Per cell and quadrature point: JxW. */
       std::vector<double> JxW;
-      std::vector<double> grad;
+      /** The reference gradients of the scalar shape functions at a
+       * cell's points, as [direction][shape function][point] (the force
+       * loop's order), once per distinct set: the cells of a box region
+       * share one (1.5 KB a 3D Q1 cell, read every step, where a cell's
+       * own state is about 1 KB). gradient_set[c] is cell c's. */
+      std::vector<double>       grad;
+      std::vector<unsigned int> gradient_set;
+
+      /** Cell @p c's gradients. */
+      const double *
+      gradients(const unsigned int c) const
+      {
+        return &grad[std::size_t(gradient_set[c]) * dim * n_scalar * n_q];
+      }
       /** Per boundary face: its cell, its boundary id; per face
        * quadrature point the reference normal times JxW and the scalar
        * shape functions' values and reference gradients. */
@@ -584,9 +605,13 @@ namespace dealmpm
     make_quadrature_state();
     void
     make_reference_data();
-    /** The reference data of cell @p values is at (JxW, gradients). */
+    /** The reference data of cell @p values is at (JxW, gradients); its
+     * gradients are a set already in @p known (hash of the bytes -> set)
+     * if one is the same to the bit. */
     void
-    add_cell_reference(const FEValues<dim, dim> &values);
+    add_cell_reference(
+      const FEValues<dim, dim>                           &values,
+      std::unordered_multimap<std::size_t, unsigned int> &known);
     /** The reference data of the boundary face @p face_values is at, of
      * owned cell @p cell, with id @p id. */
     void
