@@ -16,10 +16,11 @@ namespace dealmpm
   template <int dim>
   struct NodalPointers
   {
-    double *mass;
-    double *momentum[dim];
-    double *force[dim];
-    double *mass_gradient[dim] = {}; ///< body targets only
+    static constexpr bool interleaved = false;
+    double               *mass;
+    double               *momentum[dim];
+    double               *force[dim];
+    double               *mass_gradient[dim] = {}; ///< body targets only
 
     DEAL_II_ALWAYS_INLINE void
     add_mass_and_momentum(const unsigned int    n,
@@ -59,7 +60,8 @@ namespace dealmpm
   template <int dim>
   struct InterleavedNodes
   {
-    static constexpr unsigned int stride = 1 + 2 * dim;
+    static constexpr bool         interleaved = true;
+    static constexpr unsigned int stride      = 1 + 2 * dim;
     double                       *block;
 
     DEAL_II_ALWAYS_INLINE void
@@ -82,35 +84,16 @@ namespace dealmpm
     }
   };
 
-  /** Where P2G adds: one set of nodal fields. */
-  template <int dim>
-  struct SharedTarget
+  /** Where P2G adds: one set of nodal fields, as the vectors'
+   * NodalPointers or an InterleavedNodes block (stored weights). */
+  template <typename Fields>
+  struct SingleTarget
   {
     static constexpr bool per_body    = false;
-    static constexpr bool interleaved = false;
-    NodalPointers<dim>    fields;
+    static constexpr bool interleaved = Fields::interleaved;
+    Fields                fields;
 
-    explicit SharedTarget(NodalFields<dim> &f)
-      : fields(f)
-    {}
-
-    DEAL_II_ALWAYS_INLINE const NodalPointers<dim>                             &
-    of(const ArrayView<const double> &) const
-    {
-      return fields;
-    }
-  };
-
-  /** Where P2G adds through stored weights: an InterleavedNodes
-   * block. */
-  template <int dim>
-  struct InterleavedTarget
-  {
-    static constexpr bool per_body    = false;
-    static constexpr bool interleaved = true;
-    InterleavedNodes<dim> fields;
-
-    DEAL_II_ALWAYS_INLINE const InterleavedNodes<dim>                             &
+    DEAL_II_ALWAYS_INLINE const Fields &
     of(const ArrayView<const double> &) const
     {
       return fields;
