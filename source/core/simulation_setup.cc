@@ -144,6 +144,7 @@ namespace dealmpm
           mixed_cells.reset();
       }
     stencil.where_used = weights_where_used();
+    stencil.spline     = stencil.where_used ? kernel.spline_grid() : nullptr;
     stages             = stages_of<dim>(run_settings.method.scheme,
                             mixed_cells != nullptr,
                             run_settings.method.formulation,
@@ -172,7 +173,9 @@ namespace dealmpm
     // mixed-cell split, FEM regions' contact, total Lagrangian's reference
     // stencil, most effects. APIC needs none (affine_transfer.h).
     const MethodSettings &method = run_settings.method;
-    if (kernel.name() != "linear" || method.particle_update.newmark ||
+    const bool            computable =
+      kernel.name() == "linear" || kernel.spline_grid() != nullptr;
+    if (!computable || method.particle_update.newmark ||
         method.total_lagrangian() || mixed_cells || !regions.empty())
       return false;
     return std::none_of(effects.begin(), effects.end(), [](const auto &effect) {

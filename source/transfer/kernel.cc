@@ -172,6 +172,12 @@ namespace dealmpm
         return false;
       }
 
+      const QuadraticBSplineGrid<dim> &
+      lattice() const
+      {
+        return spline;
+      }
+
     private:
       QuadraticBSplineGrid<dim> spline;
     };
@@ -245,6 +251,16 @@ namespace dealmpm
     chosen         = name;
     shape_function = registry.get(name).create();
     return shape_function->setup(grid);
+  }
+
+  template <int dim>
+  const QuadraticBSplineGrid<dim> *
+  Kernel<dim>::spline_grid() const
+  {
+    const auto *spline =
+      dynamic_cast<const QuadraticBSpline<dim> *>(shape_function.get());
+    return spline && spline->lattice().windows_fit() ? &spline->lattice() :
+                                                       nullptr;
   }
 
   template class Kernel<2>;

@@ -216,6 +216,59 @@ namespace dealmpm
         }
     }
 
+    /** A particle's shares with B-spline weights computed where used, a
+     * row of nodes along x at a time (BSplineWeights::rows()): a node's
+     * force is x's slope times the row's P_d0 v12 plus x's value times
+     * its P_d1 s12 + P_d2 s2, each taken once a row. @p P: the force per
+     * gradient (-V sigma). */
+    template <int  dim,
+              bool mass_and_momentum,
+              bool internal_force,
+              typename Particle,
+              typename Fields>
+    DEAL_II_ALWAYS_INLINE inline void
+    add_by_rows(const BSplineWeights<dim> &weights,
+                const Particle            &p,
+                const GridCell<dim>       &c,
+                const double               m,
+                const Tensor<1, dim>      &v,
+                const double (&P)[dim][dim],
+                const Fields &to)
+    {
+      weights.rows(p,
+                   c,
+                   [&](const unsigned int *row,
+                       const SplineWindow &w0,
+                       const double        v12,
+                       const double        s12,
+                       const double        s2) DEAL_II_ALWAYS_INLINE {
+                     const double m_v12 = m * v12;
+                     double       along[dim], across[dim];
+                     for (unsigned int d = 0; d < dim; ++d)
+                       {
+                         along[d]  = P[d][0] * v12;
+                         across[d] = P[d][1] * s12;
+                         if constexpr (dim == 3)
+                           across[d] += P[d][2] * s2;
+                       }
+                     for (unsigned int k = 0; k < 3; ++k)
+                       {
+                         if (mass_and_momentum)
+                           to.add_mass_and_momentum(row[k],
+                                                    w0.value[k] * m_v12,
+                                                    v);
+                         if (internal_force)
+                           {
+                             double f[dim];
+                             for (unsigned int d = 0; d < dim; ++d)
+                               f[d] = w0.slope[k] * along[d] +
+                                      w0.value[k] * across[d];
+                             to.add_force(row[k], f);
+                           }
+                       }
+                   });
+    }
+
     /** APIC's x_p, and C = B D^-1 about it into @p C. x_p is the
      * stencil's recorded position, or, for weights computed where used,
      * the point they are computed at (MUSL re-maps after the particles
@@ -232,7 +285,7 @@ namespace dealmpm
                   Tensor<2, dim>            &C)
     {
       Point<dim> x_p;
-      if constexpr (std::is_same_v<Weights, LinearWeights<dim>>)
+      if constexpr (computed_where_used<dim, Weights>)
         x_p = weights_centroid(grid, weights, k, p, c);
       else
         x_p = stencil.position[k];
@@ -293,6 +346,13 @@ namespace dealmpm
               for (unsigned int i = 0; i < dim; ++i)
                 for (unsigned int j = 0; j < dim; ++j)
                   force_per_gradient_component[i][j] = P[i][j];
+            }
+          if constexpr (std::is_same_v<Weights, BSplineWeights<dim>> &&
+                        !Targets::per_body && !affine)
+            {
+              add_by_rows<dim, mass_and_momentum, internal_force>(
+                weights, p, c, m, v, force_per_gradient_component, to);
+              return;
             }
           weights(k,
                   p,
@@ -426,9 +486,15 @@ namespace dealmpm
           transfer<dim, decltype(choices)::value...>(
             grid, particles, stencil, weights, targets, predictor_offset);
         };
-        // The interleaved block is for stored weights (particle_to_grid).
+        // The interleaved block is for 3^dim or more nodes a particle:
+        // stored weights and B-spline ones (particle_to_grid).
         if constexpr (Targets::interleaved)
-          sweep(StoredWeights<dim>{stencil});
+          {
+            if (stencil.where_used)
+              sweep(BSplineWeights<dim>{grid, *stencil.spline});
+            else
+              sweep(StoredWeights<dim>{stencil});
+          }
         else
           with_weights(grid, stencil, sweep);
       };
@@ -479,7 +545,7 @@ namespace dealmpm
                    const Formulation          formulation,
                    const double               predictor_offset)
   {
-    if (stencil.where_used)
+    if (stencil.where_used && stencil.spline == nullptr)
       {
         zero(fields, mass_and_momentum, internal_force);
         dispatch(grid,
@@ -493,8 +559,9 @@ namespace dealmpm
       }
     else
       {
-        // Stored weights (3^dim or more nodes a particle): one block entry
-        // a node instead of 1 + 2 dim vectors (InterleavedNodes).
+        // Stored or B-spline weights (3^dim or more nodes a particle): one
+        // block entry a node instead of 1 + 2 dim vectors
+        // (InterleavedNodes).
         std::vector<double>               &block = fields.p2g_block;
         const Utilities::MPI::Partitioner &nodes =
           *fields.mass.get_partitioner();

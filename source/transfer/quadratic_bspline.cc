@@ -63,8 +63,9 @@ namespace dealmpm
       grid.cells.empty() ? grid.ghost_cells.front() : grid.cells.front();
     for (unsigned int d = 0; d < dim; ++d)
       {
-        h[d]       = any.far_corner[d] - any.origin[d];
-        n_cells[d] = int(std::round((upper[d] - lower[d]) / h[d]));
+        h[d]         = any.far_corner[d] - any.origin[d];
+        inverse_h[d] = 1. / h[d];
+        n_cells[d]   = int(std::round((upper[d] - lower[d]) / h[d]));
       }
     const auto index_of = [&](const Point<dim> &x) {
       std::array<int, dim> index;
@@ -93,53 +94,6 @@ namespace dealmpm
       }
   }
 
-  namespace
-  {
-    /**
-     * The 1D weights along one direction at t (in cell lengths from the
-     * grid's origin) for a particle in the cell whose lower node is J, of n
-     * cells, on that cell's 4-node block of cell length 1 / @p inverse_h:
-     * three nodes, or two next to a boundary.
-     */
-    DEAL_II_ALWAYS_INLINE inline void
-    weights_1d(const double      t,
-               const int         J,
-               const int         n,
-               const double      inverse_h,
-               LatticeWeights1D &w)
-    {
-      if (t < 0.5 || t >= n - 0.5)
-        {
-          // The half cell next to a boundary: linear hats.
-          const double s = t - J;
-          w.first        = 1;
-          w.count        = 2;
-          w.value[1]     = 1. - s;
-          w.value[2]     = s;
-          w.slope[1]     = -inverse_h;
-          w.slope[2]     = inverse_h;
-          return;
-        }
-      // Inside, t >= 0.5: truncation is the floor. The splines of the
-      // nearest node and its two neighbours at r = t - nearest in
-      // [-1/2, 1/2), written out: the same numbers as by each node's
-      // distance, without a branch per node.
-      const int    nearest = int(t + 0.5);
-      const double r       = t - nearest;
-      const double below = 0.5 - r, above = 0.5 + r;
-      w.first   = nearest - J;
-      w.count   = 3;
-      double *v = w.value + w.first;
-      double *s = w.slope + w.first;
-      v[0]      = 0.5 * below * below;
-      v[1]      = 0.75 - r * r;
-      v[2]      = 0.5 * above * above;
-      s[0]      = -below * inverse_h;
-      s[1]      = -2. * r * inverse_h;
-      s[2]      = above * inverse_h;
-    }
-  } // namespace
-
   template <int dim>
   void
   compute_bspline_stencil(const BackgroundGrid<dim>       &grid,
@@ -156,24 +110,15 @@ namespace dealmpm
         stencil.N.resize(n_local * max_entries);
         stencil.grad_N.resize(n_local * max_entries);
       }
-    std::size_t      e = 0;
-    LatticeWeights1D w[dim];
-    double           inverse_h[dim];
-    for (unsigned int d = 0; d < dim; ++d)
-      inverse_h[d] = 1. / spline.h[d];
+    std::size_t       e         = 0;
     const std::size_t n_visited = for_each_particle_in_stencil_order(
       grid,
       particles,
       [&](const std::size_t k, const auto &p, const GridCell<dim> &c)
         DEAL_II_ALWAYS_INLINE {
           const unsigned int i = index_in_grid(grid, c);
-          const Point<dim>   x = p.get_location();
-          for (unsigned int d = 0; d < dim; ++d)
-            weights_1d((x[d] - spline.origin[d]) * inverse_h[d],
-                       spline.lower_index[i][d],
-                       spline.n_cells[d],
-                       inverse_h[d],
-                       w[d]);
+          LatticeWeights1D   w[dim];
+          spline.weights_at(i, p.get_reference_location(), w);
           append_products(
             &spline.block_nodes[i * QuadraticBSplineGrid<dim>::block_size],
             w,

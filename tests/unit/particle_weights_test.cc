@@ -7,7 +7,8 @@
 // re-map and stress update (which keep the reference location until the
 // stress update), the re-map also made in MUSL's G2P sweep; on grids with
 // hanging nodes in 2D and 3D and on distorted (non-affine) cells. The weights
-// themselves are deal.II's Q1 functions.
+// themselves are deal.II's Q1 functions. The same for the quadratic
+// B-spline's weights computed where used.
 #include <deal.II/fe/fe_q.h>
 
 #include <dealmpm/transfer/grid_to_particle.h>
@@ -56,6 +57,43 @@ subsection Body 1
   set Lower corner = 0, 0, 0
   set Upper corner = 1, 2, 1
   set Particles per cell = 2
+end
+)";
+
+  /** Quadratic B-splines on a grid of unequal edges (h = 2/7 by 1/5, in
+   * 3D by 1/3) that the body fills, so that the half cells next to the
+   * boundaries, where the splines turn into hats, hold particles. */
+  const std::string bspline_scene = R"(
+set Dimension = 2
+subsection Grid
+  set Lower corner = 0, 0
+  set Upper corner = 2, 1
+  set Cells = 7, 5
+end
+subsection Body 1
+  set Lower corner = 0, 0
+  set Upper corner = 2, 1
+  set Particles per cell = 2
+end
+subsection MPM
+  set Shape function = quadratic B-spline
+end
+)";
+
+  const std::string bspline_scene_3d = R"(
+set Dimension = 3
+subsection Grid
+  set Lower corner = 0, 0, 0
+  set Upper corner = 2, 1, 1
+  set Cells = 7, 5, 3
+end
+subsection Body 1
+  set Lower corner = 0, 0, 0
+  set Upper corner = 2, 1, 1
+  set Particles per cell = 2
+end
+subsection MPM
+  set Shape function = quadratic B-spline
 end
 )";
 
@@ -120,10 +158,12 @@ end
       test::scatter_particles_in_cells(*simulation, rng);
       fields.reinit(grid.partitioner);
       test::randomize_state(particles, grid, fields, rng);
-      compute_linear_stencil(grid, particles, stored);
+      const Kernel<dim> &kernel = simulation->get_kernel();
+      kernel.compute_stencil(grid, particles, stored);
       if (particles.fields.affine_velocity != numbers::invalid_unsigned_int)
         record_positions(grid, particles, stored);
       where_used.where_used = true;
+      where_used.spline     = kernel.spline_grid();
       before                = test::particle_state(particles);
     }
 
@@ -238,6 +278,17 @@ TEST(ParticleWeights, ApicWhereUsedEqualsStored)
   check_weights_where_used<3>(refined_scene_3d + apic);
 }
 
+// The quadratic B-spline's weights computed where used (BSplineWeights)
+// are those of its stored stencil: P2G into the interleaved block, G2P,
+// MUSL's deferred reference location, APIC.
+TEST(ParticleWeights, BSplineWhereUsedEqualsStored)
+{
+  check_weights_where_used<2>(bspline_scene);
+  check_weights_where_used<3>(bspline_scene_3d);
+  check_weights_where_used<2>(bspline_scene + apic);
+  check_weights_where_used<3>(bspline_scene_3d + apic);
+}
+
 namespace
 {
   /** MUSL's G2P with the re-map in its sweep (RemapInSweep) leaves the
@@ -325,6 +376,12 @@ TEST(ParticleWeights, ApicMuslRemapInTheSweepEqualsTheRemapAfterIt)
   check_remap_in_sweep<2>(refined_scene + apic);
   check_remap_in_sweep<2>(distorted_scene + apic);
   check_remap_in_sweep<3>(refined_scene_3d + apic);
+}
+
+TEST(ParticleWeights, BSplineMuslRemapInTheSweepEqualsTheRemapAfterIt)
+{
+  check_remap_in_sweep<2>(bspline_scene);
+  check_remap_in_sweep<3>(bspline_scene_3d + apic);
 }
 
 namespace

@@ -252,8 +252,9 @@ namespace dealmpm
      * step. */
     void
     choose_stages();
-    /** Whether linear weights may be computed where P2G and G2P use them
-     * instead of stored (Stencil::where_used): nothing else reads them. */
+    /** Whether linear or quadratic B-spline weights may be computed where
+     * P2G and G2P use them instead of stored (Stencil::where_used):
+     * nothing else reads them. */
     bool
     weights_where_used() const;
     /** The step's one reduction and what it decides: the next step's

@@ -161,8 +161,9 @@ namespace dealmpm
 
     /** Whether the effect reads the stored particle-node weights
      * (EffectContext::stencil). An effect that does not says so: then a
-     * scene with linear shape functions computes the weights where P2G
-     * and G2P use them and stores none (Stencil::where_used). */
+     * scene with linear or quadratic B-spline shape functions computes the
+     * weights where P2G and G2P use them and stores none
+     * (Stencil::where_used). */
     virtual bool
     reads_stencil() const
     {

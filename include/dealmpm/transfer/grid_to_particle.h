@@ -113,6 +113,62 @@ namespace dealmpm
                 });
     }
 
+    /** gather()'s v_grid, dv and L for B-spline weights computed where
+     * used, a row of nodes along x at a time (BSplineWeights::rows()):
+     * the row's sums with x's weights, then scaled by the other
+     * directions'. */
+    template <bool motion,
+              bool move,
+              bool deformation,
+              int  dim,
+              typename Particle,
+              typename Arrays>
+    DEAL_II_ALWAYS_INLINE inline void
+    gather_by_rows(const BSplineWeights<dim> &weights,
+                   const Particle            &p,
+                   const GridCell<dim>       &cell,
+                   const Arrays              &from,
+                   Tensor<1, dim>            &v_grid,
+                   Tensor<1, dim>            &dv,
+                   Tensor<2, dim>            &L)
+    {
+      weights.rows(p,
+                   cell,
+                   [&](const unsigned int *row,
+                       const SplineWindow &w0,
+                       const double        v12,
+                       const double        s12,
+                       const double        s2) DEAL_II_ALWAYS_INLINE {
+                     double value[dim] = {}, slope[dim] = {},
+                            increment[dim] = {};
+                     for (unsigned int k = 0; k < 3; ++k)
+                       for (unsigned int d = 0; d < dim; ++d)
+                         {
+                           const double v = from.velocity[d][row[k]];
+                           value[d] += w0.value[k] * v;
+                           if (deformation)
+                             slope[d] += w0.slope[k] * v;
+                           if (motion)
+                             increment[d] +=
+                               w0.value[k] * from.increment[d][row[k]];
+                         }
+                     for (unsigned int d = 0; d < dim; ++d)
+                       {
+                         if (move)
+                           v_grid[d] += v12 * value[d];
+                         if (motion)
+                           dv[d] += v12 * increment[d];
+                         if (deformation)
+                           {
+                             L[d][0] += v12 * slope[d];
+                             L[d][1] += s12 * value[d];
+                             if constexpr (dim == 3)
+                               L[d][2] += s2 * value[d];
+                           }
+                       }
+                   });
+    }
+
     /** The sums over particle @p k's stencil (in @p cell) that a
      * sweep needs, from the nodal arrays @p from: v_grid = sum N v (if it moves
      * the particle), dv = sum N dv and, with APIC (@p affine), B = sum N v (x)
@@ -155,6 +211,13 @@ namespace dealmpm
                                   xi,
                                   cell.inverse_jacobian);
         }
+      else if (std::is_same_v<Weights, BSplineWeights<dim>> &&
+               !(motion && affine))
+        {
+          if constexpr (std::is_same_v<Weights, BSplineWeights<dim>>)
+            gather_by_rows<motion, move, deformation>(
+              weights, p, cell, from, v_grid, dv, L);
+        }
       else
         {
           // APIC measures x_i - x_p from the stencil's positions (the
@@ -162,7 +225,7 @@ namespace dealmpm
           // moved it yet; its reference one in total Lagrangian), or, with
           // weights computed where used, from the particle's position.
           Point<dim> x_affine;
-          if constexpr (std::is_same_v<Weights, LinearWeights<dim>>)
+          if constexpr (computed_where_used<dim, Weights>)
             x_affine = p.get_location();
           else if (motion && affine)
             x_affine = stencil.position[k];

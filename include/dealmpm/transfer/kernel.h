@@ -126,6 +126,13 @@ namespace dealmpm
       return chosen;
     }
 
+    /** The quadratic B-spline's lattice if that is the shape function and
+     * the sweeps can compute its weights where they use them
+     * (BSplineWeights, as they do linear ones: every direction has two
+     * cells or more), else nullptr. */
+    const QuadraticBSplineGrid<dim> *
+    spline_grid() const;
+
     std::vector<FieldDescription>
     particle_fields() const
     {

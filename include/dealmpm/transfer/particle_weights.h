@@ -3,9 +3,11 @@
 #include <deal.II/base/config.h>
 
 #include <dealmpm/grid/background_grid.h>
+#include <dealmpm/transfer/quadratic_bspline.h>
 #include <dealmpm/transfer/stencil.h>
 
 #include <cstddef>
+#include <type_traits>
 
 namespace dealmpm
 {
@@ -248,14 +250,23 @@ namespace dealmpm
     }
   };
 
+  /** Whether @p Weights are computed where used (Stencil::where_used),
+   * from the particle's reference location in its listed cell. */
+  template <int dim, typename Weights>
+  constexpr bool computed_where_used =
+    std::is_same_v<Weights, LinearWeights<dim>> ||
+    std::is_same_v<Weights, BSplineWeights<dim>>;
+
   /** Run @p sweep(weights) with the weights @p stencil stands for: stored,
-   * or linear ones computed where used. */
+   * or linear or B-spline ones computed where used. */
   template <int dim, typename Sweep>
   DEAL_II_ALWAYS_INLINE inline auto
   with_weights(const BackgroundGrid<dim> &grid,
                const Stencil<dim>        &stencil,
                const Sweep               &sweep)
   {
+    if (stencil.where_used && stencil.spline != nullptr)
+      return sweep(BSplineWeights<dim>{grid, *stencil.spline});
     if (stencil.where_used)
       return sweep(LinearWeights<dim>{grid});
     return sweep(StoredWeights<dim>{stencil});

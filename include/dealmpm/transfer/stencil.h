@@ -12,6 +12,8 @@ namespace dealmpm
 {
   template <int dim>
   class LatticeBlocks;
+  template <int dim>
+  struct QuadraticBSplineGrid;
 
   /**
    * The particle -> node weights of one step: for each local particle (in
@@ -36,11 +38,15 @@ namespace dealmpm
     /** Made once at the particles' reference positions and kept for the
      * run (total Lagrangian: compute_reference_stencil()). */
     bool reference = false;
-    /** The weights are linear ones computed where they are used
-     * (LinearWeights): begin, node, N and grad_N stay empty. Set when the
+    /** The weights are computed where they are used: linear ones
+     * (LinearWeights), or the quadratic B-spline's of @p spline
+     * (BSplineWeights); begin, node, N and grad_N stay empty. Set when the
      * step's P2G and G2P sweeps are the weights' only readers
      * (Simulation::weights_where_used()). */
     bool where_used = false;
+    /** With where_used: the B-spline's lattice (BSplineWeights), or
+     * nullptr for linear weights. */
+    const QuadraticBSplineGrid<dim> *spline = nullptr;
 
     /** The first particle whose weights could not be computed (a CPDI
      * domain reaching past the cells next to its own); the run stops. */
