@@ -4,6 +4,7 @@
 
 #include <iostream>
 #include <map>
+#include <string>
 #include <vector>
 
 namespace dealmpm
@@ -41,8 +42,11 @@ namespace dealmpm
     if (c.count[kind]++ > 0)
       return;
     c.order.push_back(kind);
+    // One write of the whole line: mpirun forwards a rank's stderr and
+    // stdout through separate pipes, and a line written in pieces came out
+    // with the stdout line after it in the middle (checkpoint_kill.sh).
     if (prints())
-      std::cerr << "dealmpm: warning: " << text << std::endl;
+      std::cerr << "dealmpm: warning: " + text + "\n" << std::flush;
   }
 
   void
@@ -51,9 +55,11 @@ namespace dealmpm
     WarningCounts &c = counts();
     for (const std::string &kind : c.order)
       if (c.count[kind] > 1 && prints())
-        std::cerr << "dealmpm: warning: " << c.count[kind] - 1 << " more '"
-                  << kind << "' warning" << (c.count[kind] > 2 ? "s" : "")
-                  << " after the first (above)" << std::endl;
+        std::cerr << "dealmpm: warning: " + std::to_string(c.count[kind] - 1) +
+                       " more '" + kind + "' warning" +
+                       (c.count[kind] > 2 ? "s" : "") +
+                       " after the first (above)\n"
+                  << std::flush;
     c = WarningCounts();
   }
 } // namespace dealmpm
