@@ -149,7 +149,8 @@ namespace dealmpm
     void
     stencil(StepState<dim> &s, const std::string &timer_section)
     {
-      // P2G and G2P compute the weights (LinearWeights): no timer row.
+      // P2G and G2P compute the weights (LinearWeights, BSplineWeights):
+      // no timer row.
       if (s.stencil.where_used)
         return;
       {

@@ -50,8 +50,8 @@ namespace dealmpm
     }
   };
 
-  /** Where P2G adds through stored weights into one set of nodal
-   * fields: a block of 1 + 2 dim numbers per node (mass, momentum,
+  /** Where P2G adds through stored or B-spline weights into one set of
+   * nodal fields: a block of 1 + 2 dim numbers per node (mass, momentum,
    * force), copied into the nodal vectors after the sweep. A stored
    * stencil adds into 3^dim nodes a particle (quadratic B-spline, GIMP);
    * each entry then touches one cache line instead of 1 + 2 dim, from
@@ -85,7 +85,8 @@ namespace dealmpm
   };
 
   /** Where P2G adds: one set of nodal fields, as the vectors'
-   * NodalPointers or an InterleavedNodes block (stored weights). */
+   * NodalPointers or an InterleavedNodes block (stored or B-spline
+   * weights). */
   template <typename Fields>
   struct SingleTarget
   {

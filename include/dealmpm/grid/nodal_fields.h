@@ -35,9 +35,9 @@ namespace dealmpm
      * then looks at the weights of each particle's cell (in most steps of
      * most scenes no node is light, and G2P uses no weights). */
     bool has_light_nodes = false;
-    /** Scratch of P2G through stored weights: mass, momentum and force
-     * interleaved by node (empty with linear weights computed where
-     * used). */
+    /** Scratch of P2G through stored or B-spline weights: mass, momentum
+     * and force interleaved by node (empty with linear weights computed
+     * where used). */
     std::vector<double> p2g_block;
 
     void

@@ -113,6 +113,10 @@ namespace dealmpm
                 });
     }
 
+    /** Whether gather() sums by rows (gather_by_rows()). */
+    template <int dim, typename Weights>
+    constexpr bool by_rows = std::is_same_v<Weights, BSplineWeights<dim>>;
+
     /** gather()'s v_grid, dv and L for B-spline weights computed where
      * used, a row of nodes along x at a time (BSplineWeights::rows()):
      * the row's sums with x's weights, then scaled by the other
@@ -211,10 +215,10 @@ namespace dealmpm
                                   xi,
                                   cell.inverse_jacobian);
         }
-      else if (std::is_same_v<Weights, BSplineWeights<dim>> &&
-               !(motion && affine))
+      // APIC's B needs each node's weight: the per-node path below.
+      else if (by_rows<dim, Weights> && !(motion && affine))
         {
-          if constexpr (std::is_same_v<Weights, BSplineWeights<dim>>)
+          if constexpr (by_rows<dim, Weights>)
             gather_by_rows<motion, move, deformation>(
               weights, p, cell, from, v_grid, dv, L);
         }

@@ -114,7 +114,8 @@ namespace dealmpm
                     Stencil<dim>              &stencil) const
     {
       stencil.failed = false;
-      // The sweeps compute linear weights themselves (LinearWeights).
+      // The sweeps compute the weights themselves (LinearWeights,
+      // BSplineWeights).
       if (stencil.where_used)
         return;
       shape_function->compute_stencil(grid, particles, stencil);
