@@ -176,6 +176,7 @@ namespace dealmpm
       effect->grid_changed(grid);
     regions.grid_changed(grid);
     nodal.reinit(grid.partitioner, bodies.size());
+    choose_weights(); // uGIMP's windows fit the new lattice or not
     // Smaller cells, smaller stable step.
     particle_check = check_particles(grid,
                                      materials,

@@ -143,14 +143,13 @@ namespace dealmpm
         if (!mixed_cells->needed())
           mixed_cells.reset();
       }
-    stencil.where_used = weights_where_used();
-    stencil.spline     = stencil.where_used ? kernel.spline_grid() : nullptr;
-    stages             = stages_of<dim>(run_settings.method.scheme,
+    choose_weights();
+    stages         = stages_of<dim>(run_settings.method.scheme,
                             mixed_cells != nullptr,
                             run_settings.method.formulation,
                             run_settings.method.particle_update.newmark,
                             !regions.empty());
-    particle_check     = check_particles(grid,
+    particle_check = check_particles(grid,
                                      materials,
                                      *particles,
                                      run_settings.method.total_lagrangian());
@@ -173,14 +172,31 @@ namespace dealmpm
     // mixed-cell split, FEM regions' contact, total Lagrangian's reference
     // stencil, most effects. APIC needs none (affine_transfer.h).
     const MethodSettings &method = run_settings.method;
-    const bool            computable =
-      kernel.name() == "linear" || kernel.spline_grid() != nullptr;
+    // uGIMP's windows need every domain within half a cell, which splitting
+    // and merging particles as the grid adapts would have to keep.
+    const bool computable =
+      kernel.name() == "linear" || kernel.spline_grid() != nullptr ||
+      (kernel.gimp_lattice() != nullptr && !adaptivity.enabled());
     if (!computable || method.particle_update.newmark ||
-        method.total_lagrangian() || mixed_cells || !regions.empty())
+        method.total_lagrangian() || mixed_cells || !regions.empty() ||
+        std::any_of(effects.begin(), effects.end(), [](const auto &effect) {
+          return effect->reads_stencil();
+        }))
       return false;
-    return std::none_of(effects.begin(), effects.end(), [](const auto &effect) {
-      return effect->reads_stencil();
-    });
+    return kernel.name() == "linear" || kernel.spline_grid() != nullptr ||
+           domains_fit_windows(grid, *particles);
+  }
+
+  template <int dim>
+  void
+  Simulation<dim>::choose_weights()
+  {
+    stencil.where_used = weights_where_used();
+    stencil.spline     = stencil.where_used ? kernel.spline_grid() : nullptr;
+    gimp_windows       = {kernel.gimp_lattice(),
+                          particles->fields.domain_half_length};
+    stencil.gimp =
+      stencil.where_used && gimp_windows.lattice ? &gimp_windows : nullptr;
   }
 
   template <int dim>
@@ -420,6 +436,7 @@ namespace dealmpm
   template void Simulation<dim>::start_load_balance(const CheckpointInfo *); \
   template void Simulation<dim>::choose_stages();                            \
   template bool Simulation<dim>::weights_where_used() const;                 \
+  template void Simulation<dim>::choose_weights();                           \
   template void Simulation<dim>::read_scene(SceneReader &,                   \
                                             const SceneShape &);             \
   template unsigned int Simulation<dim>::expected_particles(                 \

@@ -149,7 +149,7 @@ namespace dealmpm
     void
     stencil(StepState<dim> &s, const std::string &timer_section)
     {
-      // P2G and G2P compute the weights (LinearWeights, BSplineWeights):
+      // P2G and G2P compute the weights (LinearWeights, WindowWeights):
       // no timer row.
       if (s.stencil.where_used)
         return;

@@ -1,3 +1,4 @@
+#include <dealmpm/transfer/gimp_windows.h>
 #include <dealmpm/transfer/lattice_blocks.h>
 #include <dealmpm/transfer/stencil.h>
 #include <dealmpm/transfer/stencil_order.h>
@@ -202,12 +203,38 @@ namespace dealmpm
     AssertThrow(n_visited == n_local, ExcInternalError());
   }
 
+  template <int dim>
+  bool
+  domains_fit_windows(const BackgroundGrid<dim> &grid,
+                      const ParticleSet<dim>    &particles)
+  {
+    const unsigned int half_length = particles.fields.domain_half_length;
+    AssertThrow(half_length != numbers::invalid_unsigned_int,
+                ExcInternalError());
+    // Half a cell, as the bodies make it for one particle a cell, may come
+    // out a few ulps above: the window then misses a few ulps of weight.
+    constexpr double most = 0.5 * (1. + 1e-12);
+    bool             fit  = true;
+    for_each_particle_in_stencil_order(
+      grid,
+      particles,
+      [&](const std::size_t, const auto &p, const GridCell<dim> &own) {
+        const auto props = p.get_properties();
+        for (unsigned int d = 0; d < dim; ++d)
+          fit =
+            fit && props[half_length + d] * own.inverse_jacobian[d][d] <= most;
+      });
+    return Utilities::MPI::min(fit ? 1 : 0, grid.comm) == 1;
+  }
+
 #define DEALMPM_INSTANTIATE(dim)                                  \
   template void compute_gimp_stencil(const BackgroundGrid<dim> &, \
                                      const ParticleSet<dim> &,    \
                                      bool,                        \
                                      Stencil<dim> &,              \
-                                     const LatticeBlocks<dim> *);
+                                     const LatticeBlocks<dim> *); \
+  template bool domains_fit_windows(const BackgroundGrid<dim> &,  \
+                                    const ParticleSet<dim> &);
   DEALMPM_INSTANTIATE(2)
   DEALMPM_INSTANTIATE(3)
 #undef DEALMPM_INSTANTIATE

@@ -68,7 +68,19 @@ namespace dealmpm
                  "are axis-aligned boxes (a rectangle grid, or such a mesh)";
         grid.find_neighbors();
         lattice.setup(grid);
+        windows_fit =
+          !follow_deformation &&
+          Utilities::MPI::min(lattice.windows_fit() ? 1 : 0, grid.comm) == 1;
         return "";
+      }
+
+      /** Its lattice where the sweeps can compute uGIMP's weights on
+       * three-node windows (GimpWindows), else nullptr. cpGIMP's domains
+       * stretch past them. */
+      const LatticeBlocks<dim> *
+      window_lattice() const
+      {
+        return windows_fit ? &lattice : nullptr;
       }
 
       void
@@ -101,6 +113,7 @@ namespace dealmpm
     private:
       bool               follow_deformation;
       LatticeBlocks<dim> lattice;
+      bool               windows_fit = false;
     };
 
     template <int dim>
@@ -261,6 +274,14 @@ namespace dealmpm
       dynamic_cast<const QuadraticBSpline<dim> *>(shape_function.get());
     return spline && spline->lattice().windows_fit() ? &spline->lattice() :
                                                        nullptr;
+  }
+
+  template <int dim>
+  const LatticeBlocks<dim> *
+  Kernel<dim>::gimp_lattice() const
+  {
+    const auto *gimp = dynamic_cast<const GIMP<dim> *>(shape_function.get());
+    return gimp ? gimp->window_lattice() : nullptr;
   }
 
   template class Kernel<2>;

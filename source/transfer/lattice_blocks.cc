@@ -80,6 +80,36 @@ namespace dealmpm
         }
       return present;
     }
+
+    /** Whether the cells of a patch that exist (@p present, bit sum_d
+     * side_d 3^d) are those that exist along each direction alone (a cell
+     * is missing only where its row is), and each direction has a
+     * neighbour on one side at least. */
+    template <int dim>
+    bool
+    window_fits(const std::uint32_t present)
+    {
+      constexpr unsigned int level = dim == 2 ? 4 : 13; // sides 1, 1 (, 1)
+      bool                   along[dim][3];
+      unsigned int           step = 1;
+      for (unsigned int d = 0; d < dim; ++d, step *= 3)
+        {
+          for (unsigned int side = 0; side < 3; ++side)
+            along[d][side] = (present >> (level + side * step - step)) & 1u;
+          if (!along[d][0] && !along[d][2])
+            return false;
+        }
+      for (unsigned int s = 0; s < Utilities::pow(3, dim); ++s)
+        {
+          bool         expected = true;
+          unsigned int rest     = s;
+          for (unsigned int d = 0; d < dim; ++d, rest /= 3)
+            expected = expected && along[d][rest % 3];
+          if (bool((present >> s) & 1u) != expected)
+            return false;
+        }
+      return true;
+    }
   } // namespace
 
   template <int dim>
@@ -88,10 +118,15 @@ namespace dealmpm
   {
     present.assign(grid.cells.size(), 0);
     nodes.assign(grid.cells.size() * block_size, 0);
+    all_windows_fit = false;
     if (!grid.cartesian || !grid.has_side_neighbors())
       return;
+    all_windows_fit = true;
     for (unsigned int i = 0; i < grid.cells.size(); ++i)
-      present[i] = fill_block(grid, i, &nodes[i * block_size]);
+      {
+        present[i]      = fill_block(grid, i, &nodes[i * block_size]);
+        all_windows_fit = all_windows_fit && window_fits<dim>(present[i]);
+      }
   }
 
   template class LatticeBlocks<2>;

@@ -216,8 +216,8 @@ namespace dealmpm
         }
     }
 
-    /** A particle's shares with B-spline weights computed where used, a
-     * row of nodes along x at a time (BSplineWeights::rows()): a node's
+    /** A particle's shares with windowed weights computed where used, a
+     * row of nodes along x at a time (WindowWeights::rows()): a node's
      * force is x's slope times the row's P_d0 v12 plus x's value times
      * its P_d1 s12 + P_d2 s2, each taken once a row. @p P: the force per
      * gradient (-V sigma). */
@@ -227,18 +227,18 @@ namespace dealmpm
               typename Particle,
               typename Fields>
     DEAL_II_ALWAYS_INLINE inline void
-    add_by_rows(const BSplineWeights<dim> &weights,
-                const Particle            &p,
-                const GridCell<dim>       &c,
-                const double               m,
-                const Tensor<1, dim>      &v,
+    add_by_rows(const WindowWeights<dim> &weights,
+                const Particle           &p,
+                const GridCell<dim>      &c,
+                const double              m,
+                const Tensor<1, dim>     &v,
                 const double (&P)[dim][dim],
                 const Fields &to)
     {
       weights.rows(p,
                    c,
                    [&](const unsigned int *row,
-                       const SplineWindow &w0,
+                       const NodeWindow   &w0,
                        const double        v12,
                        const double        s12,
                        const double        s2) DEAL_II_ALWAYS_INLINE {
@@ -347,7 +347,7 @@ namespace dealmpm
                 for (unsigned int j = 0; j < dim; ++j)
                   force_per_gradient_component[i][j] = P[i][j];
             }
-          if constexpr (std::is_same_v<Weights, BSplineWeights<dim>> &&
+          if constexpr (std::is_same_v<Weights, WindowWeights<dim>> &&
                         !Targets::per_body && !affine)
             {
               add_by_rows<dim, mass_and_momentum, internal_force>(
@@ -487,11 +487,11 @@ namespace dealmpm
             grid, particles, stencil, weights, targets, predictor_offset);
         };
         // The interleaved block is for 3^dim or more nodes a particle:
-        // stored weights and B-spline ones (particle_to_grid).
+        // stored weights and windowed ones (particle_to_grid).
         if constexpr (Targets::interleaved)
           {
             if (stencil.where_used)
-              sweep(BSplineWeights<dim>{grid, *stencil.spline});
+              sweep(WindowWeights<dim>::of(grid, stencil));
             else
               sweep(StoredWeights<dim>{stencil});
           }
@@ -545,7 +545,7 @@ namespace dealmpm
                    const Formulation          formulation,
                    const double               predictor_offset)
   {
-    if (stencil.where_used && stencil.spline == nullptr)
+    if (stencil.where_used && !stencil.on_windows())
       {
         zero(fields, mass_and_momentum, internal_force);
         dispatch(grid,
@@ -559,7 +559,7 @@ namespace dealmpm
       }
     else
       {
-        // Stored or B-spline weights (3^dim or more nodes a particle): one
+        // Stored or windowed weights (3^dim or more nodes a particle): one
         // block entry a node instead of 1 + 2 dim vectors
         // (InterleavedNodes).
         std::vector<double>               &block = fields.p2g_block;

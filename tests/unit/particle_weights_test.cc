@@ -8,7 +8,7 @@
 // stress update), the re-map also made in MUSL's G2P sweep; on grids with
 // hanging nodes in 2D and 3D and on distorted (non-affine) cells. The weights
 // themselves are deal.II's Q1 functions. The same for the quadratic
-// B-spline's weights computed where used.
+// B-spline's and uGIMP's weights computed where used.
 #include <deal.II/fe/fe_q.h>
 
 #include <dealmpm/transfer/grid_to_particle.h>
@@ -97,6 +97,18 @@ subsection MPM
 end
 )";
 
+  /** uGIMP on the B-spline's grids: domains of a quarter cell (two
+   * particles a cell a direction), those next to the grid's edge clipped
+   * there. */
+  const std::string ugimp_scene =
+    bspline_scene + "subsection MPM\n set Shape function = uGIMP\nend\n";
+  const std::string ugimp_scene_3d =
+    bspline_scene_3d + "subsection MPM\n set Shape function = uGIMP\nend\n";
+  /** Domains of half a cell, the most the windows take: every domain
+   * reaches into a neighbour. */
+  const std::string ugimp_scene_one_a_cell =
+    ugimp_scene + "subsection Body 1\n set Particles per cell = 1\nend\n";
+
   /** Appended to a scene: the particles carry APIC's B. */
   const std::string apic = "subsection MPM\n set Velocity update = APIC\nend\n";
 
@@ -147,6 +159,7 @@ end
     const BackgroundGrid<dim>                          &grid;
     NodalFields<dim>                                    fields;
     Stencil<dim>                                        stored, where_used;
+    GimpWindows<dim>                                    gimp_windows;
     std::vector<double>                                 before;
 
     RandomState(const std::string &scene, const unsigned int seed)
@@ -164,7 +177,14 @@ end
         record_positions(grid, particles, stored);
       where_used.where_used = true;
       where_used.spline     = kernel.spline_grid();
-      before                = test::particle_state(particles);
+      gimp_windows          = {kernel.gimp_lattice(),
+                               particles.fields.domain_half_length};
+      if (gimp_windows.lattice != nullptr)
+        {
+          EXPECT_TRUE(domains_fit_windows(grid, particles));
+          where_used.gimp = &gimp_windows;
+        }
+      before = test::particle_state(particles);
     }
 
     /** @p more sized for the grid. */
@@ -382,6 +402,63 @@ TEST(ParticleWeights, BSplineMuslRemapInTheSweepEqualsTheRemapAfterIt)
 {
   check_remap_in_sweep<2>(bspline_scene);
   check_remap_in_sweep<3>(bspline_scene_3d + apic);
+}
+
+// uGIMP's weights computed where used (GimpWindows) are those of its stored
+// stencil (the lattice path inside the grid, the general path, normalised
+// by the covered volume, where a domain reaches past the grid's edge):
+// P2G, G2P, MUSL's deferred reference location and re-map in its sweep,
+// APIC; domains of a quarter and of half a cell.
+TEST(ParticleWeights, UGimpWhereUsedEqualsStored)
+{
+  check_weights_where_used<2>(ugimp_scene);
+  check_weights_where_used<2>(ugimp_scene_one_a_cell);
+  check_weights_where_used<3>(ugimp_scene_3d);
+  check_weights_where_used<2>(ugimp_scene + apic);
+  check_weights_where_used<3>(ugimp_scene_3d + apic);
+  check_remap_in_sweep<2>(ugimp_scene_one_a_cell);
+  check_remap_in_sweep<3>(ugimp_scene_3d + apic);
+}
+
+// uGIMP's windows are used only where they give the stored weights: not
+// for cpGIMP (its domains stretch), nor on grids with one cell across
+// (no node to pad with), local refinement (no lattice) or cells missing
+// from a patch that are not whole rows (the inner corner of an L: the
+// covered part of a domain is no box), nor with a domain wider than half
+// its cell.
+TEST(ParticleWeights, UGimpWindowsOnlyWhereTheyFit)
+{
+  const auto fit = [](const std::string &scene) {
+    auto simulation = test::make_simulation<2>(scene);
+    return simulation->get_kernel().gimp_lattice() != nullptr;
+  };
+  const std::string ugimp =
+    "subsection MPM\n set Shape function = uGIMP\nend\n";
+  EXPECT_TRUE(fit(ugimp_scene));
+  EXPECT_FALSE(
+    fit(bspline_scene + "subsection MPM\n set Shape function = cpGIMP\nend\n"));
+  EXPECT_FALSE(fit(ugimp_scene + "subsection Grid\n set Cells = 7, 1\nend\n"));
+  EXPECT_FALSE(fit(refined_scene + ugimp));
+  EXPECT_FALSE(fit(
+    "subsection Grid\n set Type = mesh file\n set Mesh file = " DEALMPM_SOURCE_DIR
+    "/tests/data/l_shaped.msh\n set Global refinements = 1\nend\n"
+    "subsection Body 1\n set Lower corner = 0.1, 0.1\n set Upper "
+    "corner = 0.9, 0.9\nend\n" +
+    ugimp));
+
+  auto                     simulation = test::make_simulation<2>(ugimp_scene);
+  ParticleSet<2>          &particles  = simulation->particle_set();
+  const BackgroundGrid<2> &grid       = simulation->background_grid();
+  EXPECT_TRUE(domains_fit_windows(grid, particles));
+  const unsigned int half_length = particles.fields.domain_half_length;
+  for_each_particle_in_stencil_order(
+    grid,
+    particles,
+    [&](const std::size_t k, const auto &p, const GridCell<2> &c) {
+      if (k == 5)
+        p.get_properties()[half_length + 1] = 0.51 / c.inverse_jacobian[1][1];
+    });
+  EXPECT_FALSE(domains_fit_windows(grid, particles));
 }
 
 namespace

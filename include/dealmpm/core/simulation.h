@@ -31,6 +31,7 @@
 #include <dealmpm/schemes/stages.h>
 #include <dealmpm/schemes/time_stepping.h>
 #include <dealmpm/schemes/update_scheme.h>
+#include <dealmpm/transfer/gimp_windows.h>
 #include <dealmpm/transfer/kernel.h>
 #include <dealmpm/transfer/mixed_cell_split.h>
 #include <dealmpm/transfer/stress_update.h>
@@ -252,11 +253,16 @@ namespace dealmpm
      * step. */
     void
     choose_stages();
-    /** Whether linear or quadratic B-spline weights may be computed where
-     * P2G and G2P use them instead of stored (Stencil::where_used):
-     * nothing else reads them. */
+    /** Whether linear, quadratic B-spline or uGIMP weights may be computed
+     * where P2G and G2P use them instead of stored (Stencil::where_used):
+     * nothing else reads them, and the B-spline's and uGIMP's fit their
+     * windows on this grid. Collective. */
     bool
     weights_where_used() const;
+    /** Set the stencil's kind (weights_where_used()): at the start and
+     * after each grid change, which may make uGIMP's windows fit or not. */
+    void
+    choose_weights();
     /** The step's one reduction and what it decides: the next step's
      * size, stops, relocation and the couplings' publication. */
     void
@@ -358,11 +364,14 @@ namespace dealmpm
     boost::signals2::scoped_connection particle_weights;
     /** The weight imbalance the last repartition reached (1 until one
      * did): the loop's check allows the limit times that. */
-    double                  balanced_imbalance = 1;
-    NodalFieldSet<dim>      nodal;
-    Kernel<dim>             kernel;
-    MemoryEstimate          memory;
-    Stencil<dim>            stencil;
+    double             balanced_imbalance = 1;
+    NodalFieldSet<dim> nodal;
+    Kernel<dim>        kernel;
+    MemoryEstimate     memory;
+    Stencil<dim>       stencil;
+    /** uGIMP's windows (Stencil::gimp) when its weights are computed where
+     * used. */
+    GimpWindows<dim>        gimp_windows;
     std::vector<Stage<dim>> stages;
     /** Only when the scene's materials differ in stiffness. */
     std::unique_ptr<MixedCellSplit<dim>> mixed_cells;

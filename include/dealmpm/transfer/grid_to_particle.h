@@ -115,10 +115,10 @@ namespace dealmpm
 
     /** Whether gather() sums by rows (gather_by_rows()). */
     template <int dim, typename Weights>
-    constexpr bool by_rows = std::is_same_v<Weights, BSplineWeights<dim>>;
+    constexpr bool by_rows = std::is_same_v<Weights, WindowWeights<dim>>;
 
-    /** gather()'s v_grid, dv and L for B-spline weights computed where
-     * used, a row of nodes along x at a time (BSplineWeights::rows()):
+    /** gather()'s v_grid, dv and L for windowed weights computed where
+     * used, a row of nodes along x at a time (WindowWeights::rows()):
      * the row's sums with x's weights, then scaled by the other
      * directions'. */
     template <bool motion,
@@ -128,18 +128,18 @@ namespace dealmpm
               typename Particle,
               typename Arrays>
     DEAL_II_ALWAYS_INLINE inline void
-    gather_by_rows(const BSplineWeights<dim> &weights,
-                   const Particle            &p,
-                   const GridCell<dim>       &cell,
-                   const Arrays              &from,
-                   Tensor<1, dim>            &v_grid,
-                   Tensor<1, dim>            &dv,
-                   Tensor<2, dim>            &L)
+    gather_by_rows(const WindowWeights<dim> &weights,
+                   const Particle           &p,
+                   const GridCell<dim>      &cell,
+                   const Arrays             &from,
+                   Tensor<1, dim>           &v_grid,
+                   Tensor<1, dim>           &dv,
+                   Tensor<2, dim>           &L)
     {
       weights.rows(p,
                    cell,
                    [&](const unsigned int *row,
-                       const SplineWindow &w0,
+                       const NodeWindow   &w0,
                        const double        v12,
                        const double        s12,
                        const double        s2) DEAL_II_ALWAYS_INLINE {

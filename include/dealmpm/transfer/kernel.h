@@ -115,7 +115,7 @@ namespace dealmpm
     {
       stencil.failed = false;
       // The sweeps compute the weights themselves (LinearWeights,
-      // BSplineWeights).
+      // WindowWeights).
       if (stencil.where_used)
         return;
       shape_function->compute_stencil(grid, particles, stencil);
@@ -129,10 +129,17 @@ namespace dealmpm
 
     /** The quadratic B-spline's lattice if that is the shape function and
      * the sweeps can compute its weights where they use them
-     * (BSplineWeights, as they do linear ones: every direction has two
+     * (WindowWeights, as they do linear ones: every direction has two
      * cells or more), else nullptr. */
     const QuadraticBSplineGrid<dim> *
     spline_grid() const;
+
+    /** uGIMP's lattice if that is the shape function and the sweeps can
+     * compute its weights where they use them on this grid (GimpWindows:
+     * LatticeBlocks::windows_fit() on every rank), else nullptr. Whether
+     * the particles' domains fit too is domains_fit_windows(). */
+    const LatticeBlocks<dim> *
+    gimp_lattice() const;
 
     std::vector<FieldDescription>
     particle_fields() const

@@ -45,8 +45,19 @@ namespace dealmpm
       return present[i];
     }
 
+    /** Whether every owned cell has a lattice, the cells its patch lacks
+     * are whole rows (so the covered part of a particle domain is a box)
+     * and no direction lacks both neighbours (so a three-node window
+     * fits): GimpWindows can then be used. On this rank only. */
+    bool
+    windows_fit() const
+    {
+      return all_windows_fit;
+    }
+
   private:
     std::vector<std::uint32_t> present;
+    bool                       all_windows_fit = false;
     std::vector<unsigned int>  nodes; ///< cells x 4^dim
   };
 } // namespace dealmpm

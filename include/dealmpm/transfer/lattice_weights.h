@@ -13,4 +13,22 @@ namespace dealmpm
     unsigned int first;
     unsigned int count;
   };
+
+  /**
+   * A particle's three nodes along one direction on its cell's lattice
+   * block (positions 0 .. 3 of the four: x0 - h, x0, x1, x1 + h): block
+   * positions first .. first + 2, with their 1D weights and slopes. Where
+   * only two nodes carry weight next to a boundary, the third, @p padded
+   * (0 or 2 in the window, else 3), is the block's node on the side inside
+   * the grid, with weight and slope zero, so that every particle has 3^dim
+   * nodes and the sweeps' loops have fixed counts (WindowWeights: the
+   * quadratic B-spline and uGIMP).
+   */
+  struct NodeWindow
+  {
+    double       value[3];
+    double       slope[3];
+    unsigned int first;
+    unsigned int padded;
+  };
 } // namespace dealmpm

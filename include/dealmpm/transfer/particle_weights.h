@@ -3,6 +3,7 @@
 #include <deal.II/base/config.h>
 
 #include <dealmpm/grid/background_grid.h>
+#include <dealmpm/transfer/gimp_windows.h>
 #include <dealmpm/transfer/quadratic_bspline.h>
 #include <dealmpm/transfer/stencil.h>
 
@@ -250,23 +251,116 @@ namespace dealmpm
     }
   };
 
+  /**
+   * Weights computed where they are used, as LinearWeights are
+   * (Stencil::where_used), on fixed windows of three nodes a direction
+   * (NodeWindow): the quadratic B-spline's (@p spline) or uGIMP's (@p
+   * gimp). A node costs a few products instead of reading back the 36 (2D:
+   * 28) bytes of a stored entry, and the stencil's 972 (2D: 252) bytes a
+   * particle are not kept.
+   */
+  template <int dim>
+  struct WindowWeights
+  {
+    const BackgroundGrid<dim>       &grid;
+    const QuadraticBSplineGrid<dim> *spline = nullptr;
+    const GimpWindows<dim>          *gimp   = nullptr;
+
+    /** The windows @p stencil stands for (Stencil::on_windows()). */
+    static WindowWeights
+    of(const BackgroundGrid<dim> &grid, const Stencil<dim> &stencil)
+    {
+      return WindowWeights{grid, stencil.spline, stencil.gimp};
+    }
+
+    /** f(row, w0, v12, s12, s2) for each row of particle @p p's nodes
+     * along x: row[k] is node k of the row (k = 0, 1, 2), with weight
+     * w0.value[k] v12 and gradient (w0.slope[k] v12, w0.value[k] s12,
+     * w0.value[k] s2); v12 is the product of the other directions'
+     * values, s12 that of y's slope and z's value, s2 (3D) that of y's
+     * value and z's slope. A sweep sums a row with w0 first and scales the
+     * sums once (P2G, G2P): its accumulators stay in registers. */
+    template <typename Particle, typename Function>
+    DEAL_II_ALWAYS_INLINE void
+    rows(const Particle &p, const GridCell<dim> &c, Function &&f) const
+    {
+      const unsigned int  i = index_in_grid(grid, c);
+      NodeWindow          w[dim];
+      const unsigned int *block;
+      if (spline != nullptr)
+        {
+          spline->windows_at(i, p.get_reference_location(), w);
+          block =
+            &spline->block_nodes[i * QuadraticBSplineGrid<dim>::block_size];
+        }
+      else
+        block = gimp->windows_at(i, p, c, w);
+        // Rows one after the other: unrolled, the 3D G2P's loads of all
+        // 27 nodes were hoisted ahead and spilled to the stack.
+#pragma GCC unroll 1
+      for (unsigned int i2 = 0; i2 < (dim == 3 ? 3 : 1); ++i2)
+#pragma GCC unroll 1
+        for (unsigned int i1 = 0; i1 < 3; ++i1)
+          {
+            double       v12 = w[1].value[i1], s12 = w[1].slope[i1];
+            double       s2  = 0;
+            unsigned int row = 4 * (w[1].first + i1) + w[0].first;
+            if constexpr (dim == 3)
+              {
+                s12 *= w[2].value[i2];
+                s2 = w[1].value[i1] * w[2].slope[i2];
+                v12 *= w[2].value[i2];
+                row += 16 * (w[2].first + i2);
+              }
+            f(block + row, w[0], v12, s12, s2);
+          }
+    }
+
+    /** f(node, N, grad N) for each of particle @p p's 3^dim nodes. */
+    template <typename Particle, typename Function>
+    DEAL_II_ALWAYS_INLINE void
+    operator()(const std::size_t,
+               const Particle      &p,
+               const GridCell<dim> &c,
+               Function           &&f) const
+    {
+      rows(p,
+           c,
+           [&](const unsigned int *row,
+               const NodeWindow   &w0,
+               const double        v12,
+               const double        s12,
+               const double        s2) DEAL_II_ALWAYS_INLINE {
+             for (unsigned int k = 0; k < 3; ++k)
+               {
+                 Tensor<1, dim> grad_N;
+                 grad_N[0] = w0.slope[k] * v12;
+                 grad_N[1] = w0.value[k] * s12;
+                 if constexpr (dim == 3)
+                   grad_N[dim - 1] = w0.value[k] * s2;
+                 f(row[k], w0.value[k] * v12, grad_N);
+               }
+           });
+    }
+  };
+
   /** Whether @p Weights are computed where used (Stencil::where_used),
    * from the particle's reference location in its listed cell. */
   template <int dim, typename Weights>
   constexpr bool computed_where_used =
     std::is_same_v<Weights, LinearWeights<dim>> ||
-    std::is_same_v<Weights, BSplineWeights<dim>>;
+    std::is_same_v<Weights, WindowWeights<dim>>;
 
   /** Run @p sweep(weights) with the weights @p stencil stands for: stored,
-   * or linear or B-spline ones computed where used. */
+   * or linear or windowed ones computed where used. */
   template <int dim, typename Sweep>
   DEAL_II_ALWAYS_INLINE inline auto
   with_weights(const BackgroundGrid<dim> &grid,
                const Stencil<dim>        &stencil,
                const Sweep               &sweep)
   {
-    if (stencil.where_used && stencil.spline != nullptr)
-      return sweep(BSplineWeights<dim>{grid, *stencil.spline});
+    if (stencil.on_windows())
+      return sweep(WindowWeights<dim>::of(grid, stencil));
     if (stencil.where_used)
       return sweep(LinearWeights<dim>{grid});
     return sweep(StoredWeights<dim>{stencil});

@@ -11,23 +11,6 @@
 namespace dealmpm
 {
   /**
-   * A particle's three nodes along one direction on its cell's lattice
-   * block: block positions first .. first + 2 of the four, with their 1D
-   * weights and slopes. In the half cell next to a boundary only two nodes
-   * carry weight (positions 1 and 2); the third, @p padded (0 or 2 in the
-   * window, else 3), is the block's node on the side inside the grid, with
-   * weight and slope zero, so that every particle has 3^dim nodes and the
-   * sweeps' loops have fixed counts (BSplineWeights).
-   */
-  struct SplineWindow
-  {
-    double       value[3];
-    double       slope[3];
-    unsigned int first;
-    unsigned int padded;
-  };
-
-  /**
    * What the quadratic B-spline kernel needs of a uniform box grid: per
    * locally owned cell the 4^dim nodes of the 3^dim block of cells around it
    * (each particle uses 3 of the 4 per direction), and the structured index
@@ -53,7 +36,7 @@ namespace dealmpm
     setup(const BackgroundGrid<dim> &grid);
 
     /** Whether every direction has two cells or more: then the windows'
-     * padded nodes exist and BSplineWeights can be used. */
+     * padded nodes exist and WindowWeights can be used. */
     bool
     windows_fit() const
     {
@@ -69,9 +52,7 @@ namespace dealmpm
      * update compute them after the particle moved (Stencil::where_used).
      * Needs windows_fit(). */
     DEAL_II_ALWAYS_INLINE void
-    windows_at(const unsigned int i,
-               const Point<dim>  &xi,
-               SplineWindow      *w) const
+    windows_at(const unsigned int i, const Point<dim> &xi, NodeWindow *w) const
     {
       for (unsigned int d = 0; d < dim; ++d)
         window_1d(lower_index[i][d] + xi[d],
@@ -90,7 +71,7 @@ namespace dealmpm
     {
       for (unsigned int d = 0; d < dim; ++d)
         {
-          SplineWindow s;
+          NodeWindow s;
           window_1d(lower_index[i][d] + xi[d],
                     lower_index[i][d],
                     n_cells[d],
@@ -121,11 +102,11 @@ namespace dealmpm
      * cells, on that cell's 4-node block of cell length 1 / @p inverse_h.
      */
     static DEAL_II_ALWAYS_INLINE void
-    window_1d(const double  t,
-              const int     J,
-              const int     n,
-              const double  inverse_h,
-              SplineWindow &w)
+    window_1d(const double t,
+              const int    J,
+              const int    n,
+              const double inverse_h,
+              NodeWindow  &w)
     {
       if (t < 0.5 || t >= n - 0.5)
         {
@@ -160,84 +141,6 @@ namespace dealmpm
       w.slope[0] = -below * inverse_h;
       w.slope[1] = -2. * r * inverse_h;
       w.slope[2] = above * inverse_h;
-    }
-  };
-
-  /**
-   * Quadratic B-spline weights computed where they are used, as
-   * LinearWeights are (Stencil::where_used), on fixed windows of three
-   * nodes a direction (SplineWindow): a node costs a few products instead
-   * of reading back the 36 (2D: 28) bytes of a stored entry, and the
-   * stencil's 972 (2D: 252) bytes a particle are not kept.
-   */
-  template <int dim>
-  struct BSplineWeights
-  {
-    const BackgroundGrid<dim>       &grid;
-    const QuadraticBSplineGrid<dim> &spline;
-
-    /** f(row, w0, v12, s12, s2) for each row of particle @p p's nodes
-     * along x: row[k] is node k of the row (k = 0, 1, 2), with weight
-     * w0.value[k] v12 and gradient (w0.slope[k] v12, w0.value[k] s12,
-     * w0.value[k] s2); v12 is the product of the other directions'
-     * values, s12 that of y's slope and z's value, s2 (3D) that of y's
-     * value and z's slope. A sweep sums a row with w0 first and scales the
-     * sums once (P2G, G2P): its accumulators stay in registers. */
-    template <typename Particle, typename Function>
-    DEAL_II_ALWAYS_INLINE void
-    rows(const Particle &p, const GridCell<dim> &c, Function &&f) const
-    {
-      const unsigned int i = index_in_grid(grid, c);
-      SplineWindow       w[dim];
-      spline.windows_at(i, p.get_reference_location(), w);
-      const unsigned int *block =
-        &spline.block_nodes[i * QuadraticBSplineGrid<dim>::block_size];
-      // Rows one after the other: unrolled, the 3D G2P's loads of all
-      // 27 nodes were hoisted ahead and spilled to the stack.
-#pragma GCC unroll 1
-      for (unsigned int i2 = 0; i2 < (dim == 3 ? 3 : 1); ++i2)
-#pragma GCC unroll 1
-        for (unsigned int i1 = 0; i1 < 3; ++i1)
-          {
-            double       v12 = w[1].value[i1], s12 = w[1].slope[i1];
-            double       s2  = 0;
-            unsigned int row = 4 * (w[1].first + i1) + w[0].first;
-            if constexpr (dim == 3)
-              {
-                s12 *= w[2].value[i2];
-                s2 = w[1].value[i1] * w[2].slope[i2];
-                v12 *= w[2].value[i2];
-                row += 16 * (w[2].first + i2);
-              }
-            f(block + row, w[0], v12, s12, s2);
-          }
-    }
-
-    /** f(node, N, grad N) for each of particle @p p's 3^dim nodes. */
-    template <typename Particle, typename Function>
-    DEAL_II_ALWAYS_INLINE void
-    operator()(const std::size_t,
-               const Particle      &p,
-               const GridCell<dim> &c,
-               Function           &&f) const
-    {
-      rows(p,
-           c,
-           [&](const unsigned int *row,
-               const SplineWindow &w0,
-               const double        v12,
-               const double        s12,
-               const double        s2) DEAL_II_ALWAYS_INLINE {
-             for (unsigned int k = 0; k < 3; ++k)
-               {
-                 Tensor<1, dim> grad_N;
-                 grad_N[0] = w0.slope[k] * v12;
-                 grad_N[1] = w0.value[k] * s12;
-                 if constexpr (dim == 3)
-                   grad_N[dim - 1] = w0.value[k] * s2;
-                 f(row[k], w0.value[k] * v12, grad_N);
-               }
-           });
     }
   };
 

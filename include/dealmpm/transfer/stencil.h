@@ -14,6 +14,8 @@ namespace dealmpm
   class LatticeBlocks;
   template <int dim>
   struct QuadraticBSplineGrid;
+  template <int dim>
+  struct GimpWindows;
 
   /**
    * The particle -> node weights of one step: for each local particle (in
@@ -39,14 +41,22 @@ namespace dealmpm
      * run (total Lagrangian: compute_reference_stencil()). */
     bool reference = false;
     /** The weights are computed where they are used: linear ones
-     * (LinearWeights), or the quadratic B-spline's of @p spline
-     * (BSplineWeights); begin, node, N and grad_N stay empty. Set when the
-     * step's P2G and G2P sweeps are the weights' only readers
-     * (Simulation::weights_where_used()). */
+     * (LinearWeights), or on three-node windows (WindowWeights) the
+     * quadratic B-spline's of @p spline or uGIMP's of @p gimp; begin, node,
+     * N and grad_N stay empty. Set when the step's P2G and G2P sweeps are
+     * the weights' only readers (Simulation::weights_where_used()). */
     bool where_used = false;
-    /** With where_used: the B-spline's lattice (BSplineWeights), or
-     * nullptr for linear weights. */
+    /** With where_used: the B-spline's lattice, or nullptr. */
     const QuadraticBSplineGrid<dim> *spline = nullptr;
+    /** With where_used: uGIMP's windows, or nullptr. */
+    const GimpWindows<dim> *gimp = nullptr;
+
+    /** Whether the sweeps compute the weights on three-node windows. */
+    bool
+    on_windows() const
+    {
+      return where_used && (spline != nullptr || gimp != nullptr);
+    }
 
     /** The first particle whose weights could not be computed (a CPDI
      * domain reaching past the cells next to its own); the run stops. */
