@@ -9,6 +9,8 @@
 #   cells);
 # - CPDI on the refined grid (corners located in ghost cells) and the
 #   quadratic B-spline (3 x 3 node blocks reaching into ghost cells);
+# - uGIMP with MUSL on the uniform grid (weights computed where used, on
+#   windows reaching into ghost cells);
 # - the 3D elastic column settling (slip walls, gravity, damping, CFL step);
 # - total Lagrangian: the 3D column, and the cantilever with the quadratic
 #   B-spline (reference stencils reaching into ghost cells);
@@ -69,6 +71,7 @@ compare_ranks cpdi "$disks" "${fast[@]}" -s "MPM/Shape function=CPDI" \
   -s "Grid/Local refinement/Levels=1" -s "Grid/Local refinement/Lower corner=-0.25, -0.5" \
   -s "Grid/Local refinement/Upper corner=0.25, 0.5"
 compare_ranks bspline "$disks" "${fast[@]}" -s "MPM/Shape function=quadratic B-spline"
+compare_ranks ugimp "$disks" "${fast[@]}" -s "MPM/Shape function=uGIMP" -s "MPM/Stress update=MUSL"
 compare_ranks newmark "$disks" "${fast[@]}" -s "MPM/Particle update=Newmark"
 compare_ranks column "$column" -s "Time/End time=0.3" -s "Output/Interval=0.02"
 compare_ranks column_tl "$column" -s "Time/End time=0.3" -s "Output/Interval=0.02" \

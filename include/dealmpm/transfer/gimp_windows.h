@@ -52,6 +52,7 @@ namespace dealmpm
                   (present >> (level - step)) & 1u,
                   (present >> (level + step)) & 1u,
                   c.inverse_jacobian[d][d],
+                  d == 0,
                   w[d]);
       return lattice->of(i);
     }
@@ -64,7 +65,8 @@ namespace dealmpm
      * domain lies between them. Relative to the nearest node, it is [lo,
      * hi], clipped at the grid's edge, and splits at the node (p) into a
      * part under the lower neighbour's hat (-y) and one under the upper's
-     * (y).
+     * (y). A domain inside its cell weights the cell's two nodes only: the
+     * window's third node is padding, visited only @p along_x.
      */
     static DEAL_II_ALWAYS_INLINE void
     window_1d(const double s,
@@ -72,6 +74,7 @@ namespace dealmpm
               const bool   below,
               const bool   above,
               const double inverse_h,
+              const bool   along_x,
               NodeWindow  &w)
     {
       const bool   upper = s >= 0.5; // the nearest node is the cell's upper
@@ -88,25 +91,34 @@ namespace dealmpm
                    v2        = 0.5 * (hi * hi - p * p) * to_length;
       const double g0 = (lo - p) * to_slope, g2 = (hi - p) * to_slope;
       const double v1 = 1. - v0 - v2, g1 = -(g0 + g2);
-      if (!upper && !below)
-        {
-          // No node below the nearest: the window moves up a node, and its
-          // third node (weight zero) is the one above the upper neighbour.
-          w.first  = 1;
-          w.padded = 2;
-          set(w, v1, v2, 0., g1, g2, 0.);
-        }
-      else if (upper && !above)
-        {
-          w.first  = 0;
-          w.padded = 0;
-          set(w, 0., v0, v1, 0., g0, g1);
-        }
-      else
+      // A domain that reaches a trillionth of a cell past its cell's face
+      // (a particle a quarter cell from it, by round-off) has a weight of
+      // 1e-24 there: left out, so that the particle keeps two nodes.
+      constexpr double past = 1e-12;
+      if (upper ? hi > past : lo < -past)
         {
           w.first  = upper ? 1 : 0;
           w.padded = 3;
+          w.rows   = 3;
           set(w, v0, v1, v2, g0, g1, g2);
+          return;
+        }
+      const double lower_value = upper ? v0 : v1, upper_value = upper ? v1 : v2;
+      const double lower_slope = upper ? g0 : g1, upper_slope = upper ? g1 : g2;
+      if (along_x && !above)
+        {
+          // Padded below: the node above the cell's does not exist.
+          w.first  = 0;
+          w.padded = 0;
+          w.rows   = 3;
+          set(w, 0., lower_value, upper_value, 0., lower_slope, upper_slope);
+        }
+      else
+        {
+          w.first  = 1;
+          w.padded = 2;
+          w.rows   = 2;
+          set(w, lower_value, upper_value, 0., lower_slope, upper_slope, 0.);
         }
     }
 

@@ -274,7 +274,8 @@ namespace dealmpm
     }
 
     /** f(row, w0, v12, s12, s2) for each row of particle @p p's nodes
-     * along x: row[k] is node k of the row (k = 0, 1, 2), with weight
+     * along x (3 or 2 a direction: NodeWindow::rows): row[k] is node k of
+     * the row (k = 0, 1, 2), with weight
      * w0.value[k] v12 and gradient (w0.slope[k] v12, w0.value[k] s12,
      * w0.value[k] s2); v12 is the product of the other directions'
      * values, s12 that of y's slope and z's value, s2 (3D) that of y's
@@ -294,13 +295,16 @@ namespace dealmpm
             &spline->block_nodes[i * QuadraticBSplineGrid<dim>::block_size];
         }
       else
-        block = gimp->windows_at(i, p, c, w);
-        // Rows one after the other: unrolled, the 3D G2P's loads of all
-        // 27 nodes were hoisted ahead and spilled to the stack.
+        {
+          block = gimp->windows_at(i, p, c, w);
+        }
+      // Rows one after the other: unrolled, the 3D G2P's loads of all
+      // 27 nodes were hoisted ahead and spilled to the stack.
+      const unsigned int n2 = dim == 3 ? w[dim - 1].rows : 1;
 #pragma GCC unroll 1
-      for (unsigned int i2 = 0; i2 < (dim == 3 ? 3 : 1); ++i2)
+      for (unsigned int i2 = 0; i2 < n2; ++i2)
 #pragma GCC unroll 1
-        for (unsigned int i1 = 0; i1 < 3; ++i1)
+        for (unsigned int i1 = 0; i1 < w[1].rows; ++i1)
           {
             double       v12 = w[1].value[i1], s12 = w[1].slope[i1];
             double       s2  = 0;
@@ -316,7 +320,8 @@ namespace dealmpm
           }
     }
 
-    /** f(node, N, grad N) for each of particle @p p's 3^dim nodes. */
+    /** f(node, N, grad N) for each of particle @p p's nodes (3^dim, or
+     * fewer rows where NodeWindow::rows says). */
     template <typename Particle, typename Function>
     DEAL_II_ALWAYS_INLINE void
     operator()(const std::size_t,

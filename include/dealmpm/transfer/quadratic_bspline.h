@@ -117,6 +117,7 @@ namespace dealmpm
           const bool   lower = J == 0;
           w.first            = lower ? 1 : 0;
           w.padded           = lower ? 2 : 0;
+          w.rows             = 3;
           double *v = w.value + (lower ? 0 : 1), *g = w.slope + (lower ? 0 : 1);
           w.value[w.padded] = 0;
           w.slope[w.padded] = 0;
@@ -135,6 +136,7 @@ namespace dealmpm
       const double below = 0.5 - r, above = 0.5 + r;
       w.first    = nearest - J;
       w.padded   = 3;
+      w.rows     = 3;
       w.value[0] = 0.5 * below * below;
       w.value[1] = 0.75 - r * r;
       w.value[2] = 0.5 * above * above;
