@@ -191,12 +191,10 @@ namespace dealmpm
   void
   Simulation<dim>::choose_weights()
   {
-    stencil.where_used = weights_where_used();
-    stencil.spline     = stencil.where_used ? kernel.spline_grid() : nullptr;
-    gimp_windows       = {kernel.gimp_lattice(),
-                          particles->fields.domain_half_length};
-    stencil.gimp =
-      stencil.where_used && gimp_windows.lattice ? &gimp_windows : nullptr;
+    stencil.where_used   = weights_where_used();
+    stencil.spline       = stencil.where_used ? kernel.spline_grid() : nullptr;
+    stencil.gimp_lattice = stencil.where_used ? kernel.gimp_lattice() : nullptr;
+    stencil.gimp_half_length = particles->fields.domain_half_length;
   }
 
   template <int dim>

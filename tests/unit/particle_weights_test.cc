@@ -159,7 +159,6 @@ end
     const BackgroundGrid<dim>                          &grid;
     NodalFields<dim>                                    fields;
     Stencil<dim>                                        stored, where_used;
-    GimpWindows<dim>                                    gimp_windows;
     std::vector<double>                                 before;
 
     RandomState(const std::string &scene, const unsigned int seed)
@@ -175,15 +174,12 @@ end
       kernel.compute_stencil(grid, particles, stored);
       if (particles.fields.affine_velocity != numbers::invalid_unsigned_int)
         record_positions(grid, particles, stored);
-      where_used.where_used = true;
-      where_used.spline     = kernel.spline_grid();
-      gimp_windows          = {kernel.gimp_lattice(),
-                               particles.fields.domain_half_length};
-      if (gimp_windows.lattice != nullptr)
-        {
-          EXPECT_TRUE(domains_fit_windows(grid, particles));
-          where_used.gimp = &gimp_windows;
-        }
+      where_used.where_used       = true;
+      where_used.spline           = kernel.spline_grid();
+      where_used.gimp_lattice     = kernel.gimp_lattice();
+      where_used.gimp_half_length = particles.fields.domain_half_length;
+      if (where_used.gimp_lattice != nullptr)
+        EXPECT_TRUE(domains_fit_windows(grid, particles));
       before = test::particle_state(particles);
     }
 

@@ -31,7 +31,6 @@
 #include <dealmpm/schemes/stages.h>
 #include <dealmpm/schemes/time_stepping.h>
 #include <dealmpm/schemes/update_scheme.h>
-#include <dealmpm/transfer/gimp_windows.h>
 #include <dealmpm/transfer/kernel.h>
 #include <dealmpm/transfer/mixed_cell_split.h>
 #include <dealmpm/transfer/stress_update.h>
@@ -364,14 +363,11 @@ namespace dealmpm
     boost::signals2::scoped_connection particle_weights;
     /** The weight imbalance the last repartition reached (1 until one
      * did): the loop's check allows the limit times that. */
-    double             balanced_imbalance = 1;
-    NodalFieldSet<dim> nodal;
-    Kernel<dim>        kernel;
-    MemoryEstimate     memory;
-    Stencil<dim>       stencil;
-    /** uGIMP's windows (Stencil::gimp) when its weights are computed where
-     * used. */
-    GimpWindows<dim>        gimp_windows;
+    double                  balanced_imbalance = 1;
+    NodalFieldSet<dim>      nodal;
+    Kernel<dim>             kernel;
+    MemoryEstimate          memory;
+    Stencil<dim>            stencil;
     std::vector<Stage<dim>> stages;
     /** Only when the scene's materials differ in stiffness. */
     std::unique_ptr<MixedCellSplit<dim>> mixed_cells;

@@ -59,14 +59,13 @@ namespace dealmpm
 
     /**
      * The window along one direction of a domain of half-length @p lambda
-     * (in cell lengths) about unit-cell coordinate @p s, in a cell with
-     * (@p below, @p above) or without a neighbour on each side. The three
-     * nodes are the nearest one and its neighbours; with lambda <= 1/2 the
-     * domain lies between them. Relative to the nearest node, it is [lo,
-     * hi], clipped at the grid's edge, and splits at the node (p) into a
-     * part under the lower neighbour's hat (-y) and one under the upper's
-     * (y). A domain inside its cell weights the cell's two nodes only: the
-     * window's third node is padding, visited only @p along_x.
+     * (in cell lengths, at most 1/2) about unit-cell coordinate @p s, in a
+     * cell with (@p below, @p above) or without a neighbour on each side.
+     * The domain [a, b] = [s - lambda, s + lambda] lies in the cell, or
+     * reaches into one neighbour: then it weights that neighbour's node
+     * too. A domain inside its cell, or clipped at the grid's edge to the
+     * part inside it, averages the cell's two hats: linear weights at its
+     * centre; its window's third node is padding, visited only @p along_x.
      */
     static DEAL_II_ALWAYS_INLINE void
     window_1d(const double s,
@@ -77,52 +76,71 @@ namespace dealmpm
               const bool   along_x,
               NodeWindow  &w)
     {
-      const bool   upper = s >= 0.5; // the nearest node is the cell's upper
-      const double r     = upper ? s - 1. : s;
-      double       lo = r - lambda, hi = r + lambda;
-      if (!upper && !below)
-        lo = std::max(lo, 0.);
-      if (upper && !above)
-        hi = std::min(hi, 0.);
-      const double p         = std::min(std::max(lo, 0.), hi);
-      const double to_length = 1. / (hi - lo);
-      const double to_slope  = to_length * inverse_h;
-      const double v0        = 0.5 * (lo * lo - p * p) * to_length,
-                   v2        = 0.5 * (hi * hi - p * p) * to_length;
-      const double g0 = (lo - p) * to_slope, g2 = (hi - p) * to_slope;
-      const double v1 = 1. - v0 - v2, g1 = -(g0 + g2);
       // A domain that reaches a trillionth of a cell past its cell's face
-      // (a particle a quarter cell from it, by round-off) has a weight of
-      // 1e-24 there: left out, so that the particle keeps two nodes.
+      // (a particle a quarter cell from it, by round-off) would weight the
+      // node beyond by 1e-24: left out, so that the particle keeps two
+      // nodes.
       constexpr double past = 1e-12;
-      if (upper ? hi > past : lo < -past)
+      const double     a = s - lambda, b = s + lambda;
+      double           centre = s;
+      if (a < -past && below)
         {
-          w.first  = upper ? 1 : 0;
-          w.padded = 3;
-          w.rows   = 3;
-          set(w, v0, v1, v2, g0, g1, g2);
+          // Nodes below, at and above the cell's lower node (hats -y, 1 - |y|
+          // and y about it) share the domain [a, b] of length 2 lambda.
+          const double to_value = 0.25 / lambda,
+                       to_slope = 2. * to_value * inverse_h;
+          three_nodes(w, 0, a, b, to_value, to_slope);
           return;
         }
-      const double lower_value = upper ? v0 : v1, upper_value = upper ? v1 : v2;
-      const double lower_slope = upper ? g0 : g1, upper_slope = upper ? g1 : g2;
+      if (b > 1. + past && above)
+        {
+          const double to_value = 0.25 / lambda,
+                       to_slope = 2. * to_value * inverse_h;
+          three_nodes(w, 1, a - 1., b - 1., to_value, to_slope);
+          return;
+        }
+      if (a < 0. && !below)
+        centre = 0.5 * b; // [0, b]: clipped at the grid's lower edge
+      else if (b > 1. && !above)
+        centre = 0.5 * (a + 1.);
+      const double value[2] = {1. - centre, centre};
       if (along_x && !above)
         {
-          // Padded below: the node above the cell's does not exist.
+          // Padded below: the node above the cell's upper one does not
+          // exist.
           w.first  = 0;
           w.padded = 0;
-          w.rows   = 3;
-          set(w, 0., lower_value, upper_value, 0., lower_slope, upper_slope);
+          set(w, 0., value[0], value[1], 0., -inverse_h, inverse_h);
         }
       else
         {
           w.first  = 1;
           w.padded = 2;
-          w.rows   = 2;
-          set(w, lower_value, upper_value, 0., lower_slope, upper_slope, 0.);
+          set(w, value[0], value[1], 0., -inverse_h, inverse_h, 0.);
         }
+      w.rows = 2;
     }
 
   private:
+    /** The window of nodes first .. first + 2 of a domain [lo, hi] about
+     * the middle one, which splits at it into a part under the lower
+     * node's hat (-y) and one under the upper's (y). */
+    static DEAL_II_ALWAYS_INLINE void
+    three_nodes(NodeWindow        &w,
+                const unsigned int first,
+                const double       lo,
+                const double       hi,
+                const double       to_value,
+                const double       to_slope)
+    {
+      const double v0 = lo * lo * to_value, v2 = hi * hi * to_value;
+      const double g0 = lo * to_slope, g2 = hi * to_slope;
+      w.first  = first;
+      w.padded = 3;
+      w.rows   = 3;
+      set(w, v0, 1. - v0 - v2, v2, g0, -(g0 + g2), g2);
+    }
+
     static DEAL_II_ALWAYS_INLINE void
     set(NodeWindow  &w,
         const double v0,

@@ -254,23 +254,25 @@ namespace dealmpm
   /**
    * Weights computed where they are used, as LinearWeights are
    * (Stencil::where_used), on fixed windows of three nodes a direction
-   * (NodeWindow): the quadratic B-spline's (@p spline) or uGIMP's (@p
-   * gimp). A node costs a few products instead of reading back the 36 (2D:
-   * 28) bytes of a stored entry, and the stencil's 972 (2D: 252) bytes a
-   * particle are not kept.
+   * (NodeWindow): the quadratic B-spline's (@p spline, if not nullptr) or
+   * uGIMP's (@p gimp). A node costs a few products instead of reading back the
+   * 36 (2D: 28) bytes of a stored entry, and the stencil's 972 (2D: 252) bytes
+   * a particle are not kept.
    */
   template <int dim>
   struct WindowWeights
   {
     const BackgroundGrid<dim>       &grid;
     const QuadraticBSplineGrid<dim> *spline = nullptr;
-    const GimpWindows<dim>          *gimp   = nullptr;
+    GimpWindows<dim>                 gimp;
 
     /** The windows @p stencil stands for (Stencil::on_windows()). */
     static WindowWeights
     of(const BackgroundGrid<dim> &grid, const Stencil<dim> &stencil)
     {
-      return WindowWeights{grid, stencil.spline, stencil.gimp};
+      return WindowWeights{grid,
+                           stencil.spline,
+                           {stencil.gimp_lattice, stencil.gimp_half_length}};
     }
 
     /** f(row, w0, v12, s12, s2) for each row of particle @p p's nodes
@@ -296,7 +298,7 @@ namespace dealmpm
         }
       else
         {
-          block = gimp->windows_at(i, p, c, w);
+          block = gimp.windows_at(i, p, c, w);
         }
       // Rows one after the other: unrolled, the 3D G2P's loads of all
       // 27 nodes were hoisted ahead and spilled to the stack.

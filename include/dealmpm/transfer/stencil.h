@@ -14,8 +14,6 @@ namespace dealmpm
   class LatticeBlocks;
   template <int dim>
   struct QuadraticBSplineGrid;
-  template <int dim>
-  struct GimpWindows;
 
   /**
    * The particle -> node weights of one step: for each local particle (in
@@ -42,20 +40,23 @@ namespace dealmpm
     bool reference = false;
     /** The weights are computed where they are used: linear ones
      * (LinearWeights), or on three-node windows (WindowWeights) the
-     * quadratic B-spline's of @p spline or uGIMP's of @p gimp; begin, node,
+     * quadratic B-spline's of @p spline or uGIMP's on @p gimp_lattice
+     * (GimpWindows); begin, node,
      * N and grad_N stay empty. Set when the step's P2G and G2P sweeps are
      * the weights' only readers (Simulation::weights_where_used()). */
     bool where_used = false;
     /** With where_used: the B-spline's lattice, or nullptr. */
     const QuadraticBSplineGrid<dim> *spline = nullptr;
-    /** With where_used: uGIMP's windows, or nullptr. */
-    const GimpWindows<dim> *gimp = nullptr;
+    /** With where_used: uGIMP's lattice (Kernel::gimp_lattice()), or
+     * nullptr, and where the particles keep their domain_half_length. */
+    const LatticeBlocks<dim> *gimp_lattice     = nullptr;
+    unsigned int              gimp_half_length = numbers::invalid_unsigned_int;
 
     /** Whether the sweeps compute the weights on three-node windows. */
     bool
     on_windows() const
     {
-      return where_used && (spline != nullptr || gimp != nullptr);
+      return where_used && (spline != nullptr || gimp_lattice != nullptr);
     }
 
     /** The first particle whose weights could not be computed (a CPDI
