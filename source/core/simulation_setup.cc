@@ -173,10 +173,14 @@ namespace dealmpm
     // stencil, most effects. APIC needs none (affine_transfer.h).
     const MethodSettings &method = run_settings.method;
     // uGIMP's windows need every domain within half a cell, which splitting
-    // and merging particles as the grid adapts would have to keep.
+    // and merging particles as the grid adapts would have to keep. APIC
+    // with weights computed where used takes the weights' centroid for the
+    // particle's position in P2G: that of a uGIMP domain clipped at the
+    // grid's edge is the clipped part's centre, not the particle's.
     const bool computable =
       kernel.name() == "linear" || kernel.spline_grid() != nullptr ||
-      (kernel.gimp_lattice() != nullptr && !adaptivity.enabled());
+      (kernel.gimp_lattice() != nullptr && !adaptivity.enabled() &&
+       !method.apic);
     if (!computable || method.particle_update.newmark ||
         method.total_lagrangian() || mixed_cells || !regions.empty() ||
         std::any_of(effects.begin(), effects.end(), [](const auto &effect) {
