@@ -516,4 +516,3 @@ TEST(ParticleWeights, LinearWeightsAreQ1Functions)
                      "1\n  set Lower corner = 0, 0, 0\n  set Upper corner "
                      "= 0.5, 0.7, 0.5\n end\nend\n");
 }
-
