@@ -177,18 +177,17 @@ namespace dealmpm
     // with weights computed where used takes the weights' centroid for the
     // particle's position in P2G: that of a uGIMP domain clipped at the
     // grid's edge is the clipped part's centre, not the particle's.
+    const bool gimp_windows =
+      kernel.gimp_lattice() != nullptr && !adaptivity.enabled() && !method.apic;
     const bool computable = kernel.name() == "linear" ||
-                            kernel.spline_grid() != nullptr ||
-                            (kernel.gimp_lattice() != nullptr &&
-                             !adaptivity.enabled() && !method.apic);
+                            kernel.spline_grid() != nullptr || gimp_windows;
     if (!computable || method.particle_update.newmark ||
         method.total_lagrangian() || mixed_cells || !regions.empty() ||
         std::any_of(effects.begin(), effects.end(), [](const auto &effect) {
           return effect->reads_stencil();
         }))
       return false;
-    return kernel.name() == "linear" || kernel.spline_grid() != nullptr ||
-           domains_fit_windows(grid, *particles);
+    return !gimp_windows || domains_fit_windows(grid, *particles);
   }
 
   template <int dim>
