@@ -227,24 +227,26 @@ namespace dealmpm
     // rate (the next step's size), the smallest J, whether a particle
     // failed, whether one left its cell, whether a stencil failed, whether
     // an FEM region's coupling failed or asks to publish its boxes, the
-    // largest relocation plan, whether particles were held at walls.
+    // largest relocation plan, whether particles were held at walls,
+    // whether cpGIMP's stretched domains still fit its windows.
     const std::string coupling_failure = regions.coupling_failure();
     const double      rate =
       std::max({check.max_signal_rate,
                 regions.local_signal_rate(),
                 effects_signal_rate(effects, *particles, grid)});
-    double reduced[9] = {-rate,
-                         check.min_J,
-                         check.failed ? -1. : 0.,
-                         left_cell ? -1. : 0.,
-                         stencil.failed ? -1. : 0.,
-                         coupling_failure.empty() ? 0. : -1.,
-                         regions.coupling_wants_publication() ? -1. : 0.,
-                         -double(relocation.local),
-                         relocation.held > 0 ? -1. : 0.};
-    Utilities::MPI::min(ArrayView<const double>(reduced, 9),
+    double reduced[10] = {-rate,
+                          check.min_J,
+                          check.failed ? -1. : 0.,
+                          left_cell ? -1. : 0.,
+                          stencil.failed ? -1. : 0.,
+                          coupling_failure.empty() ? 0. : -1.,
+                          regions.coupling_wants_publication() ? -1. : 0.,
+                          -double(relocation.local),
+                          relocation.held > 0 ? -1. : 0.,
+                          check.domains_fit ? 0. : -1.};
+    Utilities::MPI::min(ArrayView<const double>(reduced, 10),
                         comm,
-                        ArrayView<double>(reduced, 9));
+                        ArrayView<double>(reduced, 10));
     max_signal_rate = -reduced[0];
     loop.accuracy.observe_step(reduced[1], dt * max_signal_rate);
     if (reduced[5] < 0)
@@ -256,6 +258,11 @@ namespace dealmpm
       }
     if (reduced[6] < 0)
       regions.publish_coupling_at_next_step();
+    // A cpGIMP domain stretched past half a cell reaches a fourth node a
+    // direction: the next step stores its weights; back on the windows
+    // once all fit again.
+    if (stencil.gimp_follows_deformation)
+      stencil.where_used = reduced[9] == 0;
     // The stencil first: a particle's failure may follow from it.
     if (reduced[4] < 0)
       stop_on_particle(stencil.failed,

@@ -172,13 +172,17 @@ namespace dealmpm
     // mixed-cell split, FEM regions' contact, total Lagrangian's reference
     // stencil, most effects. APIC needs none (affine_transfer.h).
     const MethodSettings &method = run_settings.method;
-    // uGIMP's windows need every domain within half a cell, which splitting
+    // GIMP's windows need every domain within half a cell, which splitting
     // and merging particles as the grid adapts would have to keep. APIC
     // with weights computed where used takes the weights' centroid for the
-    // particle's position in P2G: that of a uGIMP domain clipped at the
-    // grid's edge is the clipped part's centre, not the particle's.
+    // particle's position in P2G: that of a GIMP domain clipped at the
+    // grid's edge is the clipped part's centre, not the particle's. USF's
+    // force P2G follows its stress update, which stretches cpGIMP's
+    // domains: the stored weights are the step's start's.
     const bool gimp_windows =
-      kernel.gimp_lattice() != nullptr && !adaptivity.enabled() && !method.apic;
+      kernel.gimp_lattice() != nullptr && !adaptivity.enabled() &&
+      !method.apic &&
+      !(gimp_follows_deformation() && method.scheme == UpdateScheme::USF);
     const bool computable = kernel.name() == "linear" ||
                             kernel.spline_grid() != nullptr || gimp_windows;
     if (!computable || method.particle_update.newmark ||
@@ -187,7 +191,15 @@ namespace dealmpm
           return effect->reads_stencil();
         }))
       return false;
-    return !gimp_windows || domains_fit_windows(grid, *particles);
+    return !gimp_windows ||
+           domains_fit_windows(grid, *particles, gimp_follows_deformation());
+  }
+
+  template <int dim>
+  bool
+  Simulation<dim>::gimp_follows_deformation() const
+  {
+    return kernel.name() == "cpGIMP";
   }
 
   template <int dim>
@@ -198,6 +210,13 @@ namespace dealmpm
     stencil.spline       = stencil.where_used ? kernel.spline_grid() : nullptr;
     stencil.gimp_lattice = stencil.where_used ? kernel.gimp_lattice() : nullptr;
     stencil.gimp_half_length = particles->fields.domain_half_length;
+    // cpGIMP's domains stretch: each step checks whether the next may keep
+    // the windows (finish_step()). A scene that starts with a domain past
+    // half a cell stores its weights for the run.
+    stencil.gimp_follows_deformation =
+      stencil.gimp_lattice != nullptr && gimp_follows_deformation();
+    if (stencil.gimp_follows_deformation)
+      stencil.gimp_stretch_limit = gimp_stretch_limit(grid);
   }
 
   template <int dim>
@@ -438,6 +457,7 @@ namespace dealmpm
   template void Simulation<dim>::choose_stages();                            \
   template bool Simulation<dim>::weights_where_used() const;                 \
   template void Simulation<dim>::choose_weights();                           \
+  template bool Simulation<dim>::gimp_follows_deformation() const;           \
   template void Simulation<dim>::read_scene(SceneReader &,                   \
                                             const SceneShape &);             \
   template unsigned int Simulation<dim>::expected_particles(                 \

@@ -4,6 +4,7 @@
 #include <dealmpm/transfer/stencil_order.h>
 
 #include <algorithm>
+#include <limits>
 
 #include "lattice_products.h"
 #include "node_accumulator.h"
@@ -203,38 +204,63 @@ namespace dealmpm
     AssertThrow(n_visited == n_local, ExcInternalError());
   }
 
+  namespace
+  {
+    // Half a cell, as the bodies make it for one particle a cell, may come
+    // out a few ulps above: the window then misses a few ulps of weight.
+    constexpr double most_in_cells = 0.5 * (1. + 1e-12);
+  } // namespace
+
   template <int dim>
   bool
   domains_fit_windows(const BackgroundGrid<dim> &grid,
-                      const ParticleSet<dim>    &particles)
+                      const ParticleSet<dim>    &particles,
+                      const bool                 follows_deformation)
   {
-    const unsigned int half_length = particles.fields.domain_half_length;
-    AssertThrow(half_length != numbers::invalid_unsigned_int,
+    const GimpWindows<dim> windows{nullptr,
+                                   particles.fields.domain_half_length,
+                                   follows_deformation};
+    AssertThrow(windows.half_length != numbers::invalid_unsigned_int,
                 ExcInternalError());
-    // Half a cell, as the bodies make it for one particle a cell, may come
-    // out a few ulps above: the window then misses a few ulps of weight.
-    constexpr double most = 0.5 * (1. + 1e-12);
-    bool             fit  = true;
+    bool fit = true;
     for_each_particle_in_stencil_order(
       grid,
       particles,
       [&](const std::size_t, const auto &p, const GridCell<dim> &own) {
         const auto props = p.get_properties();
         for (unsigned int d = 0; d < dim; ++d)
-          fit =
-            fit && props[half_length + d] * own.inverse_jacobian[d][d] <= most;
+          fit = fit &&
+                windows.half_length_of(props, d) * own.inverse_jacobian[d][d] <=
+                  most_in_cells;
       });
     return Utilities::MPI::min(fit ? 1 : 0, grid.comm) == 1;
   }
 
-#define DEALMPM_INSTANTIATE(dim)                                  \
-  template void compute_gimp_stencil(const BackgroundGrid<dim> &, \
-                                     const ParticleSet<dim> &,    \
-                                     bool,                        \
-                                     Stencil<dim> &,              \
-                                     const LatticeBlocks<dim> *); \
-  template bool domains_fit_windows(const BackgroundGrid<dim> &,  \
-                                    const ParticleSet<dim> &);
+  template <int dim>
+  Tensor<1, dim>
+  gimp_stretch_limit(const BackgroundGrid<dim> &grid)
+  {
+    Tensor<1, dim> limit;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        double shortest = std::numeric_limits<double>::max();
+        for (const GridCell<dim> &c : grid.cells)
+          shortest = std::min(shortest, 1. / c.inverse_jacobian[d][d]);
+        limit[d] = most_in_cells * Utilities::MPI::min(shortest, grid.comm);
+      }
+    return limit;
+  }
+
+#define DEALMPM_INSTANTIATE(dim)                                            \
+  template void           compute_gimp_stencil(const BackgroundGrid<dim> &, \
+                                               const ParticleSet<dim> &,    \
+                                               bool,                        \
+                                               Stencil<dim> &,              \
+                                               const LatticeBlocks<dim> *); \
+  template bool           domains_fit_windows(const BackgroundGrid<dim> &,  \
+                                              const ParticleSet<dim> &,     \
+                                              bool);                        \
+  template Tensor<1, dim> gimp_stretch_limit(const BackgroundGrid<dim> &);
   DEALMPM_INSTANTIATE(2)
   DEALMPM_INSTANTIATE(3)
 #undef DEALMPM_INSTANTIATE

@@ -69,14 +69,13 @@ namespace dealmpm
         grid.find_neighbors();
         lattice.setup(grid);
         windows_fit =
-          !follow_deformation &&
           Utilities::MPI::min(lattice.windows_fit() ? 1 : 0, grid.comm) == 1;
         return "";
       }
 
-      /** Its lattice where the sweeps can compute uGIMP's weights on
-       * three-node windows (GimpWindows), else nullptr. cpGIMP's domains
-       * stretch past them. */
+      /** Its lattice where the sweeps can compute GIMP's weights on
+       * three-node windows (GimpWindows), else nullptr. Whether the
+       * domains fit them (cpGIMP's stretch) is domains_fit_windows(). */
       const LatticeBlocks<dim> *
       window_lattice() const
       {

@@ -109,6 +109,13 @@ end
   const std::string ugimp_scene_one_a_cell =
     ugimp_scene + "subsection Body 1\n set Particles per cell = 1\nend\n";
 
+  /** The same with cpGIMP. */
+  const std::string cpgimp =
+    "subsection MPM\n set Shape function = cpGIMP\nend\n";
+  const std::string cpgimp_scene            = ugimp_scene + cpgimp;
+  const std::string cpgimp_scene_3d         = ugimp_scene_3d + cpgimp;
+  const std::string cpgimp_scene_one_a_cell = ugimp_scene_one_a_cell + cpgimp;
+
   /** Appended to a scene: the particles carry APIC's B. */
   const std::string apic = "subsection MPM\n set Velocity update = APIC\nend\n";
 
@@ -161,7 +168,10 @@ end
     Stencil<dim>                                        stored, where_used;
     std::vector<double>                                 before;
 
-    RandomState(const std::string &scene, const unsigned int seed)
+    /** GIMP's domain half-lengths times @p half_length_scale. */
+    RandomState(const std::string &scene,
+                const unsigned int seed,
+                const double       half_length_scale = 1.)
       : simulation(test::make_simulation<dim>(scene))
       , particles(simulation->particle_set())
       , grid(simulation->background_grid())
@@ -170,17 +180,25 @@ end
       test::scatter_particles_in_cells(*simulation, rng);
       fields.reinit(grid.partitioner);
       test::randomize_state(particles, grid, fields, rng);
+      const unsigned int half_length = particles.fields.domain_half_length;
+      if (half_length != numbers::invalid_unsigned_int)
+        for (auto &p : particles.handler)
+          for (unsigned int d = 0; d < dim; ++d)
+            p.get_properties()[half_length + d] *= half_length_scale;
       const Kernel<dim> &kernel = simulation->get_kernel();
       kernel.compute_stencil(grid, particles, stored);
       if (particles.fields.affine_velocity != numbers::invalid_unsigned_int)
         record_positions(grid, particles, stored);
-      where_used.where_used       = true;
-      where_used.spline           = kernel.spline_grid();
-      where_used.gimp_lattice     = kernel.gimp_lattice();
-      where_used.gimp_half_length = particles.fields.domain_half_length;
+      where_used.where_used               = true;
+      where_used.spline                   = kernel.spline_grid();
+      where_used.gimp_lattice             = kernel.gimp_lattice();
+      where_used.gimp_half_length         = half_length;
+      where_used.gimp_follows_deformation = kernel.name() == "cpGIMP";
       if (where_used.gimp_lattice != nullptr)
         {
-          EXPECT_TRUE(domains_fit_windows(grid, particles));
+          EXPECT_TRUE(domains_fit_windows(grid,
+                                          particles,
+                                          where_used.gimp_follows_deformation));
         }
       before = test::particle_state(particles);
     }
@@ -196,9 +214,10 @@ end
 
   template <int dim>
   void
-  check_weights_where_used(const std::string &scene)
+  check_weights_where_used(const std::string &scene,
+                           const double       half_length_scale = 1.)
   {
-    RandomState<dim>           state(scene, 7);
+    RandomState<dim>           state(scene, 7, half_length_scale);
     ParticleSet<dim>          &particles  = state.particles;
     const BackgroundGrid<dim> &grid       = state.grid;
     NodalFields<dim>          &fields     = state.fields;
@@ -317,9 +336,10 @@ namespace
    * mass kept, the same momentum and the mass untouched. */
   template <int dim>
   void
-  check_remap_in_sweep(const std::string &scene)
+  check_remap_in_sweep(const std::string &scene,
+                       const double       half_length_scale = 1.)
   {
-    RandomState<dim>           state(scene, 11);
+    RandomState<dim>           state(scene, 11, half_length_scale);
     ParticleSet<dim>          &particles = state.particles;
     const BackgroundGrid<dim> &grid      = state.grid;
     const NodalFields<dim>    &fields    = state.fields;
@@ -419,12 +439,26 @@ TEST(ParticleWeights, UGimpWhereUsedEqualsStored)
   check_remap_in_sweep<3>(ugimp_scene_3d);
 }
 
-// uGIMP's windows are used only where they give the stored weights: not
-// for cpGIMP (its domains stretch), nor on grids with one cell across
-// (no node to pad with), local refinement (no lattice) or cells missing
-// from a patch that are not whole rows (the inner corner of an L: the
-// covered part of a domain is no box), nor with a domain wider than half
-// its cell.
+// cpGIMP's domains stretched by F's diagonal (0.9 to 1.1 here), so that
+// they reach into a neighbour or stay in their cell where uGIMP's would
+// not: the windows give the stored weights, also with domains of half a
+// cell after the stretch (one particle a cell, half-lengths scaled by
+// 1 / 1.1), and G2P's new F does not change the weights of the sweep that
+// updates it.
+TEST(ParticleWeights, CpGimpWhereUsedEqualsStored)
+{
+  check_weights_where_used<2>(cpgimp_scene);
+  check_weights_where_used<2>(cpgimp_scene_one_a_cell, 1. / 1.1);
+  check_weights_where_used<3>(cpgimp_scene_3d);
+  check_remap_in_sweep<2>(cpgimp_scene_one_a_cell, 1. / 1.1);
+  check_remap_in_sweep<3>(cpgimp_scene_3d);
+}
+
+// GIMP's windows are used only where they give the stored weights: not
+// on grids with one cell across (no node to pad with), local refinement
+// (no lattice) or cells missing from a patch that are not whole rows (the
+// inner corner of an L: the covered part of a domain is no box), nor with
+// a domain wider than half its cell (for cpGIMP, once stretched by F).
 TEST(ParticleWeights, UGimpWindowsOnlyWhereTheyFit)
 {
   const auto fit = [](const std::string &scene) {
@@ -434,8 +468,7 @@ TEST(ParticleWeights, UGimpWindowsOnlyWhereTheyFit)
   const std::string ugimp =
     "subsection MPM\n set Shape function = uGIMP\nend\n";
   EXPECT_TRUE(fit(ugimp_scene));
-  EXPECT_FALSE(
-    fit(bspline_scene + "subsection MPM\n set Shape function = cpGIMP\nend\n"));
+  EXPECT_TRUE(fit(cpgimp_scene));
   EXPECT_FALSE(fit(ugimp_scene + "subsection Grid\n set Cells = 7, 1\nend\n"));
   EXPECT_FALSE(fit(refined_scene + ugimp));
   EXPECT_FALSE(fit(
@@ -458,6 +491,31 @@ TEST(ParticleWeights, UGimpWindowsOnlyWhereTheyFit)
         p.get_properties()[half_length + 1] = 0.51 / c.inverse_jacobian[1][1];
     });
   EXPECT_FALSE(domains_fit_windows(grid, particles));
+
+  // cpGIMP: a domain of 0.3 cells fits, stretched by 1.7 it does not; the
+  // grid-wide limit (Stencil::gimp_stretch_limit) is half the shortest
+  // edge along each direction (2/7 by 1/5 here).
+  auto                     cp        = test::make_simulation<2>(cpgimp_scene);
+  ParticleSet<2>          &stretched = cp->particle_set();
+  const BackgroundGrid<2> &cp_grid   = cp->background_grid();
+  EXPECT_TRUE(domains_fit_windows(cp_grid, stretched, true));
+  for_each_particle_in_stencil_order(
+    cp_grid,
+    stretched,
+    [&](const std::size_t k, const auto &p, const GridCell<2> &c) {
+      const auto props = p.get_properties();
+      if (k == 5)
+        {
+          props[stretched.fields.domain_half_length + 1] =
+            0.3 / c.inverse_jacobian[1][1];
+          props[stretched.fields.deformation_gradient + 3] = 1.7;
+        }
+    });
+  EXPECT_TRUE(domains_fit_windows(cp_grid, stretched, false));
+  EXPECT_FALSE(domains_fit_windows(cp_grid, stretched, true));
+  const Tensor<1, 2> limit = gimp_stretch_limit(cp_grid);
+  EXPECT_NEAR(limit[0], 1. / 7, 1e-12);
+  EXPECT_NEAR(limit[1], 0.1, 1e-12);
 }
 
 namespace

@@ -252,14 +252,19 @@ namespace dealmpm
      * step. */
     void
     choose_stages();
-    /** Whether linear, quadratic B-spline or uGIMP weights may be computed
+    /** Whether linear, quadratic B-spline or GIMP weights may be computed
      * where P2G and G2P use them instead of stored (Stencil::where_used):
-     * nothing else reads them, and the B-spline's and uGIMP's fit their
+     * nothing else reads them, and the B-spline's and GIMP's fit their
      * windows on this grid. Collective. */
     bool
     weights_where_used() const;
+    /** Whether the shape function is cpGIMP, whose domains stretch with F
+     * (Stencil::gimp_follows_deformation). */
+    bool
+    gimp_follows_deformation() const;
     /** Set the stencil's kind (weights_where_used()): at the start and
-     * after each grid change, which may make uGIMP's windows fit or not. */
+     * after each grid change, which may make GIMP's windows fit or not
+     * (cpGIMP's are checked again every step: finish_step()). */
     void
     choose_weights();
     /** The step's one reduction and what it decides: the next step's

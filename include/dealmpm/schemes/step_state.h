@@ -64,7 +64,11 @@ namespace dealmpm
       , dt(dt)
       , timer(timer)
       , stress_update(materials, particles, dt, method.total_lagrangian())
-    {}
+    {
+      if (stencil.gimp_follows_deformation)
+        stress_update.watch_domains(stencil.gimp_half_length,
+                                    stencil.gimp_stretch_limit);
+    }
 
     const BackgroundGrid<dim>     &grid;
     ParticleSet<dim>              &particles;

@@ -9,19 +9,37 @@
 
 namespace dealmpm
 {
+  /** A cpGIMP domain's half-length along @p d: the particle's
+   * domain_half_length (at @p half_length in @p props) stretched by F_dd,
+   * to 1e-3 of it at least, as compute_gimp_stencil() stretches it. */
+  template <int dim, typename Properties>
+  DEAL_II_ALWAYS_INLINE inline double
+  stretched_half_length(const Properties  &props,
+                        const unsigned int half_length,
+                        const unsigned int d)
+  {
+    return props[half_length + d] *
+           std::max(props[FixedCore<dim>::deformation_gradient + d * dim + d],
+                    1e-3);
+  }
+
   /**
-   * uGIMP's weights on fixed windows of three nodes a direction (NodeWindow,
+   * GIMP's weights on fixed windows of three nodes a direction (NodeWindow,
    * read by WindowWeights as the quadratic B-spline's are), computed where
    * the sweeps use them instead of stored (Stencil::where_used). They are
    * the stored stencil's numbers (compute_gimp_stencil()) to round-off:
    * the integrals of the hats over the particle domain, over the covered
-   * length where the domain reaches past the grid.
+   * length where the domain reaches past the grid. uGIMP's domain keeps
+   * its half-lengths; cpGIMP's (@p follows_deformation) are stretched by
+   * F's diagonal as the stored stencil stretches them.
    *
    * Needs a lattice block in every owned cell whose missing cells are whole
    * rows (LatticeBlocks::windows_fit(): the covered part of a domain is
    * then a box, and its weights products of 1D ones) and every domain's
    * half-length at most half its cell's edge (domains_fit_windows(): a
-   * domain then touches three nodes a direction at most).
+   * domain then touches three nodes a direction at most; cpGIMP's
+   * stretching domains are checked again every step, Stencil::
+   * gimp_follows_deformation).
    */
   template <int dim>
   struct GimpWindows
@@ -29,6 +47,8 @@ namespace dealmpm
     const LatticeBlocks<dim> *lattice = nullptr;
     /** The particles' domain_half_length (CoreFields). */
     unsigned int half_length = numbers::invalid_unsigned_int;
+    /** cpGIMP: the half-lengths stretch with F's diagonal. */
+    bool follows_deformation = false;
 
     /** The 1D windows @p w of particle @p p in owned cell @p c (index @p i
      * in grid.cells), from its reference location (MUSL's re-map and stress
@@ -48,7 +68,7 @@ namespace dealmpm
       unsigned int           step    = 1;                 // 3^d
       for (unsigned int d = 0; d < dim; ++d, step *= 3)
         window_1d(xi[d],
-                  props[half_length + d] * c.inverse_jacobian[d][d],
+                  half_length_of(props, d) * c.inverse_jacobian[d][d],
                   (present >> (level - step)) & 1u,
                   (present >> (level + step)) & 1u,
                   c.inverse_jacobian[d][d],
@@ -121,6 +141,17 @@ namespace dealmpm
       w.rows = 2;
     }
 
+    /** Particle @p props' domain half-length along @p d (cpGIMP's
+     * stretched: stretched_half_length()). */
+    template <typename Properties>
+    DEAL_II_ALWAYS_INLINE double
+    half_length_of(const Properties &props, const unsigned int d) const
+    {
+      return follows_deformation ?
+               stretched_half_length<dim>(props, half_length, d) :
+               props[half_length + d];
+    }
+
   private:
     /** The window of nodes first .. first + 2 of a domain [lo, hi] about
      * the middle one, which splits at it into a part under the lower
@@ -159,11 +190,20 @@ namespace dealmpm
     }
   };
 
-  /** Whether every locally owned particle's domain half-length is at most
-   * half its cell's edge in every direction, on all ranks (GimpWindows).
+  /** Whether every locally owned particle's domain half-length (stretched
+   * by F's diagonal if @p follows_deformation: cpGIMP) is at most half its
+   * cell's edge in every direction, on all ranks (GimpWindows).
    * Collective. */
   template <int dim>
   bool
   domains_fit_windows(const BackgroundGrid<dim> &grid,
-                      const ParticleSet<dim>    &particles);
+                      const ParticleSet<dim>    &particles,
+                      const bool                 follows_deformation = false);
+
+  /** The largest domain half-length along each direction that fits the
+   * windows in every cell of the grid: half its shortest edge along that
+   * direction, over all ranks (Stencil::gimp_stretch_limit). Collective. */
+  template <int dim>
+  Tensor<1, dim>
+  gimp_stretch_limit(const BackgroundGrid<dim> &grid);
 } // namespace dealmpm

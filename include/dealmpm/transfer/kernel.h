@@ -134,10 +134,10 @@ namespace dealmpm
     const QuadraticBSplineGrid<dim> *
     spline_grid() const;
 
-    /** uGIMP's lattice if that is the shape function and the sweeps can
-     * compute its weights where they use them on this grid (GimpWindows:
-     * LatticeBlocks::windows_fit() on every rank), else nullptr. Whether
-     * the particles' domains fit too is domains_fit_windows(). */
+    /** GIMP's lattice if that is the shape function (uGIMP or cpGIMP) and the
+     * sweeps can compute its weights where they use them on this grid
+     * (GimpWindows: LatticeBlocks::windows_fit() on every rank), else nullptr.
+     * Whether the particles' domains fit too is domains_fit_windows(). */
     const LatticeBlocks<dim> *
     gimp_lattice() const;
 

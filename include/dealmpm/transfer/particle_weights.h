@@ -255,7 +255,7 @@ namespace dealmpm
    * Weights computed where they are used, as LinearWeights are
    * (Stencil::where_used), on fixed windows of three nodes a direction
    * (NodeWindow): the quadratic B-spline's (@p spline, if not nullptr) or
-   * uGIMP's (@p gimp). A node costs a few products instead of reading back the
+   * GIMP's (@p gimp). A node costs a few products instead of reading back the
    * 36 (2D: 28) bytes of a stored entry, and the stencil's 972 (2D: 252) bytes
    * a particle are not kept.
    */
@@ -272,7 +272,9 @@ namespace dealmpm
     {
       return WindowWeights{grid,
                            stencil.spline,
-                           {stencil.gimp_lattice, stencil.gimp_half_length}};
+                           {stencil.gimp_lattice,
+                            stencil.gimp_half_length,
+                            stencil.gimp_follows_deformation}};
     }
 
     /** f(row, w0, v12, s12, s2) for each row of particle @p p's nodes

@@ -40,17 +40,25 @@ namespace dealmpm
     bool reference = false;
     /** The weights are computed where they are used: linear ones
      * (LinearWeights), or on three-node windows (WindowWeights) the
-     * quadratic B-spline's of @p spline or uGIMP's on @p gimp_lattice
+     * quadratic B-spline's of @p spline or GIMP's on @p gimp_lattice
      * (GimpWindows); begin, node,
      * N and grad_N stay empty. Set when the step's P2G and G2P sweeps are
      * the weights' only readers (Simulation::weights_where_used()). */
     bool where_used = false;
     /** With where_used: the B-spline's lattice, or nullptr. */
     const QuadraticBSplineGrid<dim> *spline = nullptr;
-    /** With where_used: uGIMP's lattice (Kernel::gimp_lattice()), or
+    /** With where_used: GIMP's lattice (Kernel::gimp_lattice()), or
      * nullptr, and where the particles keep their domain_half_length. */
     const LatticeBlocks<dim> *gimp_lattice     = nullptr;
     unsigned int              gimp_half_length = numbers::invalid_unsigned_int;
+    /** cpGIMP on windows: the domains stretch with F's diagonal, so each
+     * step's stress update checks that every half-length along d stays
+     * within gimp_stretch_limit[d] (half the grid's shortest edge along d;
+     * ParticleCheck::domains_fit), and the next step computes its weights
+     * where used only if all do; else it stores them
+     * (Simulation::finish_step()). */
+    bool           gimp_follows_deformation = false;
+    Tensor<1, dim> gimp_stretch_limit;
 
     /** Whether the sweeps compute the weights on three-node windows. */
     bool

@@ -4,6 +4,7 @@
 #include <dealmpm/grid/background_grid.h>
 #include <dealmpm/materials/material.h>
 #include <dealmpm/particles/particle_set.h>
+#include <dealmpm/transfer/gimp_windows.h>
 
 #include <algorithm>
 #include <cmath>
@@ -35,6 +36,9 @@ namespace dealmpm
     /** The particle with the largest signal rate. */
     types::particle_index fastest = 0;
     Point<dim>            fastest_location;
+    /** cpGIMP on windows: every stretched domain still fits them
+     * (StressUpdate::watch_domains()). */
+    bool domains_fit = true;
 
     /** Fold one particle into the check; false when its state is
      * unusable. @p material is a Material<dim>, or the final model class
@@ -222,6 +226,17 @@ namespace dealmpm
       return true;
     }
 
+    /** Check each updated particle's cpGIMP domain, its half-lengths at
+     * @p half_length stretched by its F's diagonal as the next step's
+     * weights stretch them (GimpWindows), against @p limit
+     * (Stencil::gimp_stretch_limit): ParticleCheck::domains_fit. */
+    void
+    watch_domains(const unsigned int half_length, const Tensor<1, dim> &limit)
+    {
+      watched_half_length = half_length;
+      domain_limit        = limit;
+    }
+
     ParticleCheck<dim> check;
 
   private:
@@ -266,6 +281,21 @@ namespace dealmpm
           write_tensor<dim>(&props[particles.fields.deformation_gradient],
                             F_new);
         }
+      if (watched_half_length != numbers::invalid_unsigned_int)
+        check.domains_fit = check.domains_fit && domain_fits(props);
+    }
+
+    /** Whether the particle's stretched domain fits the windows
+     * (watch_domains()); reads F after a reset or renormalisation. */
+    bool
+    domain_fits(const ArrayView<double> &props) const
+    {
+      bool fits = true;
+      for (unsigned int d = 0; d < dim; ++d)
+        fits =
+          fits && stretched_half_length<dim>(props, watched_half_length, d) <=
+                    domain_limit[d];
+      return fits;
     }
 
     /** Whether a particle whose slot says @p renormalises may need
@@ -324,6 +354,9 @@ namespace dealmpm
     /** The material of every body, when they share one (the usual scene):
      * then no particle looks up its body. */
     unsigned int only_material = numbers::invalid_unsigned_int;
+    /** watch_domains(): the domain_half_length checked, or none. */
+    unsigned int   watched_half_length = numbers::invalid_unsigned_int;
+    Tensor<1, dim> domain_limit;
     const std::vector<std::unique_ptr<Material<dim>>> &materials;
     const ParticleSet<dim>                            &particles;
     double                                             dt;
