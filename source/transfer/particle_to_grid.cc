@@ -228,6 +228,7 @@ namespace dealmpm
               typename Fields>
     DEAL_II_ALWAYS_INLINE inline void
     add_by_rows(const WindowWeights<dim> &weights,
+                const std::size_t         k,
                 const Particle           &p,
                 const GridCell<dim>      &c,
                 const double              m,
@@ -235,7 +236,8 @@ namespace dealmpm
                 const double (&P)[dim][dim],
                 const Fields &to)
     {
-      weights.rows(p,
+      weights.rows(k,
+                   p,
                    c,
                    [&](const unsigned int *row,
                        const NodeWindow   &w0,
@@ -351,7 +353,7 @@ namespace dealmpm
                         !Targets::per_body && !affine)
             {
               add_by_rows<dim, mass_and_momentum, internal_force>(
-                weights, p, c, m, v, force_per_gradient_component, to);
+                weights, k, p, c, m, v, force_per_gradient_component, to);
               return;
             }
           weights(k,

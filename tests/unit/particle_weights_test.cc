@@ -459,7 +459,7 @@ TEST(ParticleWeights, CpGimpWhereUsedEqualsStored)
 // (no lattice) or cells missing from a patch that are not whole rows (the
 // inner corner of an L: the covered part of a domain is no box), nor with
 // a domain wider than half its cell (for cpGIMP, once stretched by F).
-TEST(ParticleWeights, UGimpWindowsOnlyWhereTheyFit)
+TEST(ParticleWeights, GimpWindowsOnlyWhereTheyFit)
 {
   const auto fit = [](const std::string &scene) {
     auto simulation = test::make_simulation<2>(scene);

@@ -66,6 +66,7 @@ namespace dealmpm
       const std::uint32_t    present = lattice->cells_present(i);
       constexpr unsigned int level   = dim == 2 ? 4 : 13; // sides 1, 1 (, 1)
       unsigned int           step    = 1;                 // 3^d
+#pragma GCC unroll 3
       for (unsigned int d = 0; d < dim; ++d, step *= 3)
         window_1d(xi[d],
                   half_length_of(props, d) * c.inverse_jacobian[d][d],

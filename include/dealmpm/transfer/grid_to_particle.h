@@ -129,6 +129,7 @@ namespace dealmpm
               typename Arrays>
     DEAL_II_ALWAYS_INLINE inline void
     gather_by_rows(const WindowWeights<dim> &weights,
+                   const std::size_t         k,
                    const Particle           &p,
                    const GridCell<dim>      &cell,
                    const Arrays             &from,
@@ -136,7 +137,8 @@ namespace dealmpm
                    Tensor<1, dim>           &dv,
                    Tensor<2, dim>           &L)
     {
-      weights.rows(p,
+      weights.rows(k,
+                   p,
                    cell,
                    [&](const unsigned int *row,
                        const NodeWindow   &w0,
@@ -220,7 +222,7 @@ namespace dealmpm
         {
           if constexpr (by_rows<dim, Weights>)
             gather_by_rows<motion, move, deformation>(
-              weights, p, cell, from, v_grid, dv, L);
+              weights, k, p, cell, from, v_grid, dv, L);
         }
       else
         {

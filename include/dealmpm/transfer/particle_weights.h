@@ -8,6 +8,7 @@
 #include <dealmpm/transfer/stencil.h>
 
 #include <cstddef>
+#include <limits>
 #include <type_traits>
 
 namespace dealmpm
@@ -265,6 +266,11 @@ namespace dealmpm
     const BackgroundGrid<dim>       &grid;
     const QuadraticBSplineGrid<dim> *spline = nullptr;
     GimpWindows<dim>                 gimp;
+    /** rows()'s own: the windows of the particle it saw last (a sweep's
+     * index k; none yet) and its cell's lattice block. */
+    mutable std::size_t last_particle = std::numeric_limits<std::size_t>::max();
+    mutable NodeWindow  last_windows[dim]  = {};
+    mutable const unsigned int *last_block = nullptr;
 
     /** The windows @p stencil stands for (Stencil::on_windows()). */
     static WindowWeights
@@ -284,24 +290,33 @@ namespace dealmpm
      * w0.value[k] s2); v12 is the product of the other directions'
      * values, s12 that of y's slope and z's value, s2 (3D) that of y's
      * value and z's slope. A sweep sums a row with w0 first and scales the
-     * sums once (P2G, G2P): its accumulators stay in registers. */
+     * sums once (P2G, G2P): its accumulators stay in registers. The
+     * windows of the last particle @p k are kept: MUSL's G2P sweep reads
+     * them again for its re-map. */
     template <typename Particle, typename Function>
     DEAL_II_ALWAYS_INLINE void
-    rows(const Particle &p, const GridCell<dim> &c, Function &&f) const
+    rows(const std::size_t    k,
+         const Particle      &p,
+         const GridCell<dim> &c,
+         Function           &&f) const
     {
-      const unsigned int  i = index_in_grid(grid, c);
-      NodeWindow          w[dim];
-      const unsigned int *block;
-      if (spline != nullptr)
+      if (k != last_particle)
         {
-          spline->windows_at(i, p.get_reference_location(), w);
-          block =
-            &spline->block_nodes[i * QuadraticBSplineGrid<dim>::block_size];
+          const unsigned int i = index_in_grid(grid, c);
+          if (spline != nullptr)
+            {
+              spline->windows_at(i, p.get_reference_location(), last_windows);
+              last_block =
+                &spline->block_nodes[i * QuadraticBSplineGrid<dim>::block_size];
+            }
+          else
+            {
+              last_block = gimp.windows_at(i, p, c, last_windows);
+            }
+          last_particle = k;
         }
-      else
-        {
-          block = gimp.windows_at(i, p, c, w);
-        }
+      const NodeWindow   *w     = last_windows;
+      const unsigned int *block = last_block;
       // Rows one after the other: unrolled, the 3D G2P's loads of all
       // 27 nodes were hoisted ahead and spilled to the stack.
       const unsigned int n2 = dim == 3 ? w[dim - 1].rows : 1;
@@ -328,12 +343,13 @@ namespace dealmpm
      * fewer rows where NodeWindow::rows says). */
     template <typename Particle, typename Function>
     DEAL_II_ALWAYS_INLINE void
-    operator()(const std::size_t,
+    operator()(const std::size_t    k,
                const Particle      &p,
                const GridCell<dim> &c,
                Function           &&f) const
     {
-      rows(p,
+      rows(k,
+           p,
            c,
            [&](const unsigned int *row,
                const NodeWindow   &w0,

@@ -172,8 +172,9 @@ namespace dealmpm
              laid_out ? particles.n_internal[m] : 0,
              materials[m]->resets_deformation(),
              !keeps_reference && materials[m]->renormalises_deformation()});
-          any_resets      = any_resets || slots.back().resets;
-          any_renormalise = any_renormalise || slots.back().renormalises;
+          any_resets        = any_resets || slots.back().resets;
+          resets_or_watches = any_resets;
+          any_renormalise   = any_renormalise || slots.back().renormalises;
         }
       const auto &of_body = particles.material_of_body;
       if (!of_body.empty() &&
@@ -235,6 +236,7 @@ namespace dealmpm
     {
       watched_half_length = half_length;
       domain_limit        = limit;
+      resets_or_watches   = true;
     }
 
     ParticleCheck<dim> check;
@@ -271,18 +273,41 @@ namespace dealmpm
                          internal,
                          h))
         check.describe_state(p.get_id(), m, material, F, internal);
-      if (any_resets && slot.resets)
-        reset_deformation(props, F);
-      else if (may_renormalise(material, slot.renormalises) &&
-               ill_conditioned(F))
+      // The rare tails behind one test, which the lean path (a final
+      // Model that never renormalises: LinearElastic) pays alone: a reset
+      // (fluids) and cpGIMP's domain check.
+      if (resets_or_watches)
+        {
+          if (any_resets && slot.resets)
+            reset_deformation(props, F);
+          else
+            renormalise_if_ill_conditioned(
+              material, slot.renormalises, internal, props, F);
+          if (watched_half_length != numbers::invalid_unsigned_int)
+            check.domains_fit = check.domains_fit && domain_fits(props);
+        }
+      else
+        renormalise_if_ill_conditioned(
+          material, slot.renormalises, internal, props, F);
+    }
+
+    /** renormalise_deformation() where F has lost its digits
+     * (ill_conditioned()) and the material and formulation allow it. */
+    template <typename Model>
+    DEAL_II_ALWAYS_INLINE void
+    renormalise_if_ill_conditioned(const Model             &material,
+                                   const bool               renormalises,
+                                   const ArrayView<double> &internal,
+                                   const ArrayView<double> &props,
+                                   const Tensor<2, dim>    &F) const
+    {
+      if (may_renormalise(material, renormalises) && ill_conditioned(F))
         {
           Tensor<2, dim> F_new = F;
           material.renormalise_deformation(F_new, internal);
           write_tensor<dim>(&props[particles.fields.deformation_gradient],
                             F_new);
         }
-      if (watched_half_length != numbers::invalid_unsigned_int)
-        check.domains_fit = check.domains_fit && domain_fits(props);
     }
 
     /** Whether the particle's stretched domain fits the windows
@@ -354,6 +379,8 @@ namespace dealmpm
     /** The material of every body, when they share one (the usual scene):
      * then no particle looks up its body. */
     unsigned int only_material = numbers::invalid_unsigned_int;
+    /** any_resets, or watch_domains() was called. */
+    bool resets_or_watches = false;
     /** watch_domains(): the domain_half_length checked, or none. */
     unsigned int   watched_half_length = numbers::invalid_unsigned_int;
     Tensor<1, dim> domain_limit;
