@@ -651,6 +651,11 @@ namespace dealmpm
       if constexpr (parts::move && !reference)
         leavers.start();
       with_weights(grid, stencil, [&](const auto &weights) {
+        // The re-map reads the windows the gather computed.
+        if constexpr (!std::is_same_v<std::decay_t<Remap>, NoRemap> &&
+                      std::is_same_v<std::decay_t<decltype(weights)>,
+                                     WindowWeights<dim>>)
+          weights.keep_windows = true;
         g2p_sweep::visit(
           grid,
           particles,

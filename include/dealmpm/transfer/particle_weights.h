@@ -266,8 +266,11 @@ namespace dealmpm
     const BackgroundGrid<dim>       &grid;
     const QuadraticBSplineGrid<dim> *spline = nullptr;
     GimpWindows<dim>                 gimp;
-    /** rows()'s own: the windows of the particle it saw last (a sweep's
-     * index k; none yet) and its cell's lattice block. */
+    /** Whether rows() keeps the windows it computes: MUSL's G2P sweep
+     * reads them again for its re-map (g2p_sweep::sweep() sets it). */
+    mutable bool keep_windows = false;
+    /** rows()'s own, with keep_windows: the windows of the particle it saw
+     * last (a sweep's index k; none yet) and its cell's lattice block. */
     mutable std::size_t last_particle = std::numeric_limits<std::size_t>::max();
     mutable NodeWindow  last_windows[dim]  = {};
     mutable const unsigned int *last_block = nullptr;
@@ -290,9 +293,9 @@ namespace dealmpm
      * w0.value[k] s2); v12 is the product of the other directions'
      * values, s12 that of y's slope and z's value, s2 (3D) that of y's
      * value and z's slope. A sweep sums a row with w0 first and scales the
-     * sums once (P2G, G2P): its accumulators stay in registers. The
-     * windows of the last particle @p k are kept: MUSL's G2P sweep reads
-     * them again for its re-map. */
+     * sums once (P2G, G2P): its accumulators stay in registers. With
+     * keep_windows, the windows of particle @p k are kept for the next
+     * call with the same @p k. */
     template <typename Particle, typename Function>
     DEAL_II_ALWAYS_INLINE void
     rows(const std::size_t    k,
@@ -300,23 +303,38 @@ namespace dealmpm
          const GridCell<dim> &c,
          Function           &&f) const
     {
-      if (k != last_particle)
+      // Local windows: the sweeps' stores to nodal arrays cannot alias
+      // them, so they stay in registers (read from the members, a row
+      // reloaded them after each store).
+      NodeWindow          w[dim];
+      const unsigned int *block;
+      if (keep_windows && k == last_particle)
+        {
+          for (unsigned int d = 0; d < dim; ++d)
+            w[d] = last_windows[d];
+          block = last_block;
+        }
+      else
         {
           const unsigned int i = index_in_grid(grid, c);
           if (spline != nullptr)
             {
-              spline->windows_at(i, p.get_reference_location(), last_windows);
-              last_block =
+              spline->windows_at(i, p.get_reference_location(), w);
+              block =
                 &spline->block_nodes[i * QuadraticBSplineGrid<dim>::block_size];
             }
           else
             {
-              last_block = gimp.windows_at(i, p, c, last_windows);
+              block = gimp.windows_at(i, p, c, w);
             }
-          last_particle = k;
+          if (keep_windows)
+            {
+              for (unsigned int d = 0; d < dim; ++d)
+                last_windows[d] = w[d];
+              last_block    = block;
+              last_particle = k;
+            }
         }
-      const NodeWindow   *w     = last_windows;
-      const unsigned int *block = last_block;
       // Rows one after the other: unrolled, the 3D G2P's loads of all
       // 27 nodes were hoisted ahead and spilled to the stack.
       const unsigned int n2 = dim == 3 ? w[dim - 1].rows : 1;
