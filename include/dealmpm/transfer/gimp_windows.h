@@ -66,10 +66,18 @@ namespace dealmpm
       const std::uint32_t    present = lattice->cells_present(i);
       constexpr unsigned int level   = dim == 2 ? 4 : 13; // sides 1, 1 (, 1)
       unsigned int           step    = 1;                 // 3^d
-#pragma GCC unroll 3
+      // One test a particle, not one a direction.
+      double lambda[dim];
+      if (follows_deformation)
+        for (unsigned int d = 0; d < dim; ++d)
+          lambda[d] = stretched_half_length<dim>(props, half_length, d) *
+                      c.inverse_jacobian[d][d];
+      else
+        for (unsigned int d = 0; d < dim; ++d)
+          lambda[d] = props[half_length + d] * c.inverse_jacobian[d][d];
       for (unsigned int d = 0; d < dim; ++d, step *= 3)
         window_1d(xi[d],
-                  half_length_of(props, d) * c.inverse_jacobian[d][d],
+                  lambda[d],
                   (present >> (level - step)) & 1u,
                   (present >> (level + step)) & 1u,
                   c.inverse_jacobian[d][d],

@@ -567,6 +567,10 @@ namespace dealmpm
           Remap                     &remap,
           const PerParticle         &per_particle)
     {
+      // The re-map reads the windows the gather computed.
+      if constexpr (!std::is_same_v<Remap, NoRemap> &&
+                    std::is_same_v<Weights, WindowWeights<dim>>)
+        weights.keep_windows = true;
       using Sums = typename Remap::Sums;
       Sums           no_sums; // where the weights are not BoxWeights
       constexpr bool by_cell =
@@ -651,11 +655,6 @@ namespace dealmpm
       if constexpr (parts::move && !reference)
         leavers.start();
       with_weights(grid, stencil, [&](const auto &weights) {
-        // The re-map reads the windows the gather computed.
-        if constexpr (!std::is_same_v<std::decay_t<Remap>, NoRemap> &&
-                      std::is_same_v<std::decay_t<decltype(weights)>,
-                                     WindowWeights<dim>>)
-          weights.keep_windows = true;
         g2p_sweep::visit(
           grid,
           particles,

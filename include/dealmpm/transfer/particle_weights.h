@@ -308,33 +308,19 @@ namespace dealmpm
       // reloaded them after each store).
       NodeWindow          w[dim];
       const unsigned int *block;
-      if (keep_windows && k == last_particle)
+      if (keep_windows) // one test in the sweeps that do not keep them
         {
+          if (k != last_particle)
+            {
+              last_block    = windows_at(p, c, last_windows);
+              last_particle = k;
+            }
           for (unsigned int d = 0; d < dim; ++d)
             w[d] = last_windows[d];
           block = last_block;
         }
       else
-        {
-          const unsigned int i = index_in_grid(grid, c);
-          if (spline != nullptr)
-            {
-              spline->windows_at(i, p.get_reference_location(), w);
-              block =
-                &spline->block_nodes[i * QuadraticBSplineGrid<dim>::block_size];
-            }
-          else
-            {
-              block = gimp.windows_at(i, p, c, w);
-            }
-          if (keep_windows)
-            {
-              for (unsigned int d = 0; d < dim; ++d)
-                last_windows[d] = w[d];
-              last_block    = block;
-              last_particle = k;
-            }
-        }
+        block = windows_at(p, c, w);
       // Rows one after the other: unrolled, the 3D G2P's loads of all
       // 27 nodes were hoisted ahead and spilled to the stack.
       const unsigned int n2 = dim == 3 ? w[dim - 1].rows : 1;
@@ -355,6 +341,19 @@ namespace dealmpm
               }
             f(block + row, w[0], v12, s12, s2);
           }
+    }
+
+    /** Particle @p p's windows @p w in cell @p c; returns the cell's
+     * lattice block. */
+    template <typename Particle>
+    DEAL_II_ALWAYS_INLINE const unsigned int *
+    windows_at(const Particle &p, const GridCell<dim> &c, NodeWindow *w) const
+    {
+      const unsigned int i = index_in_grid(grid, c);
+      if (spline == nullptr)
+        return gimp.windows_at(i, p, c, w);
+      spline->windows_at(i, p.get_reference_location(), w);
+      return &spline->block_nodes[i * QuadraticBSplineGrid<dim>::block_size];
     }
 
     /** f(node, N, grad N) for each of particle @p p's nodes (3^dim, or
