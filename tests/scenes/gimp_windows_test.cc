@@ -87,10 +87,19 @@ TEST(GimpWindows, CpGimpStoresWeightsWhileADomainStretchesPastTheWindows)
           windows->advance(dt);
           stored->advance(dt);
         }
-      // The windows ran in some steps and the stored weights in others.
+      // Under USL the windows ran in some steps and the stored weights in
+      // others; MUSL stores them every step (its three sweeps would each
+      // compute the windows).
       const unsigned int stored_steps = stencil_steps(*windows);
-      EXPECT_GT(stored_steps, 0u) << scheme;
-      EXPECT_LT(stored_steps, n_steps) << scheme;
+      if (scheme == "USL")
+        {
+          EXPECT_GT(stored_steps, 0u);
+          EXPECT_LT(stored_steps, n_steps);
+        }
+      else
+        {
+          EXPECT_EQ(stored_steps, n_steps);
+        }
       EXPECT_EQ(stencil_steps(*stored), n_steps) << scheme;
 
       // The same particles in the same states: the weights agree to

@@ -11,8 +11,9 @@
 #   quadratic B-spline (3 x 3 node blocks reaching into ghost cells);
 # - uGIMP with MUSL on the uniform grid (weights computed where used, on
 #   windows reaching into ghost cells);
-# - cpGIMP with domains of half a cell (on windows until the collision
-#   stretches one past them, then stored: the ranks switch together);
+# - cpGIMP with USL and domains of half a cell (on windows until the
+#   collision stretches one past them, then stored: the ranks switch
+#   together);
 # - the 3D elastic column settling (slip walls, gravity, damping, CFL step);
 # - total Lagrangian: the 3D column, and the cantilever with the quadratic
 #   B-spline (reference stencils reaching into ghost cells);
@@ -75,7 +76,7 @@ compare_ranks cpdi "$disks" "${fast[@]}" -s "MPM/Shape function=CPDI" \
 compare_ranks bspline "$disks" "${fast[@]}" -s "MPM/Shape function=quadratic B-spline"
 compare_ranks ugimp "$disks" "${fast[@]}" -s "MPM/Shape function=uGIMP" -s "MPM/Stress update=MUSL"
 compare_ranks cpgimp "$disks" "${fast[@]}" -s "MPM/Shape function=cpGIMP" \
-  -s "Body 1/Particles per cell=1" -s "Body 2/Particles per cell=1"
+  -s "MPM/Stress update=USL" -s "Body 1/Particles per cell=1" -s "Body 2/Particles per cell=1"
 compare_ranks newmark "$disks" "${fast[@]}" -s "MPM/Particle update=Newmark"
 compare_ranks column "$column" -s "Time/End time=0.3" -s "Output/Interval=0.02"
 compare_ranks column_tl "$column" -s "Time/End time=0.3" -s "Output/Interval=0.02" \
