@@ -267,7 +267,7 @@ namespace dealmpm
     const QuadraticBSplineGrid<dim> *spline = nullptr;
     GimpWindows<dim>                 gimp;
     /** Whether rows() keeps the windows it computes: MUSL's G2P sweep
-     * reads them again for its re-map (g2p_sweep::sweep() sets it). */
+     * reads them again for its re-map (g2p_sweep::visit() sets it). */
     mutable bool keep_windows = false;
     /** rows()'s own, with keep_windows: the windows of the particle it saw
      * last (a sweep's index k; none yet) and its cell's lattice block. */
