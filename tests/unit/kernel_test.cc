@@ -8,6 +8,7 @@
 #include <dealmpm/base/errors.h>
 #include <dealmpm/transfer/kernel.h>
 #include <dealmpm/transfer/lattice_blocks.h>
+#include <dealmpm/transfer/quadratic_bspline.h>
 
 #include <gtest/gtest.h>
 
@@ -314,6 +315,46 @@ TEST(Kernel, QuadraticBSplineClosedForm)
           }
         ++k;
       }
+}
+
+TEST(Kernel, QuadraticBSplineWindowsAreTheSameInEveryCell)
+{
+  // A particle's weights depend on where it is in its cell, not on which
+  // cell: millions of cells from the origin they are those of the same
+  // point in the second cell, to the last bit, and in the half cell next to
+  // the far boundary the two hats are 1 - s and s exactly. (Computed from
+  // the grid coordinate J + s they lost the low bits of s there.)
+  constexpr int           n = 1 << 22;
+  QuadraticBSplineGrid<2> spline;
+  spline.inverse_h   = Tensor<1, 2>({3., 5.});
+  spline.n_cells     = {{n, 8}};
+  spline.lower_index = {{{1, 3}}, {{n - 1000, 3}}, {{n - 1, 3}}};
+  for (const double s : {1e-3, 0.1234567, 0.4999, 0.5, 0.7654321, 0.999})
+    {
+      const Point<2> xi(s, 0.3);
+      NodeWindow     near[2], far[2], last[2];
+      spline.windows_at(0, xi, near);
+      spline.windows_at(1, xi, far);
+      spline.windows_at(2, xi, last);
+      for (unsigned int d = 0; d < 2; ++d)
+        {
+          EXPECT_EQ(near[d].first, far[d].first) << s;
+          EXPECT_EQ(near[d].padded, far[d].padded) << s;
+          for (unsigned int k = 0; k < 3; ++k)
+            {
+              EXPECT_EQ(near[d].value[k], far[d].value[k]) << s;
+              EXPECT_EQ(near[d].slope[k], far[d].slope[k]) << s;
+            }
+        }
+      if (s >= 0.5)
+        {
+          // Nodes J and J + 1 at window positions 1 and 2.
+          EXPECT_EQ(last[0].first, 0u) << s;
+          EXPECT_EQ(last[0].value[0], 0.) << s;
+          EXPECT_EQ(last[0].value[1], 1. - s) << s;
+          EXPECT_EQ(last[0].value[2], s) << s;
+        }
+    }
 }
 
 TEST(Kernel, QuadraticBSplineRefusesRefinedGrid)

@@ -55,11 +55,7 @@ namespace dealmpm
     windows_at(const unsigned int i, const Point<dim> &xi, NodeWindow *w) const
     {
       for (unsigned int d = 0; d < dim; ++d)
-        window_1d(lower_index[i][d] + xi[d],
-                  lower_index[i][d],
-                  n_cells[d],
-                  inverse_h[d],
-                  w[d]);
+        window_1d(xi[d], lower_index[i][d], n_cells[d] - 1, inverse_h[d], w[d]);
     }
 
     /** The same weights as windows_at() without the padded nodes, for the
@@ -72,11 +68,7 @@ namespace dealmpm
       for (unsigned int d = 0; d < dim; ++d)
         {
           NodeWindow s;
-          window_1d(lower_index[i][d] + xi[d],
-                    lower_index[i][d],
-                    n_cells[d],
-                    inverse_h[d],
-                    s);
+          window_1d(xi[d], lower_index[i][d], n_cells[d] - 1, inverse_h[d], s);
           w[d].first = s.first + (s.padded == 0 ? 1 : 0);
           w[d].count = s.padded == 3 ? 3 : 2;
           for (unsigned int k = 0; k < 3; ++k)
@@ -97,27 +89,31 @@ namespace dealmpm
 
   private:
     /**
-     * The window along one direction at t (in cell lengths from the
-     * grid's origin) for a particle in the cell whose lower node is J, of n
-     * cells, on that cell's 4-node block of cell length 1 / @p inverse_h.
+     * The window along one direction of a particle at unit-cell coordinate
+     * @p s (0 to 1, to round-off) in the cell whose lower node is J, the
+     * grid's last cell along it being @p last, on that cell's 4-node block
+     * of cell length 1 / @p inverse_h. The half of its cell that the
+     * particle is in decides its nearest node and whether it is in a half
+     * cell next to a boundary: taken from s itself, not from the grid
+     * coordinate J + s, which costs a conversion and, far from the origin,
+     * the low bits of s.
      */
     static DEAL_II_ALWAYS_INLINE void
-    window_1d(const double t,
+    window_1d(const double s,
               const int    J,
-              const int    n,
+              const int    last,
               const double inverse_h,
               NodeWindow  &w)
     {
-      if (t < 0.5 || t >= n - 0.5)
+      const bool upper_half = s >= 0.5;
+      if (upper_half ? J == last : J == 0)
         {
           // The half cell next to a boundary: linear hats on nodes J and
-          // J + 1 (positions 1 and 2); J is 0 at the lower boundary and n - 1
-          // at the upper one.
-          const double s     = t - J;
-          const bool   lower = J == 0;
-          w.first            = lower ? 1 : 0;
-          w.padded           = lower ? 2 : 0;
-          w.rows             = 3;
+          // J + 1 (positions 1 and 2).
+          const bool lower = !upper_half;
+          w.first          = lower ? 1 : 0;
+          w.padded         = lower ? 2 : 0;
+          w.rows           = 3;
           double *v = w.value + (lower ? 0 : 1), *g = w.slope + (lower ? 0 : 1);
           w.value[w.padded] = 0;
           w.slope[w.padded] = 0;
@@ -127,14 +123,13 @@ namespace dealmpm
           g[1]              = inverse_h;
           return;
         }
-      // Inside, t >= 0.5: truncation is the floor. The splines of the
-      // nearest node and its two neighbours at r = t - nearest in
+      // The splines of the nearest node (the cell's lower one, or its upper
+      // one: r = s - 1 is exact there) and its two neighbours at r in
       // [-1/2, 1/2), written out: the same numbers as by each node's
       // distance, without a branch per node.
-      const int    nearest = int(t + 0.5);
-      const double r       = t - nearest;
+      const double r     = upper_half ? s - 1. : s;
       const double below = 0.5 - r, above = 0.5 + r;
-      w.first    = nearest - J;
+      w.first    = upper_half ? 1 : 0;
       w.padded   = 3;
       w.rows     = 3;
       w.value[0] = 0.5 * below * below;
