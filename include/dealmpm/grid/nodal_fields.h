@@ -35,10 +35,12 @@ namespace dealmpm
      * then looks at the weights of each particle's cell (in most steps of
      * most scenes no node is light, and G2P uses no weights). */
     bool has_light_nodes = false;
-    /** Scratch of P2G through stored or B-spline weights: mass, momentum
-     * and force interleaved by node (empty with linear weights computed
-     * where used). */
-    std::vector<double> p2g_block;
+    /** Scratch interleaved by node, empty with linear weights computed
+     * where used: P2G through stored or windowed weights sums mass,
+     * momentum and force into it; G2P through windowed weights reads the
+     * velocity and its increment from it (fill_velocity_block()), a
+     * const sweep's scratch. */
+    mutable std::vector<double> p2g_block;
 
     void
     reinit(

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <dealmpm/base/lanes.h>
 #include <dealmpm/base/smallest_stretch.h>
 #include <dealmpm/grid/background_grid.h>
 #include <dealmpm/grid/nodal_field_set.h>
@@ -117,6 +118,75 @@ namespace dealmpm
     template <int dim, typename Weights>
     constexpr bool by_rows = std::is_same_v<Weights, WindowWeights<dim>>;
 
+    /** The rows' sums of gather_by_rows() from the velocity and its
+     * increment interleaved by node (VelocityArrays::block): a node's
+     * first four values (v, then dv, in 2D; v and dv_x in 3D) are one
+     * load and one vector sum for the values and one for the slopes, 3D's
+     * dv_y, dv_z a second pair. Lanes past what a sweep reads hold the
+     * node's other numbers and are not read. The same products and sums in
+     * the same order as gather_by_rows(). */
+    template <bool motion,
+              bool move,
+              bool deformation,
+              int  dim,
+              typename Particle>
+    DEAL_II_ALWAYS_INLINE inline void
+    gather_rows_from_block(const WindowWeights<dim> &weights,
+                           const std::size_t         k,
+                           const Particle           &p,
+                           const GridCell<dim>      &cell,
+                           const double             *block,
+                           Tensor<1, dim>           &v_grid,
+                           Tensor<1, dim>           &dv,
+                           Tensor<2, dim>           &L)
+    {
+      constexpr unsigned int stride = VelocityArrays<dim>::block_stride;
+      static_assert(stride >= 5, "a node's block holds four values");
+      constexpr bool second_pair = motion && dim == 3;
+      weights.rows(k,
+                   p,
+                   cell,
+                   [&](const unsigned int *row,
+                       const NodeWindow   &w0,
+                       const double        v12,
+                       const double        s12,
+                       const double        s2) DEAL_II_ALWAYS_INLINE {
+                     Lanes4                  value = {}, slope = {};
+                     [[maybe_unused]] Lanes2 rest = {}; // dv_y, dv_z (3D)
+                     for (unsigned int k = 0; k < 3; ++k)
+                       {
+                         const double *x = block + std::size_t(row[k]) * stride;
+                         const Lanes4  first = load_lanes<Lanes4>(x);
+                         value += w0.value[k] * first;
+                         if (deformation)
+                           slope += w0.slope[k] * first;
+                         if constexpr (second_pair)
+                           rest += w0.value[k] * load_lanes<Lanes2>(x + 4);
+                       }
+                     [[maybe_unused]] const auto value_of =
+                       [&](const unsigned int j) {
+                         if constexpr (second_pair)
+                           return j < 4 ? value[j] : rest[j - 4];
+                         else
+                           return value[j];
+                       };
+                     for (unsigned int d = 0; d < dim; ++d)
+                       {
+                         if (move)
+                           v_grid[d] += v12 * value[d];
+                         if constexpr (motion)
+                           dv[d] += v12 * value_of(dim + d);
+                         if (deformation)
+                           {
+                             L[d][0] += v12 * slope[d];
+                             L[d][1] += s12 * value[d];
+                             if constexpr (dim == 3)
+                               L[d][2] += s2 * value[d];
+                           }
+                       }
+                   });
+    }
+
     /** gather()'s v_grid, dv and L for windowed weights computed where
      * used, a row of nodes along x at a time (WindowWeights::rows()):
      * the row's sums with x's weights, then scaled by the other
@@ -137,6 +207,13 @@ namespace dealmpm
                    Tensor<1, dim>           &dv,
                    Tensor<2, dim>           &L)
     {
+      if constexpr (std::is_same_v<Arrays, VelocityArrays<dim>>)
+        if (from.block != nullptr)
+          {
+            gather_rows_from_block<motion, move, deformation>(
+              weights, k, p, cell, from.block, v_grid, dv, L);
+            return;
+          }
       weights.rows(k,
                    p,
                    cell,
@@ -779,17 +856,28 @@ namespace dealmpm
     // and run only where the particles carry it (a run-time switch cost
     // the 3D column's USL sweep 20 instructions per particle-step).
     const auto sweep = [&](const auto affine) {
-      return g2p_sweep::sweep<what, formulation, decltype(affine)::value>(
-        grid,
-        stencil,
-        velocity_arrays(fields),
-        dt,
-        flip_fraction,
-        particles,
-        after_deformation,
-        adjust_gradient,
-        f_increment,
-        remap);
+      const auto run = [&](const auto &arrays) {
+        return g2p_sweep::sweep<what, formulation, decltype(affine)::value>(
+          grid,
+          stencil,
+          arrays,
+          dt,
+          flip_fraction,
+          particles,
+          after_deformation,
+          adjust_gradient,
+          f_increment,
+          remap);
+      };
+      // Windowed weights read the nodes interleaved (APIC's motion takes
+      // the per-node path, which reads the vectors).
+      constexpr bool motion = G2PParts<what>::motion;
+      if constexpr (std::is_same_v<Fields, NodalFields<dim>> &&
+                    !(motion && decltype(affine)::value))
+        if (stencil.on_windows())
+          return run(
+            fill_velocity_block(fields, velocity_arrays(fields), motion));
+      return run(velocity_arrays(fields));
     };
     if constexpr (G2PParts<what>::motion)
       if (particles.fields.affine_velocity != numbers::invalid_unsigned_int)

@@ -22,6 +22,11 @@ namespace dealmpm
     /** NodalFields::increment_weight when some node is light, or
      * nullptr. */
     const double *weight = nullptr;
+    /** The velocity and then its increment interleaved by node
+     * (block_stride doubles a node), where G2P through windowed weights
+     * reads them (fill_velocity_block()); else nullptr. */
+    const double                 *block        = nullptr;
+    static constexpr unsigned int block_stride = 1 + 2 * dim;
 
     explicit VelocityArrays(const NodalFields<dim> &fields)
     {
@@ -53,6 +58,37 @@ namespace dealmpm
       return false;
     }
   };
+
+  /**
+   * Copies the velocity (and with @p increment its increment) of every
+   * owned and ghost node of @p fields into their p2g_block, interleaved by
+   * node, and returns @p arrays pointing at it. A sweep through windowed
+   * weights then loads a node's values from one address, and sums them
+   * in one vector operation: 3^dim nodes a particle, against one copy
+   * per node.
+   */
+  template <int dim>
+  VelocityArrays<dim>
+  fill_velocity_block(const NodalFields<dim> &fields,
+                      VelocityArrays<dim>     arrays,
+                      const bool              increment)
+  {
+    constexpr unsigned int stride = VelocityArrays<dim>::block_stride;
+    const NodalVector     &v0     = fields.velocity[0];
+    const std::size_t      n =
+      v0.locally_owned_size() + v0.get_partitioner()->n_ghost_indices();
+    std::vector<double> &block = fields.p2g_block;
+    block.resize(n * stride);
+    for (unsigned int d = 0; d < dim; ++d)
+      for (std::size_t i = 0; i < n; ++i)
+        block[i * stride + d] = arrays.velocity[d][i];
+    if (increment)
+      for (unsigned int d = 0; d < dim; ++d)
+        for (std::size_t i = 0; i < n; ++i)
+          block[i * stride + dim + d] = arrays.increment[d][i];
+    arrays.block = block.data();
+    return arrays;
+  }
 
   /** The core fields with USL's light-node weights (a sweep's Fields). */
   template <int dim>
