@@ -56,7 +56,8 @@ namespace dealmpm
         k,
         p,
         c,
-        [&](const unsigned int *row,
+        [&](const auto          n_x,
+            const unsigned int *row,
             const NodeWindow   &w0,
             const double        v12,
             const double        s12,
@@ -69,7 +70,7 @@ namespace dealmpm
                        head_across                  = {0., 0., 0., across[0]};
           [[maybe_unused]] const Lanes2 pair_along  = {along[0], along[1]},
                                         pair_across = {across[0], across[1]};
-          for (unsigned int k = 0; k < 3; ++k)
+          for (unsigned int k = 0; k < n_x; ++k)
             {
               double *const x    = block + std::size_t(row[k]) * stride;
               Lanes4        head = load_lanes<Lanes4>(x);
@@ -120,7 +121,8 @@ namespace dealmpm
       weights.rows(k,
                    p,
                    c,
-                   [&](const unsigned int *row,
+                   [&](const auto          n_x,
+                       const unsigned int *row,
                        const NodeWindow   &w0,
                        const double        v12,
                        const double        s12,
@@ -128,7 +130,7 @@ namespace dealmpm
                      const double m_v12 = m * v12;
                      double       along[dim], across[dim];
                      row_force_factors<dim>(P, v12, s12, s2, along, across);
-                     for (unsigned int k = 0; k < 3; ++k)
+                     for (unsigned int k = 0; k < n_x; ++k)
                        {
                          if (mass_and_momentum)
                            to.add_mass_and_momentum(row[k],

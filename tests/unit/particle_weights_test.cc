@@ -454,6 +454,77 @@ TEST(ParticleWeights, CpGimpWhereUsedEqualsStored)
   check_remap_in_sweep<3>(cpgimp_scene_3d);
 }
 
+namespace
+{
+  /** Visits WindowWeights make of @p state's particles; each visited node
+   * must carry weight (a visit of zero weight is padding the sweeps pay
+   * for), and the weights must sum to one and their gradients to zero.
+   * Returns the visits per particle, at most and at least. */
+  template <int dim>
+  std::pair<unsigned int, unsigned int>
+  check_window_visits(const RandomState<dim> &state)
+  {
+    const auto   weights = WindowWeights<dim>::of(state.grid, state.where_used);
+    unsigned int most = 0, least = std::numeric_limits<unsigned int>::max();
+    for_each_particle_in_stencil_order(
+      state.grid,
+      state.particles,
+      [&](const std::size_t k, const auto &p, const GridCell<dim> &c) {
+        unsigned int   visits = 0, zero = 0;
+        double         sum = 0;
+        Tensor<1, dim> sum_grad;
+        weights(k,
+                p,
+                c,
+                [&](unsigned int, const double N, const Tensor<1, dim> &grad) {
+                  ++visits;
+                  zero += N == 0.;
+                  sum += N;
+                  sum_grad += grad;
+                });
+        EXPECT_EQ(zero, 0u) << "particle " << k;
+        EXPECT_NEAR(sum, 1., 1e-14);
+        // Gradients of order 1 / h (h = 1/7 to 1/5 here).
+        EXPECT_LT(sum_grad.norm(), 1e-12);
+        most  = std::max(most, visits);
+        least = std::min(least, visits);
+      });
+    return {most, least};
+  }
+} // namespace
+
+// GIMP's windows visit the nodes that carry weight and no other: a domain
+// inside its cell along a direction has two there, along x too (no padded
+// third node), so a particle whose domain stays in its cell visits 2^dim
+// nodes, as linear weights do; scattered, the domains reach into
+// neighbours and a particle visits up to 3^dim.
+TEST(ParticleWeights, GimpWindowsVisitOnlyNodesWithWeight)
+{
+  const auto check = [](const std::string &scene, auto dimension) {
+    constexpr int    dim = decltype(dimension)::value;
+    RandomState<dim> state(scene, 7);
+    EXPECT_EQ(check_window_visits(state).first, dim == 2 ? 9u : 27u);
+    // Each particle at its cell's centre: its domain (a quarter cell,
+    // cpGIMP's stretched by at most 1.1) stays in the cell.
+    for (const GridCell<dim> &c : state.grid.cells)
+      for (auto &p : state.particles.handler.particles_in_cell(c.cell))
+        {
+          Point<dim> centre;
+          for (unsigned int d = 0; d < dim; ++d)
+            centre[d] = 0.5;
+          p.set_reference_location(centre);
+          p.set_location(c.real_point(centre));
+        }
+    const auto [most, least] = check_window_visits(state);
+    EXPECT_EQ(most, 1u << dim);
+    EXPECT_EQ(least, 1u << dim);
+  };
+  check(ugimp_scene, std::integral_constant<int, 2>());
+  check(cpgimp_scene, std::integral_constant<int, 2>());
+  check(ugimp_scene_3d, std::integral_constant<int, 3>());
+  check(cpgimp_scene_3d, std::integral_constant<int, 3>());
+}
+
 // GIMP's windows are used only where they give the stored weights: not
 // on grids with one cell across (no node to pad with), local refinement
 // (no lattice) or cells missing from a patch that are not whole rows (the

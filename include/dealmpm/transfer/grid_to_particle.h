@@ -146,14 +146,15 @@ namespace dealmpm
       weights.rows(k,
                    p,
                    cell,
-                   [&](const unsigned int *row,
+                   [&](const auto          n_x,
+                       const unsigned int *row,
                        const NodeWindow   &w0,
                        const double        v12,
                        const double        s12,
                        const double        s2) DEAL_II_ALWAYS_INLINE {
                      Lanes4                  value = {}, slope = {};
                      [[maybe_unused]] Lanes2 rest = {}; // dv_y, dv_z (3D)
-                     for (unsigned int k = 0; k < 3; ++k)
+                     for (unsigned int k = 0; k < n_x; ++k)
                        {
                          const double *x = block + std::size_t(row[k]) * stride;
                          const Lanes4  first = load_lanes<Lanes4>(x);
@@ -217,14 +218,15 @@ namespace dealmpm
       weights.rows(k,
                    p,
                    cell,
-                   [&](const unsigned int *row,
+                   [&](const auto          n_x,
+                       const unsigned int *row,
                        const NodeWindow   &w0,
                        const double        v12,
                        const double        s12,
                        const double        s2) DEAL_II_ALWAYS_INLINE {
                      double value[dim] = {}, slope[dim] = {},
                             increment[dim] = {};
-                     for (unsigned int k = 0; k < 3; ++k)
+                     for (unsigned int k = 0; k < n_x; ++k)
                        for (unsigned int d = 0; d < dim; ++d)
                          {
                            const double v = from.velocity[d][row[k]];

@@ -15,23 +15,23 @@ namespace dealmpm
   };
 
   /**
-   * A particle's three nodes along one direction on its cell's lattice
-   * block (positions 0 .. 3 of the four: x0 - h, x0, x1, x1 + h): block
-   * positions first .. first + 2, with their 1D weights and slopes. Where
-   * only two nodes carry weight, the third (@p padded: 0 or 2 in the
-   * window, else 3) is a node of the block inside the grid with weight and
-   * slope zero, so that the sweeps' loops along x have fixed counts
-   * (WindowWeights: the quadratic B-spline and uGIMP). Along y and z the
-   * sweeps visit the first @p rows nodes only: 3, or 2 where the third
-   * carries no weight (uGIMP's domains inside their cell along that
-   * direction; then the third may not exist).
+   * A particle's nodes along one direction on its cell's lattice block
+   * (positions 0 .. 3 of the four: x0 - h, x0, x1, x1 + h): block positions
+   * first .. first + rows - 1, with their 1D weights and slopes (the
+   * quadratic B-spline and GIMP, WindowWeights). @p rows is 3, or 2 where
+   * a uGIMP or cpGIMP domain stays in its cell along that direction (then
+   * the third entries are unset and the node beyond may not exist); the
+   * sweeps visit that many nodes along every direction, with a count
+   * fixed at compile time along x. The B-spline keeps three, one of them
+   * padding next to a boundary (@p padded: 0 or 2 in the window, else 3:
+   * a node of the block inside the grid with weight and slope zero).
    */
   struct NodeWindow
   {
     double       value[3];
     double       slope[3];
     unsigned int first;
-    unsigned int padded;
+    unsigned int padded; ///< the B-spline's only
     unsigned int rows;
   };
 } // namespace dealmpm

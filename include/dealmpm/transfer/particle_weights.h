@@ -286,9 +286,10 @@ namespace dealmpm
                             stencil.gimp_follows_deformation}};
     }
 
-    /** f(row, w0, v12, s12, s2) for each row of particle @p p's nodes
+    /** f(n_x, row, w0, v12, s12, s2) for each row of particle @p p's nodes
      * along x (3 or 2 a direction: NodeWindow::rows): row[k] is node k of
-     * the row (k = 0, 1, 2), with weight
+     * the row (k < n_x, a std::integral_constant: 2 where a GIMP domain
+     * stays in its cell along x, else 3), with weight
      * w0.value[k] v12 and gradient (w0.slope[k] v12, w0.value[k] s12,
      * w0.value[k] s2); v12 is the product of the other directions'
      * values, s12 that of y's slope and z's value, s2 (3D) that of y's
@@ -323,24 +324,32 @@ namespace dealmpm
         block = windows_at(p, c, w);
       // Rows one after the other: unrolled, the 3D G2P's loads of all
       // 27 nodes were hoisted ahead and spilled to the stack.
-      const unsigned int n2 = dim == 3 ? w[dim - 1].rows : 1;
+      const auto each_row = [&](const auto n_x) DEAL_II_ALWAYS_INLINE {
+        const unsigned int n2 = dim == 3 ? w[dim - 1].rows : 1;
 #pragma GCC unroll 1
-      for (unsigned int i2 = 0; i2 < n2; ++i2)
+        for (unsigned int i2 = 0; i2 < n2; ++i2)
 #pragma GCC unroll 1
-        for (unsigned int i1 = 0; i1 < w[1].rows; ++i1)
-          {
-            double       v12 = w[1].value[i1], s12 = w[1].slope[i1];
-            double       s2  = 0;
-            unsigned int row = 4 * (w[1].first + i1) + w[0].first;
-            if constexpr (dim == 3)
-              {
-                s12 *= w[2].value[i2];
-                s2 = w[1].value[i1] * w[2].slope[i2];
-                v12 *= w[2].value[i2];
-                row += 16 * (w[2].first + i2);
-              }
-            f(block + row, w[0], v12, s12, s2);
-          }
+          for (unsigned int i1 = 0; i1 < w[1].rows; ++i1)
+            {
+              double       v12 = w[1].value[i1], s12 = w[1].slope[i1];
+              double       s2  = 0;
+              unsigned int row = 4 * (w[1].first + i1) + w[0].first;
+              if constexpr (dim == 3)
+                {
+                  s12 *= w[2].value[i2];
+                  s2 = w[1].value[i1] * w[2].slope[i2];
+                  v12 *= w[2].value[i2];
+                  row += 16 * (w[2].first + i2);
+                }
+              f(n_x, block + row, w[0], v12, s12, s2);
+            }
+      };
+      // A row's length fixed at compile time: its loops unroll and keep
+      // their sums in registers.
+      if (w[0].rows == 2)
+        each_row(std::integral_constant<unsigned int, 2>());
+      else
+        each_row(std::integral_constant<unsigned int, 3>());
     }
 
     /** Particle @p p's windows @p w in cell @p c; returns the cell's
@@ -357,7 +366,7 @@ namespace dealmpm
     }
 
     /** f(node, N, grad N) for each of particle @p p's nodes (3^dim, or
-     * fewer rows where NodeWindow::rows says). */
+     * fewer where NodeWindow::rows says). */
     template <typename Particle, typename Function>
     DEAL_II_ALWAYS_INLINE void
     operator()(const std::size_t    k,
@@ -368,12 +377,13 @@ namespace dealmpm
       rows(k,
            p,
            c,
-           [&](const unsigned int *row,
+           [&](const auto          n_x,
+               const unsigned int *row,
                const NodeWindow   &w0,
                const double        v12,
                const double        s12,
                const double        s2) DEAL_II_ALWAYS_INLINE {
-             for (unsigned int k = 0; k < 3; ++k)
+             for (unsigned int k = 0; k < n_x; ++k)
                {
                  Tensor<1, dim> grad_N;
                  grad_N[0] = w0.slope[k] * v12;
