@@ -32,9 +32,11 @@ namespace dealmpm
     }
 
     /** add_by_rows() into an InterleavedNodes block, a node's mass,
-     * momentum and (2D) f_x as one vector of four, 3D's f_x, f_y as a pair
-     * and the last force component alone (Lanes4): the same products and
-     * sums as add_mass_and_momentum() and add_force(). */
+     * momentum and (2D) f_x as one vector of four, 2D's f_y alone and 3D's
+     * force as a second vector of four (its fourth lane the node's padding:
+     * not read), a row's force factors from P's columns as vectors: the
+     * same products and sums as row_force_factors(),
+     * add_mass_and_momentum() and add_force(). */
     template <int  dim,
               bool mass_and_momentum,
               bool internal_force,
@@ -52,6 +54,15 @@ namespace dealmpm
       constexpr unsigned int stride = InterleavedNodes<dim>::stride;
       // m N (1, v): the lane of 2D's f_x adds m N 0.
       const Lanes4 one_v = {1., v[0], v[1], dim == 3 ? v[dim - 1] : 0.};
+      // 3D: P's columns, so that a row's force factors (row_force_factors()'s
+      // products and sums) are vector products, not nine scalar ones (in
+      // 2D the scalar ones cost less than building the vectors). The
+      // fourth lane repeats the third (not read): zeroing it compiled to a
+      // vmovq that valgrind 3.19 cannot run.
+      [[maybe_unused]] Lanes4 column[dim];
+      if constexpr (dim == 3)
+        for (unsigned int j = 0; j < dim; ++j)
+          column[j] = Lanes4{P[0][j], P[1][j], P[2][j], P[2][j]};
       weights.rows(
         k,
         p,
@@ -63,31 +74,45 @@ namespace dealmpm
             const double        s12,
             const double        s2) DEAL_II_ALWAYS_INLINE {
           const double m_v12 = m * v12;
-          double       along[dim], across[dim];
-          row_force_factors<dim>(P, v12, s12, s2, along, across);
-          // 2D: f_x in the last lane of the four; 3D: f_x, f_y a pair.
-          const Lanes4 head_along                   = {0., 0., 0., along[0]},
-                       head_across                  = {0., 0., 0., across[0]};
-          [[maybe_unused]] const Lanes2 pair_along  = {along[0], along[1]},
-                                        pair_across = {across[0], across[1]};
-          for (unsigned int k = 0; k < n_x; ++k)
+          const auto   head  = [&](double *const x, const unsigned int k) {
+            Lanes4 sums = load_lanes<Lanes4>(x);
+            if (mass_and_momentum)
+              sums += (w0.value[k] * m_v12) * one_v;
+            return sums;
+          };
+          if constexpr (dim == 2)
             {
-              double *const x    = block + std::size_t(row[k]) * stride;
-              Lanes4        head = load_lanes<Lanes4>(x);
-              if (mass_and_momentum)
-                head += (w0.value[k] * m_v12) * one_v;
-              if (internal_force && dim == 2)
-                head += w0.slope[k] * head_along + w0.value[k] * head_across;
-              store_lanes(x, head);
-              if (!internal_force)
-                continue;
-              if constexpr (dim == 3)
-                store_lanes(x + 4,
-                            load_lanes<Lanes2>(x + 4) +
-                              (w0.slope[k] * pair_along +
-                               w0.value[k] * pair_across));
-              x[stride - 1] +=
-                w0.slope[k] * along[dim - 1] + w0.value[k] * across[dim - 1];
+              double along[dim], across[dim];
+              row_force_factors<dim>(P, v12, s12, s2, along, across);
+              // f_x in the last lane of the four, f_y alone.
+              const Lanes4 head_along  = {0., 0., 0., along[0]},
+                           head_across = {0., 0., 0., across[0]};
+              for (unsigned int k = 0; k < n_x; ++k)
+                {
+                  double *const x    = block + std::size_t(row[k]) * stride;
+                  Lanes4        sums = head(x, k);
+                  if (internal_force)
+                    sums +=
+                      w0.slope[k] * head_along + w0.value[k] * head_across;
+                  store_lanes(x, sums);
+                  if (internal_force)
+                    x[stride - 1] +=
+                      w0.slope[k] * along[1] + w0.value[k] * across[1];
+                }
+            }
+          else
+            {
+              const Lanes4 along  = v12 * column[0],
+                           across = s12 * column[1] + s2 * column[2];
+              for (unsigned int k = 0; k < n_x; ++k)
+                {
+                  double *const x = block + std::size_t(row[k]) * stride;
+                  store_lanes(x, head(x, k));
+                  if (internal_force)
+                    store_lanes(x + 4,
+                                load_lanes<Lanes4>(x + 4) +
+                                  (w0.slope[k] * along + w0.value[k] * across));
+                }
             }
         });
     }

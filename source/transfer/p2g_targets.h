@@ -52,16 +52,17 @@ namespace dealmpm
 
   /** Where P2G adds through stored or B-spline weights into one set of
    * nodal fields: a block of 1 + 2 dim numbers per node (mass, momentum,
-   * force), copied into the nodal vectors after the sweep. A stored
-   * stencil adds into 3^dim nodes a particle (quadratic B-spline, GIMP);
-   * each entry then touches one cache line instead of 1 + 2 dim, from
-   * one address, and the pairs of momentum and force are added as
-   * pairs. */
+   * force; 3D pads them to eight, so that momentum's and force's lanes are
+   * two vectors of four), copied into the nodal vectors after the sweep.
+   * A stored stencil adds into 3^dim nodes a particle (quadratic
+   * B-spline, GIMP); each entry then touches one cache line instead of 1
+   * + 2 dim, from one address, and the pairs of momentum and force are
+   * added as pairs. */
   template <int dim>
   struct InterleavedNodes
   {
     static constexpr bool         interleaved = true;
-    static constexpr unsigned int stride      = 1 + 2 * dim;
+    static constexpr unsigned int stride      = dim == 3 ? 8 : 1 + 2 * dim;
     double                       *block;
 
     DEAL_II_ALWAYS_INLINE void

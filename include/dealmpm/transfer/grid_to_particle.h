@@ -122,9 +122,13 @@ namespace dealmpm
      * increment interleaved by node (VelocityArrays::block): a node's
      * first four values (v, then dv, in 2D; v and dv_x in 3D) are one
      * load and one vector sum for the values and one for the slopes, 3D's
-     * dv_y, dv_z a second pair. Lanes past what a sweep reads hold the
-     * node's other numbers and are not read. The same products and sums in
-     * the same order as gather_by_rows(). */
+     * dv_y, dv_z a second pair. Each row's sums are scaled into vector
+     * sums over the rows (the lanes of v and dv by v12; L's columns by
+     * v12, s12 and s2), written into v_grid, dv and L once: as scalars a
+     * row's scaling cost more than its nodes (47 instructions a 3D row).
+     * Lanes past what a sweep reads hold the node's other numbers and are
+     * not read. The same products and sums in the same order as
+     * gather_by_rows() (v_grid, dv and L come in as zero). */
     template <bool motion,
               bool move,
               bool deformation,
@@ -143,6 +147,12 @@ namespace dealmpm
       constexpr unsigned int stride = VelocityArrays<dim>::block_stride;
       static_assert(stride >= 5, "a node's block holds four values");
       constexpr bool second_pair = motion && dim == 3;
+      // Over the rows: v12 times the values (v, dv), times the slopes
+      // (L's first column), s12 and s2 times the values (its second and
+      // third), v12 times 3D's dv_y, dv_z.
+      Lanes4                  values = {}, column0 = {}, column1 = {};
+      [[maybe_unused]] Lanes4 column2 = {};
+      [[maybe_unused]] Lanes2 rests   = {};
       weights.rows(k,
                    p,
                    cell,
@@ -164,28 +174,37 @@ namespace dealmpm
                          if constexpr (second_pair)
                            rest += w0.value[k] * load_lanes<Lanes2>(x + 4);
                        }
-                     [[maybe_unused]] const auto value_of =
-                       [&](const unsigned int j) {
-                         if constexpr (second_pair)
-                           return j < 4 ? value[j] : rest[j - 4];
-                         else
-                           return value[j];
-                       };
-                     for (unsigned int d = 0; d < dim; ++d)
+                     if (move || motion)
+                       values += v12 * value;
+                     if constexpr (second_pair)
+                       rests += v12 * rest;
+                     if (deformation)
                        {
-                         if (move)
-                           v_grid[d] += v12 * value[d];
-                         if constexpr (motion)
-                           dv[d] += v12 * value_of(dim + d);
-                         if (deformation)
-                           {
-                             L[d][0] += v12 * slope[d];
-                             L[d][1] += s12 * value[d];
-                             if constexpr (dim == 3)
-                               L[d][2] += s2 * value[d];
-                           }
+                         column0 += v12 * slope;
+                         column1 += s12 * value;
+                         if constexpr (dim == 3)
+                           column2 += s2 * value;
                        }
                    });
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          if (move)
+            v_grid[d] += values[d];
+          if constexpr (motion)
+            {
+              if constexpr (dim == 2)
+                dv[d] += values[dim + d];
+              else // dv_x in the fourth lane, dv_y and dv_z a pair
+                dv[d] += d == 0 ? values[3] : rests[d - 1];
+            }
+          if (deformation)
+            {
+              L[d][0] += column0[d];
+              L[d][1] += column1[d];
+              if constexpr (dim == 3)
+                L[d][2] += column2[d];
+            }
+        }
     }
 
     /** gather()'s v_grid, dv and L for windowed weights computed where
