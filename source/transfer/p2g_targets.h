@@ -52,8 +52,9 @@ namespace dealmpm
 
   /** Where P2G adds through stored or B-spline weights into one set of
    * nodal fields: a block of 1 + 2 dim numbers per node (mass, momentum,
-   * force; 3D pads them to eight, so that momentum's and force's lanes are
-   * two vectors of four), copied into the nodal vectors after the sweep.
+   * force; 3D pads them to eight, so that mass and momentum are one vector
+   * of four and force another), copied into the nodal vectors after the
+   * sweep.
    * A stored stencil adds into 3^dim nodes a particle (quadratic
    * B-spline, GIMP); each entry then touches one cache line instead of 1
    * + 2 dim, from one address, and the pairs of momentum and force are
