@@ -1,3 +1,4 @@
+#include <dealmpm/base/lanes.h>
 #include <dealmpm/transfer/lattice_blocks.h>
 #include <dealmpm/transfer/stencil.h>
 #include <dealmpm/transfer/stencil_order.h>
@@ -12,6 +13,10 @@ namespace dealmpm
 {
   namespace
   {
+    /** How far (in unit-cell lengths) a point may lie outside a cell and
+     * still count as in it. */
+    constexpr double face_tolerance = 1e-12;
+
     /** How far unit-cell point xi lies outside [0,1]^dim (0 inside). */
     template <int dim>
     inline double
@@ -54,11 +59,10 @@ namespace dealmpm
            Point<dim>                &xi,
            double                    &outside)
     {
-      constexpr double     tolerance = 1e-12;
-      const GridCell<dim> &own       = grid.cells[i];
-      xi                             = unit_point<dim, boxes>(own, x);
-      outside                        = distance_outside(xi);
-      if (outside <= tolerance)
+      const GridCell<dim> &own = grid.cells[i];
+      xi                       = unit_point<dim, boxes>(own, x);
+      outside                  = distance_outside(xi);
+      if (outside <= face_tolerance)
         return &own;
       // On boxes, the side x lies on names the likely cell.
       if (boxes)
@@ -70,7 +74,7 @@ namespace dealmpm
           if (guess != nullptr)
             {
               const Point<dim> candidate = unit_point<dim, boxes>(*guess, x);
-              if (distance_outside(candidate) <= tolerance)
+              if (distance_outside(candidate) <= face_tolerance)
                 {
                   xi      = candidate;
                   outside = 0;
@@ -91,7 +95,7 @@ namespace dealmpm
               best    = c;
               xi      = candidate;
               outside = d;
-              if (d <= tolerance)
+              if (d <= face_tolerance)
                 break;
             }
         }
@@ -181,6 +185,65 @@ namespace dealmpm
     }
 
     /**
+     * One domain's sums on the 4^dim lattice around its cell: of
+     * N_v(x_c) / 2^dim (N) and of N_v(x_c) R^{-T} s_c / 2^dim (G) over its
+     * corners c, by lattice node. A corner's 2^dim values are rows of two
+     * along x (products of its 1D factors), so each is added as one vector
+     * to a row of four nodes: no per-node bookkeeping. Raw arrays: deal.II's
+     * tensors zero themselves when made, and a row is only zeroed when a
+     * corner first reaches it.
+     */
+    template <int dim>
+    struct LatticeSums
+    {
+      static constexpr unsigned int n_nodes   = Utilities::pow(4, dim);
+      static constexpr unsigned int n_corners = GridCell<dim>::n_vertices;
+      // The lattice nodes of a cell, relative to its vertex 0.
+      static constexpr std::uint64_t cell_nodes = dim == 2 ? 0x33 : 0x330033;
+
+      /** The corner in the cell whose vertex 0 is lattice node @p base, at
+       * 1D factors @p f (f[d] = {1 - xi_d, xi_d}), with @p g its
+       * R^{-T} s_c / 2^dim. */
+      DEAL_II_ALWAYS_INLINE void
+      add_corner(const unsigned int base,
+                 const double (&f)[dim][2],
+                 const Tensor<1, dim> &g)
+      {
+        const Lanes2 f_x = {f[0][0], f[0][1]};
+        for (unsigned int r = 0; r < n_corners / 2; ++r)
+          {
+            const unsigned int b = r & 1u, n = base + 4 * b + 16 * (r >> 1);
+            // Products in q1_values' order: (f_0 f_1) f_2.
+            Lanes2 w = f_x * f[1][b];
+            if constexpr (dim == 3)
+              w = w * f[2][r >> 1];
+            // 1 / n_corners is a power of two: multiplying is dividing.
+            store_lanes(N + n,
+                        load_lanes<Lanes2>(N + n) + w * (1. / n_corners));
+            for (unsigned int d = 0; d < dim; ++d)
+              store_lanes(G[d] + n, load_lanes<Lanes2>(G[d] + n) + w * g[d]);
+          }
+        nodes |= cell_nodes << base;
+      }
+
+      DEAL_II_ALWAYS_INLINE void
+      clear()
+      {
+        const Lanes2 zero = {0., 0.};
+        for (unsigned int n = 0; n < n_nodes; n += 2)
+          {
+            store_lanes(N + n, zero);
+            for (unsigned int d = 0; d < dim; ++d)
+              store_lanes(G[d] + n, zero);
+          }
+      }
+
+      double        N[n_nodes];
+      double        G[dim][n_nodes];
+      std::uint64_t nodes = 0; // bit n: node n has a corner's value
+    };
+
+    /**
      * Particle k's entries on the lattice @p block of its cell @p own (an
      * axis-aligned box): each corner's Q1 values in the lattice cell that
      * holds it, summed by lattice node, the nodes in lattice order. False
@@ -199,66 +262,53 @@ namespace dealmpm
                       Stencil<dim>         &stencil)
     {
       constexpr unsigned int n_corners = GridCell<dim>::n_vertices;
-      // Raw arrays: deal.II's tensors zero themselves when made, and each
-      // sum is only set where a corner's cell first touches its node.
-      double        N[Utilities::pow(4, dim)];
-      double        G[Utilities::pow(4, dim)][dim];
-      std::uint64_t touched = 0; // bit n: lattice node n has a sum
-      unsigned int  n_new   = 0; // bits set in touched
+      LatticeSums<dim>       sums;
+      sums.clear();
+#pragma GCC unroll 8
       for (unsigned int corner = 0; corner < n_corners; ++corner)
         {
           Tensor<1, dim> sign;
           for (unsigned int d = 0; d < dim; ++d)
             sign[d] = ((corner >> d) & 1u) ? 1. : -1.;
-          const Point<dim> x_c = x + R * sign;
-          Point<dim>       xi;
+          const Point<dim> x_c  = x + R * sign;
           unsigned int     base = 0; // the lattice node of its cell's vertex 0
           unsigned int     side = 0; // its cell's side index in the patch
+          double           f[dim][2];
           for (unsigned int d = 0, stride = 1; d < dim; ++d, stride *= 3)
             {
               const double t =
                 (x_c[d] - own.origin[d]) * own.inverse_jacobian[d][d];
-              if (!(t >= -1. && t < 2.))
+              if (!(t >= -1. && t <= 2.))
                 return false;
-              const int offset = t < 0. ? -1 : (t < 1. ? 0 : 1);
-              xi[d]            = t - offset;
+              // A corner on a face of its particle's cell (to round-off, as
+              // in locate()) counts as in that cell. A domain that fills
+              // part of its cell (at rest) then has only that cell's
+              // nodes, not the zero weights of a neighbour's as well, and
+              // at the grid's upper faces it needs no cell beyond them.
+              const int offset =
+                t < -face_tolerance ? -1 : (t <= 1. + face_tolerance ? 0 : 1);
+              const double xi = t - offset;
+              f[d][0]         = 1. - xi;
+              f[d][1]         = xi;
               base += (offset + 1) << (2 * d);
               side += (offset + 1) * stride;
             }
           if (!((present >> side) & 1u))
             return false;
-          double N_corner[n_corners];
-          q1_values<dim>(xi, N_corner, nullptr);
-          const Tensor<1, dim> g =
-            R_inverse_transpose * sign / double(n_corners);
-          for (unsigned int v = 0; v < n_corners; ++v)
-            {
-              unsigned int n = base;
-              for (unsigned int d = 0; d < dim; ++d)
-                n += ((v >> d) & 1u) << (2 * d);
-              if (!((touched >> n) & 1u))
-                {
-                  touched |= std::uint64_t(1) << n;
-                  ++n_new;
-                  N[n] = 0;
-                  for (unsigned int d = 0; d < dim; ++d)
-                    G[n][d] = 0;
-                }
-              // 1 / n_corners is a power of two: multiplying is dividing.
-              N[n] += N_corner[v] * (1. / n_corners);
-              for (unsigned int d = 0; d < dim; ++d)
-                G[n][d] += N_corner[v] * g[d];
-            }
+          sums.add_corner(base,
+                          f,
+                          R_inverse_transpose * sign / double(n_corners));
         }
       stencil.begin[k] = e;
-      make_room_for_entries(stencil, e + n_new);
-      for (; touched != 0; touched &= touched - 1, ++e)
+      make_room_for_entries(stencil, e + __builtin_popcountll(sums.nodes));
+      for (std::uint64_t nodes = sums.nodes; nodes != 0;
+           nodes &= nodes - 1, ++e)
         {
-          const unsigned int n = __builtin_ctzll(touched);
+          const unsigned int n = __builtin_ctzll(nodes);
           stencil.node[e]      = block[n];
-          stencil.N[e]         = N[n];
+          stencil.N[e]         = sums.N[n];
           for (unsigned int d = 0; d < dim; ++d)
-            stencil.grad_N[e][d] = G[n][d];
+            stencil.grad_N[e][d] = sums.G[d][n];
         }
       return true;
     }

@@ -123,12 +123,7 @@ namespace dealmpm
       setup(BackgroundGrid<dim> &grid) override
       {
         grid.find_neighbors();
-        // In 2D the lattice path costs 1,685 instructions per particle-step
-        // on the column instead of 1,932; in 3D it measured 6,078 against
-        // 5,829 (most domains' 8 corners share one cell, which the general
-        // path sums once), so 3D keeps the general path.
-        if (dim == 2)
-          lattice.setup(grid);
+        lattice.setup(grid);
         return "";
       }
 

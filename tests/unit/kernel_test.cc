@@ -471,3 +471,64 @@ TEST(Kernel, LatticePathEqualsGeneralPath)
       check_lattice_path<3>(kernel);
     }
 }
+
+namespace
+{
+  /**
+   * CPDI domains at rest that fill a part of their cell exactly (two
+   * particles per cell and direction: each domain is a quarter (2D) or an
+   * eighth (3D) of its cell, its corners on the cell's faces): only the
+   * 2^dim nodes of the particle's own cell carry weight, so the stencil
+   * lists those and no neighbour's nodes with zero weight, on the lattice
+   * path and on the general path alike. Cell sizes 1/5 and 1/3 are not
+   * binary fractions, so corners land on the faces only to round-off.
+   */
+  template <int dim>
+  void
+  check_cpdi_domains_in_their_cells(const bool with_lattice)
+  {
+    std::string scene = box_scene<dim>("CPDI", false);
+    // Cells of 1/5 by 1/3 (by 1/5): a refined corner would leave some
+    // cells without a lattice, so none is refined here.
+    const std::string cells = dim == 2 ? "5, 3" : "5, 3, 5";
+    scene.replace(scene.find(dim == 2 ? "5, 4" : "3, 4, 3"),
+                  cells.size(),
+                  cells);
+    auto               simulation = test::make_simulation<dim>(scene);
+    const auto        &grid       = simulation->background_grid();
+    ParticleSet<dim>  &particles  = simulation->particle_set();
+    LatticeBlocks<dim> lattice;
+    lattice.setup(grid);
+    Stencil<dim> stencil;
+    compute_cpdi_stencil(grid,
+                         particles,
+                         stencil,
+                         with_lattice ? &lattice : nullptr);
+    ASSERT_FALSE(stencil.failed) << stencil.failure;
+    ASSERT_EQ(stencil.n_particles(),
+              particles.handler.n_locally_owned_particles());
+    ASSERT_EQ(stencil.n_particles(), grid.cells.size() * (1u << dim));
+    for (std::size_t k = 0; k < stencil.n_particles(); ++k)
+      {
+        ASSERT_EQ(stencil.begin[k + 1] - stencil.begin[k], 1u << dim)
+          << "particle " << k;
+        double sum = 0;
+        for (unsigned int e = stencil.begin[k]; e < stencil.begin[k + 1]; ++e)
+          {
+            // The smallest weight of such a domain is (1/4)^dim.
+            EXPECT_GT(stencil.N[e], 0.9 / Utilities::pow(4, dim));
+            sum += stencil.N[e];
+          }
+        EXPECT_NEAR(sum, 1., 1e-13);
+      }
+  }
+} // namespace
+
+TEST(Kernel, CPDIDomainsAtRestUseOnlyTheirCellsNodes)
+{
+  for (const bool with_lattice : {true, false})
+    {
+      check_cpdi_domains_in_their_cells<2>(with_lattice);
+      check_cpdi_domains_in_their_cells<3>(with_lattice);
+    }
+}
