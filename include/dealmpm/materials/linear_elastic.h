@@ -40,9 +40,17 @@ namespace dealmpm
                   ArrayView<double>        internal) const override
     {
       const SymmetricTensor<2, dim> D = symmetrize(L);
-      const SymmetricTensor<2, dim> increment =
-        dt * (2. * lame.mu * D +
-              lame.lambda * trace(D) * unit_symmetric_tensor<dim>());
+      // dt (2 mu D + lambda tr(D) I) entry by entry (deal.II stores the
+      // diagonal first), without the products with I's zeros: the same
+      // numbers as the tensor expression.
+      const double            two_mu       = 2. * lame.mu;
+      const double            lambda_trace = lame.lambda * trace(D);
+      SymmetricTensor<2, dim> increment;
+      for (unsigned int i = 0; i < dim; ++i)
+        increment.access_raw_entry(i) =
+          dt * (two_mu * D.access_raw_entry(i) + lambda_trace);
+      for (unsigned int i = dim; i < D.n_independent_components; ++i)
+        increment.access_raw_entry(i) = dt * (two_mu * D.access_raw_entry(i));
       internal[0] += dt * determinant(F) * ((stress + 0.5 * increment) * D);
       stress += increment;
     }
