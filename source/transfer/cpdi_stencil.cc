@@ -238,8 +238,8 @@ namespace dealmpm
           }
       }
 
-      double        N[n_nodes];
-      double        G[dim][n_nodes];
+      alignas(64) double N[n_nodes];
+      alignas(64) double G[dim][n_nodes];
       std::uint64_t nodes = 0; // bit n: node n has a corner's value
     };
 
