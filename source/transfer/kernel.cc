@@ -123,6 +123,8 @@ namespace dealmpm
       setup(BackgroundGrid<dim> &grid) override
       {
         grid.find_neighbors();
+        // Uniform patches sum the corners' values on their lattice, by
+        // rows (cpdi_stencil.cc); other cells take the general path.
         lattice.setup(grid);
         return "";
       }
