@@ -189,9 +189,9 @@ namespace dealmpm
      * N_v(x_c) / 2^dim (N) and of N_v(x_c) R^{-T} s_c / 2^dim (G) over its
      * corners c, by lattice node. A corner's 2^dim values are rows of two
      * along x (products of its 1D factors), so each is added as one vector
-     * to a row of four nodes: no per-node bookkeeping. Raw arrays: deal.II's
-     * tensors zero themselves when made, and a row is only zeroed when a
-     * corner first reaches it.
+     * to a row of four nodes: no per-node bookkeeping. The sums are zeroed
+     * once per particle (clear()); the nodes some corner reached are a
+     * bit mask.
      */
     template <int dim>
     struct LatticeSums
