@@ -484,25 +484,10 @@ namespace dealmpm
            const double             dt,
            const Increment         &increment)
     {
-      // dt L and dF F written out, the sums over k in deal.II's order (the
-      // first product not added to zero): the same numbers as the tensor
-      // expressions, without their temporaries.
-      Tensor<2, dim> dt_L;
-      for (unsigned int i = 0; i < dim; ++i)
-        for (unsigned int j = 0; j < dim; ++j)
-          dt_L[i][j] = dt * L[i][j];
-      const Tensor<2, dim> dF  = increment(dt_L);
-      double *const        old = &props[FixedCore<dim>::deformation_gradient];
-      Tensor<2, dim>       F;
-      for (unsigned int i = 0; i < dim; ++i)
-        for (unsigned int j = 0; j < dim; ++j)
-          {
-            double sum = dF[i][0] * old[j];
-            for (unsigned int k = 1; k < dim; ++k)
-              sum += dF[i][k] * old[k * dim + j];
-            F[i][j] = sum;
-          }
-      write_tensor<dim>(old, F);
+      const Tensor<2, dim> F =
+        increment(dt * L) *
+        read_tensor<dim>(&props[FixedCore<dim>::deformation_gradient]);
+      write_tensor<dim>(&props[FixedCore<dim>::deformation_gradient], F);
       return F;
     }
 
