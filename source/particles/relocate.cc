@@ -15,6 +15,21 @@ namespace dealmpm
   {
     constexpr unsigned int none = numbers::invalid_unsigned_int;
 
+    /** On grids of boxes, the neighbour of grid.cells[i] on the side a
+     * particle at unit-cell coordinates @p xi_old in it left by (nullptr
+     * if there is none). */
+    template <int dim>
+    const GridCell<dim> *
+    side_guess(const BackgroundGrid<dim> &grid,
+               const unsigned int         i,
+               const Point<dim>          &xi_old)
+    {
+      unsigned int side = 0;
+      for (unsigned int d = 0, stride = 1; d < dim; ++d, stride *= 3)
+        side += stride * (xi_old[d] < 0 ? 0 : (xi_old[d] > 1 ? 2 : 1));
+      return grid.side_neighbor(i, side);
+    }
+
     /** The index in grid.cells of a locally owned cell that shares a vertex
      * with grid.cells[i] and holds @p x (its unit-cell coordinates go to
      * @p xi), or none: then @p x lies in another rank's cell, beyond the
@@ -41,10 +56,7 @@ namespace dealmpm
       };
       if (grid.has_side_neighbors())
         {
-          unsigned int side = 0;
-          for (unsigned int d = 0, stride = 1; d < dim; ++d, stride *= 3)
-            side += stride * (xi_old[d] < 0 ? 0 : (xi_old[d] > 1 ? 2 : 1));
-          const GridCell<dim> *guess = grid.side_neighbor(i, side);
+          const GridCell<dim> *guess = side_guess(grid, i, xi_old);
           if (holds(guess))
             return guess - begin;
         }
@@ -184,9 +196,40 @@ namespace dealmpm
             if (!leavers.recorded)
               finder.check(k, i);
           }
-      if (leavers.recorded)
-        for (std::size_t j = 0; j < leavers.position.size(); ++j)
+      if (!leavers.recorded)
+        return;
+      // The leavers' locations are spread over the pool (see
+      // prefetch_particles()), and the cells they enter over the grid's
+      // cells: ask for a location 16 checks ahead, and for the cell it
+      // likely enters 8 ahead (in the flowing column, check() stalled on
+      // that cell half its time).
+      const auto       &pool = finder.pool;
+      const auto       &grid = finder.grid;
+      const std::size_t n    = leavers.position.size();
+      for (std::size_t j = 0; j < n; ++j)
+        {
+          if (j + 16 < n)
+            __builtin_prefetch(
+              &pool.get_location(order.handles[leavers.position[j + 16]]));
+          if (j + 8 < n && grid.has_side_neighbors())
+            {
+              const unsigned int   i = leavers.cell[j + 8];
+              const GridCell<dim> *guess =
+                side_guess(grid,
+                           i,
+                           grid.cells[i].reference_point(pool.get_location(
+                             order.handles[leavers.position[j + 8]])));
+              if (guess != nullptr)
+                {
+                  const char *const bytes =
+                    reinterpret_cast<const char *>(guess);
+                  for (std::size_t b = 0; b < sizeof(GridCell<dim>); b += 64)
+                    __builtin_prefetch(bytes + b);
+                  __builtin_prefetch(bytes + sizeof(GridCell<dim>) - 1);
+                }
+            }
           finder.check(leavers.position[j], leavers.cell[j]);
+        }
     }
 
     /** The step's order after the moves: @p handles regrouped by
@@ -289,8 +332,14 @@ namespace dealmpm
     if (moves.empty())
       return true;
     auto &pool = handler.get_property_pool();
-    for (const auto &[position, xi] : moves)
-      pool.set_reference_location(now.handles[position], xi);
+    for (std::size_t j = 0; j < moves.size(); ++j)
+      {
+        if (j + 8 < moves.size())
+          __builtin_prefetch(
+            &pool.get_reference_location(now.handles[moves[j + 8].first]), 1);
+        pool.set_reference_location(now.handles[moves[j].first],
+                                    moves[j].second);
+      }
     regroup(order, pool, cell_of, now.handles, grid.cells.size());
     return true;
   }

@@ -185,6 +185,7 @@ namespace dealmpm
       built_for         = &grid;
       grid_generation   = grid.generation;
       valid             = true;
+      follows_pool      = true;
     }
 
     /** Whether the order describes @p grid's cells as they are now (a grid
@@ -209,15 +210,21 @@ namespace dealmpm
     adopt(std::vector<Handle>       &&grouped_handles,
           std::vector<unsigned int> &&grouped_begin)
     {
-      handles    = std::move(grouped_handles);
-      cell_begin = std::move(grouped_begin);
-      valid      = true;
+      handles      = std::move(grouped_handles);
+      cell_begin   = std::move(grouped_begin);
+      valid        = true;
+      follows_pool = false;
     }
 
     /** The particles of grid.cells[i] are handles[cell_begin[i]] to
      * handles[cell_begin[i + 1] - 1]. */
     std::vector<Handle>       handles;
     std::vector<unsigned int> cell_begin;
+    /** Whether the handles run through the pool about in its own order,
+     * as after rebuild() (deal.II's sort puts the pool in its cells'
+     * order); after adopt() they jump about, and the sweeps prefetch
+     * (prefetch_particles()). */
+    bool follows_pool = true;
 
   private:
     const BackgroundGrid<dim> *built_for       = nullptr;
