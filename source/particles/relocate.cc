@@ -178,6 +178,41 @@ namespace dealmpm
       }
     };
 
+    /** Before the check of leaver @p j: ask the cache for the location of
+     * leaver j + 16 and for the cell leaver j + 8 likely enters. The
+     * leavers' locations are spread over the pool (see
+     * prefetch_particles()) and the cells they enter over the grid's
+     * cells: in the flowing column, check() stalled on that cell half its
+     * time. */
+    template <int dim>
+    void
+    prefetch_for_check(const MoveFinder<dim>                    &finder,
+                       const typename ParticleSet<dim>::Leavers &leavers,
+                       const std::size_t                         j)
+    {
+      const auto       &pool    = finder.pool;
+      const auto       &grid    = finder.grid;
+      const auto       &handles = finder.order.handles;
+      const std::size_t n       = leavers.position.size();
+      if (j + 16 < n)
+        __builtin_prefetch(
+          &pool.get_location(handles[leavers.position[j + 16]]));
+      if (j + 8 >= n || !grid.has_side_neighbors())
+        return;
+      const unsigned int   i = leavers.cell[j + 8];
+      const GridCell<dim> *guess =
+        side_guess(grid,
+                   i,
+                   grid.cells[i].reference_point(
+                     pool.get_location(handles[leavers.position[j + 8]])));
+      if (guess == nullptr)
+        return;
+      const char *const bytes = reinterpret_cast<const char *>(guess);
+      for (std::size_t b = 0; b < sizeof(GridCell<dim>); b += 64)
+        __builtin_prefetch(bytes + b);
+      __builtin_prefetch(bytes + sizeof(GridCell<dim>) - 1);
+    }
+
     /** Every particle's cell in @p finder.cell_of, and the moves: of the
      * particles G2P saw leave (@p leavers, when it recorded them; every
      * other particle is inside its cell at the reference location G2P
@@ -198,36 +233,9 @@ namespace dealmpm
           }
       if (!leavers.recorded)
         return;
-      // The leavers' locations are spread over the pool (see
-      // prefetch_particles()), and the cells they enter over the grid's
-      // cells: ask for a location 16 checks ahead, and for the cell it
-      // likely enters 8 ahead (in the flowing column, check() stalled on
-      // that cell half its time).
-      const auto       &pool = finder.pool;
-      const auto       &grid = finder.grid;
-      const std::size_t n    = leavers.position.size();
-      for (std::size_t j = 0; j < n; ++j)
+      for (std::size_t j = 0; j < leavers.position.size(); ++j)
         {
-          if (j + 16 < n)
-            __builtin_prefetch(
-              &pool.get_location(order.handles[leavers.position[j + 16]]));
-          if (j + 8 < n && grid.has_side_neighbors())
-            {
-              const unsigned int   i = leavers.cell[j + 8];
-              const GridCell<dim> *guess =
-                side_guess(grid,
-                           i,
-                           grid.cells[i].reference_point(pool.get_location(
-                             order.handles[leavers.position[j + 8]])));
-              if (guess != nullptr)
-                {
-                  const char *const bytes =
-                    reinterpret_cast<const char *>(guess);
-                  for (std::size_t b = 0; b < sizeof(GridCell<dim>); b += 64)
-                    __builtin_prefetch(bytes + b);
-                  __builtin_prefetch(bytes + sizeof(GridCell<dim>) - 1);
-                }
-            }
+          prefetch_for_check(finder, leavers, j);
           finder.check(leavers.position[j], leavers.cell[j]);
         }
     }
