@@ -305,9 +305,11 @@ namespace dealmpm
     // left by more, the ranks relocate for sure: nothing to keep for a
     // cancel. On one rank the reduction is this rank's own, so round-off
     // alone never relocates: no plan to make and cancel.
-    const auto &leavers  = particles->leavers;
-    const bool  roundoff = leavers.recorded && !leavers.position.empty() &&
-                          Utilities::MPI::n_mpi_processes(comm) > 1;
+    const auto &leavers = particles->leavers;
+    const bool  roundoff =
+      leavers.recorded &&
+      !(leavers.position.empty() && leavers.moves.empty()) &&
+      Utilities::MPI::n_mpi_processes(comm) > 1;
     if (failed || !(left_cell || roundoff))
       return {};
     TimerOutput::Scope t(*computing_timer, "relocate");

@@ -6,6 +6,7 @@
 #include <dealmpm/particles/hold_at_walls.h>
 #include <dealmpm/particles/particle_set.h>
 
+#include <algorithm>
 #include <functional>
 #include <numeric>
 
@@ -90,17 +91,17 @@ namespace dealmpm
 
     /** Checks particles against their cells (see check()) and collects
      * the moves: each particle that left its cell, by its position in the
-     * step's order and its unit-cell coordinates in the new cell. */
+     * step's order, its old and new cell and its unit-cell coordinates in
+     * the new one. */
     template <int dim>
     struct MoveFinder
     {
-      const BackgroundGrid<dim>                        &grid;
-      const std::set<types::boundary_id>               &walls;
-      const CoreFields                                 &fields;
-      const ParticleOrder<dim>                         &order;
-      Particles::PropertyPool<dim>                     &pool;
-      std::vector<unsigned int>                        &cell_of;
-      std::vector<std::pair<unsigned int, Point<dim>>> &moves;
+      const BackgroundGrid<dim>                    &grid;
+      const std::set<types::boundary_id>           &walls;
+      const CoreFields                             &fields;
+      const ParticleOrder<dim>                     &order;
+      Particles::PropertyPool<dim>                 &pool;
+      std::vector<typename ParticleSet<dim>::Move> &moves;
       /** What check() changed in the pool, in order; not kept where the
        * plan cannot be cancelled. */
       std::vector<typename ParticleSet<dim>::PoolEdit> &edits;
@@ -143,7 +144,7 @@ namespace dealmpm
       /** Particle @p k of the order, listed in grid.cells[@p i]: one
        * outside that crossed a wall is put back on it; one (then) inside
        * gets its unit-cell coordinates (as deal.II's sort sets them), one
-       * outside a Move and its new cell in cell_of. found_all turns false
+       * outside a Move. found_all turns false
        * when a particle needs deal.II's sort (the rest are still held). */
       void
       check(const unsigned int k, const unsigned int i)
@@ -173,8 +174,7 @@ namespace dealmpm
         found_all = found_all && to_cell != none;
         if (!found_all)
           return;
-        cell_of[k] = to_cell;
-        moves.emplace_back(k, xi_new);
+        moves.push_back({k, i, to_cell, false, xi_new});
       }
     };
 
@@ -213,56 +213,103 @@ namespace dealmpm
       __builtin_prefetch(bytes + sizeof(GridCell<dim>) - 1);
     }
 
-    /** Every particle's cell in @p finder.cell_of, and the moves: of the
-     * particles G2P saw leave (@p leavers, when it recorded them; every
-     * other particle is inside its cell at the reference location G2P
-     * set), else of every particle. */
+    /** The moves, by position in the step's order: those G2P found itself
+     * (already in @p finder.moves) and those of the other particles it saw
+     * leave (@p leavers, when it
+     * recorded them; every other particle is inside its cell at the
+     * reference location G2P set), else of every particle. */
     template <int dim>
     void
     find_moves(MoveFinder<dim>                          &finder,
                const typename ParticleSet<dim>::Leavers &leavers)
     {
       const ParticleOrder<dim> &order = finder.order;
-      for (unsigned int i = 0; i < finder.grid.cells.size(); ++i)
-        for (unsigned int k = order.cell_begin[i]; k < order.cell_begin[i + 1];
-             ++k)
-          {
-            finder.cell_of[k] = i;
-            if (!leavers.recorded)
-              finder.check(k, i);
-          }
+      auto                     &moves = finder.moves;
       if (!leavers.recorded)
-        return;
+        {
+          for (unsigned int i = 0; i < finder.grid.cells.size(); ++i)
+            for (unsigned int k = order.cell_begin[i];
+                 k < order.cell_begin[i + 1];
+                 ++k)
+              finder.check(k, i);
+          return;
+        }
+      const std::size_t by_g2p = moves.size();
       for (std::size_t j = 0; j < leavers.position.size(); ++j)
         {
           prefetch_for_check(finder, leavers, j);
           finder.check(leavers.position[j], leavers.cell[j]);
         }
+      // Both G2P's and these are in the step's order (G2P records in it; a
+      // sweep of another kind might not: then sorted).
+      const auto by_position = [](const auto &a, const auto &b) {
+        return a.position < b.position;
+      };
+      std::inplace_merge(moves.begin(),
+                         moves.begin() + by_g2p,
+                         moves.end(),
+                         by_position);
+      if (!std::is_sorted(moves.begin(), moves.end(), by_position))
+        std::sort(moves.begin(), moves.end(), by_position);
     }
 
-    /** The step's order after the moves: @p handles regrouped by
-     * @p cell_of (a counting sort), each cell's by id. */
-    template <int dim>
+    /** The step's order after @p moves (by position in it), in
+     * @p spare's arrays (which then get the old ones): each cell's
+     * particles that stayed, in their order (by id), then those that
+     * entered it, and a cell that gained particles ordered by id again.
+     * Only the moves and the cells that gained are looked at twice: a
+     * particle that stayed is copied, and its id is not read. */
+    template <int dim, typename Spare>
     void
-    regroup(ParticleOrder<dim>                 &order,
-            const Particles::PropertyPool<dim> &pool,
-            const std::vector<unsigned int>    &cell_of,
-            const std::vector<unsigned int>    &handles,
-            const std::size_t                   n_cells)
+    regroup(ParticleOrder<dim>                                 &order,
+            const Particles::PropertyPool<dim>                 &pool,
+            const std::vector<typename ParticleSet<dim>::Move> &moves,
+            Spare                                              &spare)
     {
-      std::vector<unsigned int> begin(n_cells + 1, 0);
-      for (const unsigned int c : cell_of)
-        ++begin[c + 1];
-      std::partial_sum(begin.begin(), begin.end(), begin.begin());
-      std::vector<unsigned int> next(begin.begin(), begin.end() - 1);
-      std::vector<typename ParticleOrder<dim>::Handle> grouped(handles.size());
-      for (std::size_t k = 0; k < handles.size(); ++k)
-        grouped[next[cell_of[k]]++] = handles[k];
+      const std::vector<unsigned int> &old_begin = order.cell_begin;
+      const auto                      &old       = order.handles;
+      const std::size_t                n_cells   = old_begin.size() - 1;
+      // Each cell's new size: the old one, less those that left, plus
+      // those that entered; then the new cell_begin.
+      auto &begin = spare.cell_begin;
+      begin.resize(n_cells + 1);
+      begin[0] = 0;
       for (std::size_t i = 0; i < n_cells; ++i)
-        order_by_id(pool,
-                    grouped.begin() + begin[i],
-                    grouped.begin() + begin[i + 1]);
-      order.adopt(std::move(grouped), std::move(begin));
+        begin[i + 1] = old_begin[i + 1] - old_begin[i];
+      for (const auto &move : moves)
+        {
+          --begin[move.from + 1];
+          ++begin[move.to + 1];
+        }
+      std::partial_sum(begin.begin(), begin.end(), begin.begin());
+      // Those that stayed, in their order; filled[i]: where grid.cells[i]'s
+      // arrivals go.
+      auto &grouped = spare.handles;
+      auto &filled  = spare.filled;
+      grouped.resize(old.size());
+      filled.resize(n_cells);
+      auto next_move = moves.begin();
+      for (std::size_t i = 0; i < n_cells; ++i)
+        {
+          unsigned int out = begin[i];
+          for (unsigned int k = old_begin[i]; k < old_begin[i + 1]; ++k)
+            if (next_move != moves.end() && next_move->position == k)
+              ++next_move;
+            else
+              grouped[out++] = old[k];
+          filled[i] = out;
+        }
+      for (const auto &move : moves)
+        grouped[filled[move.to]++] = old[move.position];
+      for (const auto &move : moves)
+        if (filled[move.to] != none) // not ordered yet
+          {
+            order_by_id(pool,
+                        grouped.begin() + begin[move.to],
+                        grouped.begin() + begin[move.to + 1]);
+            filled[move.to] = none;
+          }
+      order.adopt(grouped, begin);
     }
   } // namespace
 
@@ -275,16 +322,16 @@ namespace dealmpm
   {
     grid.find_neighbors();
     const ParticleOrder<dim> &now = order_over(grid);
-    planned_cell_of.resize(now.handles.size());
     planned_edits.clear();
     planned_moves.clear();
+    if (leavers.recorded)
+      planned_moves.swap(leavers.moves);
     planned_may_cancel = may_cancel;
     MoveFinder<dim> finder{grid,
                            walls,
                            fields,
                            now,
                            handler.get_property_pool(),
-                           planned_cell_of,
                            planned_moves,
                            planned_edits,
                            may_cancel};
@@ -313,7 +360,6 @@ namespace dealmpm
       }
     planned_edits.clear();
     planned_moves.clear();
-    std::vector<unsigned int>().swap(planned_cell_of);
   }
 
   template <int dim>
@@ -323,13 +369,11 @@ namespace dealmpm
   {
     leavers.recorded = false;
     planned_edits.clear();
-    // The plan's memory goes with it (4 B a particle).
-    std::vector<unsigned int>                        cell_of;
-    std::vector<std::pair<unsigned int, Point<dim>>> moves;
-    cell_of.swap(planned_cell_of);
-    moves.swap(planned_moves);
+    // The plan's memory is kept for the next (32-40 B a move).
+    const std::vector<Move> &moves = planned_moves;
     if (everywhere == 2)
       {
+        planned_moves.clear();
         sort();
         return false;
       }
@@ -342,13 +386,16 @@ namespace dealmpm
     auto &pool = handler.get_property_pool();
     for (std::size_t j = 0; j < moves.size(); ++j)
       {
-        if (j + 8 < moves.size())
-          __builtin_prefetch(
-            &pool.get_reference_location(now.handles[moves[j + 8].first]), 1);
-        pool.set_reference_location(now.handles[moves[j].first],
-                                    moves[j].second);
+        if (j + 8 < moves.size() && !moves[j + 8].placed)
+          __builtin_prefetch(&pool.get_reference_location(
+                               now.handles[moves[j + 8].position]),
+                             1);
+        if (!moves[j].placed)
+          pool.set_reference_location(now.handles[moves[j].position],
+                                      moves[j].reference);
       }
-    regroup(order, pool, cell_of, now.handles, grid.cells.size());
+    regroup(order, pool, moves, spare);
+    planned_moves.clear();
     return true;
   }
 

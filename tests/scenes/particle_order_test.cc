@@ -33,7 +33,9 @@ namespace
   /** Visit the particles in the step's order and compare each with what
    * the handler says of it: its location and first property, and its cell
    * unless the handler's lists lag behind the order (relocate() moved
-   * particles since deal.II last sorted them). */
+   * particles since deal.II last sorted them). The order runs through the
+   * cells in the grid's order and through each cell's particles by id
+   * (the order of sums a run gives whether it relocated or sorted). */
   template <int dim>
   void
   expect_order_matches_handler(const BackgroundGrid<dim> &grid,
@@ -57,7 +59,9 @@ namespace
               particles.handler.n_locally_owned_particles());
 
     std::map<types::particle_index, unsigned int> visits;
+    std::size_t                                   n_seen        = 0;
     std::size_t                                   previous_cell = 0;
+    types::particle_index                         previous_id   = 0;
     unsigned int                                  wrong         = 0;
     const std::size_t n = for_each_particle_in_stencil_order(
       grid,
@@ -66,12 +70,15 @@ namespace
         const std::size_t cell = index_in_grid(grid, c);
         const auto        it   = handler_view.find(p.get_id());
         ++visits[p.get_id()];
-        wrong += it == handler_view.end() ||
-                 (!lags && it->second.cell != cell) ||
-                 it->second.x != p.get_location() ||
-                 it->second.mass != p.get_properties()[particles.fields.mass] ||
-                 cell < previous_cell;
+        wrong +=
+          it == handler_view.end() || (!lags && it->second.cell != cell) ||
+          it->second.x != p.get_location() ||
+          it->second.mass != p.get_properties()[particles.fields.mass] ||
+          cell < previous_cell ||
+          (n_seen > 0 && cell == previous_cell && p.get_id() <= previous_id);
         previous_cell = cell;
+        previous_id   = p.get_id();
+        ++n_seen;
       });
     EXPECT_EQ(n, handler_view.size());
     EXPECT_EQ(visits.size(), handler_view.size());
@@ -483,6 +490,66 @@ TEST(Relocation, NeighbourTablesMatchDealiiVertexToCellMap)
   neighbors_as_dealii<3>(slab);
   neighbors_as_dealii<2>(block);
   neighbors_as_dealii<3>(block);
+}
+
+namespace
+{
+  /** The moving block run by the step, its grid refined where x < 0.45
+   * (hanging nodes) with @p refine_half: after each step every particle
+   * must be where deal.II's sort would put it (its cell, its reference
+   * location to 1e-12), whether G2P put it into a neighbour itself or
+   * plan_relocation() did. The step's relocations follow each other for
+   * two steps, then deal.II sorts (update_handler()) and says where the
+   * particles are. */
+  template <int dim>
+  void
+  step_relocation_matches_sort(const bool refine_half)
+  {
+    SCOPED_TRACE(std::to_string(dim) + "D" +
+                 (refine_half ? ", hanging nodes" : ""));
+    auto simulation = moving_block<dim>();
+    if (refine_half)
+      simulation->change_grid([&](Triangulation<dim> &) {
+        for (const GridCell<dim> &c : simulation->background_grid().cells)
+          if (c.cell->center()[0] < 0.45)
+            c.cell->set_refine_flag();
+      });
+    const BackgroundGrid<dim> &grid      = simulation->background_grid();
+    ParticleSet<dim>          &particles = simulation->particle_set();
+    unsigned int               changed   = 0;
+    for (unsigned int step = 0; step < 12; ++step)
+      {
+        const Places<dim> before = places(grid, particles, false);
+        simulation->advance(simulation->time_step());
+        const Places<dim> after = places(grid, particles, false);
+        for (const auto &[id, place] : after)
+          {
+            const auto it = before.find(id);
+            changed += it != before.end() &&
+                       std::get<0>(it->second) != std::get<0>(place);
+          }
+        expect_particles_in_their_cells(grid, particles);
+        expect_order_matches_handler(grid, particles);
+        if (step % 3 == 2)
+          {
+            particles.update_handler(grid);
+            expect_same_places(after, places(grid, particles, true));
+          }
+      }
+    // Particles did change cells (a few per step).
+    EXPECT_GT(Utilities::MPI::sum(changed, MPI_COMM_WORLD), 20u);
+  }
+} // namespace
+
+// The step's own relocation (G2P puts a particle into the neighbour it
+// entered, plan_relocation() the rest) against deal.II's sort, in 2D and
+// 3D, next to hanging nodes too.
+TEST(Relocation, StepPutsParticlesWhereDealiiSortDoes)
+{
+  step_relocation_matches_sort<2>(false);
+  step_relocation_matches_sort<3>(false);
+  step_relocation_matches_sort<2>(true);
+  step_relocation_matches_sort<3>(true);
 }
 
 // The step plans a relocation before its reduction and cancels it where no

@@ -205,13 +205,15 @@ namespace dealmpm
 
     /** Take @p grouped_handles, grouped by cell as handles is, with
      * @p grouped_begin as cell_begin, as the order over the same grid:
-     * after particles moved between its cells without deal.II's sort. */
+     * after particles moved between its cells without deal.II's sort.
+     * The arguments get the old handles and cell_begin, for the caller
+     * to reuse (a relocation every few steps then allocates nothing). */
     void
-    adopt(std::vector<Handle>       &&grouped_handles,
-          std::vector<unsigned int> &&grouped_begin)
+    adopt(std::vector<Handle>       &grouped_handles,
+          std::vector<unsigned int> &grouped_begin)
     {
-      handles      = std::move(grouped_handles);
-      cell_begin   = std::move(grouped_begin);
+      handles.swap(grouped_handles);
+      cell_begin.swap(grouped_begin);
       valid        = true;
       follows_pool = false;
     }

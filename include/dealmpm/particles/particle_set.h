@@ -126,15 +126,28 @@ namespace dealmpm
      */
     Particles::ParticleHandler<dim> handler;
 
+    /** A particle that left its cell: its position in the step's order,
+     * the indices in grid.cells of the cell it left and of the one it
+     * entered, its unit-cell coordinates there, and whether its reference
+     * location is set to them already (by G2P). */
+    struct Move
+    {
+      unsigned int position, from, to;
+      bool         placed;
+      Point<dim>   reference;
+    };
+
     /** The particles the step's move took out of their cells, recorded by
      * G2P for plan_relocation(), which then checks only these: their positions
      * in the step's order and the indices in grid.cells of the cells they
-     * left. Trusted only while `recorded`, which relocation, sort() and
-     * changed() clear. */
+     * left; and those G2P put into a neighbour itself (moves, by position,
+     * see g2p_sweep::enter_side_neighbor()). Trusted only while
+     * `recorded`, which relocation, sort() and changed() clear. */
     struct Leavers
     {
       std::vector<unsigned int> position;
       std::vector<unsigned int> cell;
+      std::vector<Move>         moves;
       bool                      recorded = false;
 
       void
@@ -142,6 +155,7 @@ namespace dealmpm
       {
         position.clear();
         cell.clear();
+        moves.clear();
         recorded = true;
       }
     } leavers;
@@ -154,6 +168,7 @@ namespace dealmpm
     void
     sort()
     {
+      spare = {}; // the relocations' arrays: the sort has its own peak
       handler.sort_particles_into_subdomains_and_cells();
       leavers.recorded    = false;
       handler_lags        = false;
@@ -165,9 +180,9 @@ namespace dealmpm
      * Put every particle the step moved out of its cell into the cell that
      * holds it now, after the step and before the next. When each such
      * particle is in a locally owned cell sharing a vertex with its old
-     * one, only the step's order changes: a counting sort of handles by
-     * cell (4 B a particle), with the moved particles' reference locations
-     * set; their data stay where they are, and deal.II's per-cell lists
+     * one, only the step's order changes: the moved particles' handles go
+     * to their new cells (regroup()), their reference locations set;
+     * their data stay where they are, and deal.II's per-cell lists
      * lag until update_handler(). This replaces deal.II's sort, which
      * locates every particle again, copies the whole property pool and
      * cost more than a 2D step. When a particle on any rank went further
@@ -300,15 +315,21 @@ namespace dealmpm
     }
 
     mutable ParticleOrder<dim> order;
-    /** What plan_relocation() found for finish_relocation(): each
-     * particle's cell index in the step's order, and the moved particles'
-     * positions in the order with their unit-cell coordinates there. */
-    std::vector<unsigned int>                        planned_cell_of;
-    std::vector<std::pair<unsigned int, Point<dim>>> planned_moves;
-    std::vector<PoolEdit>                            planned_edits;
-    bool                                             planned_may_cancel = true;
-    bool                                             handler_lags       = false;
-    mutable bool reference_from_sort                                    = false;
+    /** What plan_relocation() found for finish_relocation(): the moves,
+     * by position in the step's order. */
+    std::vector<Move>     planned_moves;
+    std::vector<PoolEdit> planned_edits;
+    bool                  planned_may_cancel = true;
+    bool                  handler_lags       = false;
+    /** The order's arrays before the last relocation, reused by the next
+     * (4 B a particle and 8 B a cell; the peak is the same without them,
+     * as a relocation needs them while it regroups); sort() frees them. */
+    struct
+    {
+      std::vector<typename ParticleOrder<dim>::Handle> handles;
+      std::vector<unsigned int>                        cell_begin, filled;
+    } spare;
+    mutable bool reference_from_sort = false;
   };
 
   /** Read and write small tensors from a particle's property array. */

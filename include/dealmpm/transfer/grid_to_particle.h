@@ -1,5 +1,7 @@
 #pragma once
 
+#include <deal.II/base/geometry_info.h>
+
 #include <dealmpm/base/lanes.h>
 #include <dealmpm/base/smallest_stretch.h>
 #include <dealmpm/grid/background_grid.h>
@@ -17,6 +19,7 @@
 #include <dealmpm/transfer/velocity_arrays.h>
 
 #include <algorithm>
+#include <functional>
 #include <type_traits>
 #include <vector>
 
@@ -450,8 +453,67 @@ namespace dealmpm
       return outside;
     }
 
+    /** A particle at @p k in the step's order that left the box
+     * grid.cells[@p i] by more than round-off along each axis it left
+     * by, each such face with a cell behind it (so no wall holds it): if
+     * the owned cell on that side holds it, it is put there here, where
+     * its data are at hand (its reference location set, a Move in
+     * @p moves), and true; else false, and plan_relocation() looks at it.
+     * It left by more than round-off, so the ranks relocate for sure and
+     * nothing needs undoing (cancel_relocation()). The cell is the one
+     * plan_relocation() tries first (side_guess()), and it takes the same
+     * steps, so the answers are the same. */
+    template <int dim, typename Particle, typename Move>
+    inline bool
+    enter_side_neighbor(const BackgroundGrid<dim> &grid,
+                        const std::size_t          k,
+                        const unsigned int         i,
+                        Particle                  &p,
+                        std::vector<Move>         &moves)
+    {
+      if (!grid.has_side_neighbors())
+        return false;
+      const Point<dim>       xi        = p.get_reference_location();
+      constexpr double       tolerance = 1e-12; // as move()'s
+      constexpr unsigned int centre    = (Utilities::pow(3, dim) - 1) / 2;
+      unsigned int           side      = 0;
+      for (unsigned int d = 0, stride = 1; d < dim; ++d, stride *= 3)
+        if (xi[d] < -tolerance)
+          {
+            if (grid.side_neighbor(i, centre - stride) == nullptr)
+              return false;
+          }
+        else if (xi[d] > 1. + tolerance)
+          {
+            if (grid.side_neighbor(i, centre + stride) == nullptr)
+              return false;
+            side += 2 * stride;
+          }
+        else if (xi[d] < 0. || xi[d] > 1.)
+          return false; // by round-off along this axis
+        else
+          side += stride;
+      const GridCell<dim> *const             to = grid.side_neighbor(i, side);
+      const GridCell<dim> *const             owned = grid.cells.data();
+      const std::less<const GridCell<dim> *> before;
+      if (to == nullptr || before(to, owned) ||
+          !before(to, owned + grid.cells.size()))
+        return false; // a ghost's: another rank's
+      const Point<dim> xi_new = to->reference_point(p.get_location());
+      if (!GeometryInfo<dim>::is_inside_unit_cell(xi_new))
+        return false;
+      p.set_reference_location(xi_new);
+      moves.push_back({static_cast<unsigned int>(k),
+                       i,
+                       static_cast<unsigned int>(to - owned),
+                       true,
+                       xi_new});
+      return true;
+    }
+
     /** move(), and the particle's position @p k in the step's order and
-     * its old cell in @p leavers if it is outside that cell. */
+     * its old cell in @p leavers if it is outside that cell (or, where
+     * enter_side_neighbor() put it into a neighbour, its Move). */
     template <bool set_reference,
               bool box,
               int  dim,
@@ -470,8 +532,12 @@ namespace dealmpm
     {
       if (move<set_reference, box>(p, props, c, x_p, dx, left_cell))
         {
+          const unsigned int i = index_in_grid(grid, c);
+          if constexpr (set_reference && box)
+            if (enter_side_neighbor(grid, k, i, p, leavers.moves))
+              return;
           leavers.position.push_back(k);
-          leavers.cell.push_back(index_in_grid(grid, c));
+          leavers.cell.push_back(i);
         }
     }
 
