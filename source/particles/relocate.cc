@@ -311,6 +311,20 @@ namespace dealmpm
           }
       order.adopt(grouped, begin);
     }
+
+    /** The plan's moves are done with: their memory goes back to G2P's
+     * list (@p g2p), which fills it in the next step, and only one such
+     * list is kept (32-40 B a move). */
+    template <typename Move>
+    void
+    hand_back(std::vector<Move> &planned, std::vector<Move> &g2p)
+    {
+      planned.clear();
+      g2p.clear();
+      if (planned.capacity() > g2p.capacity())
+        g2p.swap(planned);
+      std::vector<Move>().swap(planned);
+    }
   } // namespace
 
   template <int dim>
@@ -359,7 +373,7 @@ namespace dealmpm
                     pool.get_properties(edit->handle).begin());
       }
     planned_edits.clear();
-    planned_moves.clear();
+    hand_back(planned_moves, leavers.moves);
   }
 
   template <int dim>
@@ -369,11 +383,10 @@ namespace dealmpm
   {
     leavers.recorded = false;
     planned_edits.clear();
-    // The plan's memory is kept for the next (32-40 B a move).
     const std::vector<Move> &moves = planned_moves;
     if (everywhere == 2)
       {
-        planned_moves.clear();
+        hand_back(planned_moves, leavers.moves);
         sort();
         return false;
       }
@@ -382,7 +395,10 @@ namespace dealmpm
     const ParticleOrder<dim> &now = order_over(grid);
     handler_lags                  = handler_lags || everywhere == 1;
     if (moves.empty())
-      return true;
+      {
+        hand_back(planned_moves, leavers.moves);
+        return true;
+      }
     auto &pool = handler.get_property_pool();
     for (std::size_t j = 0; j < moves.size(); ++j)
       {
@@ -395,7 +411,7 @@ namespace dealmpm
                                       moves[j].reference);
       }
     regroup(order, pool, moves, spare);
-    planned_moves.clear();
+    hand_back(planned_moves, leavers.moves);
     return true;
   }
 
