@@ -205,6 +205,12 @@ namespace dealmpm
                                                                  particles);
       for (std::size_t i = 0; i < grid.cells.size(); ++i)
         {
+          // Asked first, as G2P does: the cell's data would be read for
+          // nothing where it has no particles (the air above a body). The
+          // tall grid of the flowing column, two thirds air, spent a fifth
+          // of its P2G waiting for those reads (perf).
+          if (by_cell.empty(i))
+            continue;
           const GridCell<dim> &c = grid.cells[i];
           if (c.first_weight == numbers::invalid_unsigned_int &&
               (!affine || LinearWeights<dim>::is_box(c)))
