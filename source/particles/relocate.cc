@@ -3,11 +3,11 @@
 // deal.II's sort of the whole pool (see doc/lean-step.md).
 #include <deal.II/base/geometry_info.h>
 
+#include <dealmpm/grid/side_neighbors.h>
 #include <dealmpm/particles/hold_at_walls.h>
 #include <dealmpm/particles/particle_set.h>
 
 #include <algorithm>
-#include <functional>
 #include <numeric>
 
 namespace dealmpm
@@ -15,21 +15,6 @@ namespace dealmpm
   namespace
   {
     constexpr unsigned int none = numbers::invalid_unsigned_int;
-
-    /** On grids of boxes, the neighbour of grid.cells[i] on the side a
-     * particle at unit-cell coordinates @p xi_old in it left by (nullptr
-     * if there is none). */
-    template <int dim>
-    const GridCell<dim> *
-    side_guess(const BackgroundGrid<dim> &grid,
-               const unsigned int         i,
-               const Point<dim>          &xi_old)
-    {
-      unsigned int side = 0;
-      for (unsigned int d = 0, stride = 1; d < dim; ++d, stride *= 3)
-        side += stride * (xi_old[d] < 0 ? 0 : (xi_old[d] > 1 ? 2 : 1));
-      return grid.side_neighbor(i, side);
-    }
 
     /** The index in grid.cells of a locally owned cell that shares a vertex
      * with grid.cells[i] and holds @p x (its unit-cell coordinates go to
@@ -45,48 +30,23 @@ namespace dealmpm
                            Point<dim>                &xi)
     {
       // Owned cells only: a ghost cell's particles are another rank's.
-      const std::less<const GridCell<dim> *> before;
-      const GridCell<dim> *const             begin = grid.cells.data();
-      const GridCell<dim> *const             end   = begin + grid.cells.size();
-      const auto holds = [&](const GridCell<dim> *c) {
-        if (c == nullptr || c == &grid.cells[i] || before(c, begin) ||
-            !before(c, end))
+      const auto holds = [&](const unsigned int k) {
+        if (k == i || k >= grid.cells.size())
           return false;
-        xi = c->reference_point(x);
+        xi = grid.cells[k].reference_point(x);
         return GeometryInfo<dim>::is_inside_unit_cell(xi);
       };
       if (grid.has_side_neighbors())
         {
-          const GridCell<dim> *guess = side_guess(grid, i, xi_old);
-          if (holds(guess))
-            return guess - begin;
+          const GridCell<dim> *guess =
+            side_neighbors::owned_at(grid, i, side_neighbors::side_of(xi_old));
+          if (guess != nullptr && holds(guess - grid.cells.data()))
+            return guess - grid.cells.data();
         }
       for (const unsigned int k : grid.neighbors_of(i))
-        if (holds(&grid.local_cell(k)))
+        if (holds(k))
           return k;
       return none;
-    }
-
-    /** Whether @p xi, outside grid.cells[i], may lie beyond a boundary
-     * face of that cell, where hold_at_walls() has to look: on grids of
-     * boxes only if no cell lies across a face it is beyond (a face
-     * neighbour is at side sum_d 3^d of side_neighbor(), less or plus
-     * 3^d along the face's axis); elsewhere always. Most particles that
-     * leave a cell enter a neighbour, and this costs less than the look. */
-    template <int dim>
-    bool
-    may_be_beyond_a_wall(const BackgroundGrid<dim> &grid,
-                         const unsigned int         i,
-                         const Point<dim>          &xi)
-    {
-      if (!grid.has_side_neighbors())
-        return true;
-      constexpr unsigned int centre = (Utilities::pow(3, dim) - 1) / 2;
-      for (unsigned int d = 0, stride = 1; d < dim; ++d, stride *= 3)
-        if ((xi[d] < 0 && grid.side_neighbor(i, centre - stride) == nullptr) ||
-            (xi[d] > 1 && grid.side_neighbor(i, centre + stride) == nullptr))
-          return true;
-      return false;
     }
 
     /** Checks particles against their cells (see check()) and collects
@@ -153,7 +113,8 @@ namespace dealmpm
         const Point<dim> &x      = pool.get_location(handle);
         Point<dim>        xi     = grid.cells[i].reference_point(x);
         bool              inside = GeometryInfo<dim>::is_inside_unit_cell(xi);
-        if (!inside && !walls.empty() && may_be_beyond_a_wall(grid, i, xi) &&
+        if (!inside && !walls.empty() &&
+            side_neighbors::may_be_beyond_a_wall(grid, i, xi) &&
             hold(handle, i, xi))
           {
             ++n_held; // x (a reference into the pool) is on the wall now
@@ -199,12 +160,11 @@ namespace dealmpm
           &pool.get_location(handles[leavers.position[j + 16]]));
       if (j + 8 >= n || !grid.has_side_neighbors())
         return;
-      const unsigned int   i = leavers.cell[j + 8];
-      const GridCell<dim> *guess =
-        side_guess(grid,
-                   i,
-                   grid.cells[i].reference_point(
-                     pool.get_location(handles[leavers.position[j + 8]])));
+      const unsigned int   i     = leavers.cell[j + 8];
+      const GridCell<dim> *guess = grid.side_neighbor(
+        i,
+        side_neighbors::side_of(grid.cells[i].reference_point(
+          pool.get_location(handles[leavers.position[j + 8]]))));
       if (guess == nullptr)
         return;
       const char *const bytes = reinterpret_cast<const char *>(guess);

@@ -7,6 +7,7 @@
 #include <dealmpm/grid/background_grid.h>
 #include <dealmpm/grid/nodal_field_set.h>
 #include <dealmpm/grid/nodal_fields.h>
+#include <dealmpm/grid/side_neighbors.h>
 #include <dealmpm/particles/particle_set.h>
 #include <dealmpm/transfer/affine_transfer.h>
 #include <dealmpm/transfer/box_q1.h>
@@ -461,8 +462,8 @@ namespace dealmpm
      * @p moves), and true; else false, and plan_relocation() looks at it.
      * It left by more than round-off, so the ranks relocate for sure and
      * nothing needs undoing (cancel_relocation()). The cell is the one
-     * plan_relocation() tries first (side_guess()), and it takes the same
-     * steps, so the answers are the same. */
+     * plan_relocation() tries first, found by the same steps
+     * (side_neighbors.h), so the answers are the same. */
     template <int dim, typename Particle, typename Move>
     inline bool
     enter_side_neighbor(const BackgroundGrid<dim> &grid,
@@ -473,39 +474,20 @@ namespace dealmpm
     {
       if (!grid.has_side_neighbors())
         return false;
-      const Point<dim>       xi        = p.get_reference_location();
-      constexpr double       tolerance = 1e-12; // as move()'s
-      constexpr unsigned int centre    = (Utilities::pow(3, dim) - 1) / 2;
-      unsigned int           side      = 0;
-      for (unsigned int d = 0, stride = 1; d < dim; ++d, stride *= 3)
-        if (xi[d] < -tolerance)
-          {
-            if (grid.side_neighbor(i, centre - stride) == nullptr)
-              return false;
-          }
-        else if (xi[d] > 1. + tolerance)
-          {
-            if (grid.side_neighbor(i, centre + stride) == nullptr)
-              return false;
-            side += 2 * stride;
-          }
-        else if (xi[d] < 0. || xi[d] > 1.)
-          return false; // by round-off along this axis
-        else
-          side += stride;
-      const GridCell<dim> *const             to = grid.side_neighbor(i, side);
-      const GridCell<dim> *const             owned = grid.cells.data();
-      const std::less<const GridCell<dim> *> before;
-      if (to == nullptr || before(to, owned) ||
-          !before(to, owned + grid.cells.size()))
-        return false; // a ghost's: another rank's
+      const unsigned int side =
+        side_neighbors::clean_exit_side(grid, i, p.get_reference_location());
+      if (side == numbers::invalid_unsigned_int)
+        return false; // relocation or the walls decide
+      const GridCell<dim> *const to = side_neighbors::owned_at(grid, i, side);
+      if (to == nullptr)
+        return false; // none, or a ghost's: another rank's
       const Point<dim> xi_new = to->reference_point(p.get_location());
       if (!GeometryInfo<dim>::is_inside_unit_cell(xi_new))
         return false;
       p.set_reference_location(xi_new);
       moves.push_back({static_cast<unsigned int>(k),
                        i,
-                       static_cast<unsigned int>(to - owned),
+                       static_cast<unsigned int>(to - grid.cells.data()),
                        true,
                        xi_new});
       return true;
