@@ -200,8 +200,8 @@ namespace dealmpm
           prefetch_for_check(finder, leavers, j);
           finder.check(leavers.position[j], leavers.cell[j]);
         }
-      // Both G2P's and these are in the step's order (G2P records in it; a
-      // sweep of another kind might not: then sorted).
+      // Both G2P's and these are in the step's order: G2P's sweep and the
+      // leavers it records visit the particles in it.
       const auto by_position = [](const auto &a, const auto &b) {
         return a.position < b.position;
       };
@@ -209,8 +209,8 @@ namespace dealmpm
                          moves.begin() + by_g2p,
                          moves.end(),
                          by_position);
-      if (!std::is_sorted(moves.begin(), moves.end(), by_position))
-        std::sort(moves.begin(), moves.end(), by_position);
+      Assert(std::is_sorted(moves.begin(), moves.end(), by_position),
+             ExcMessage("The moves G2P found are not in the step's order."));
     }
 
     /** The step's order after @p moves (by position in it), in
