@@ -160,17 +160,11 @@ namespace dealmpm
           &pool.get_location(handles[leavers.position[j + 16]]));
       if (j + 8 >= n || !grid.has_side_neighbors())
         return;
-      const unsigned int   i     = leavers.cell[j + 8];
-      const GridCell<dim> *guess = grid.side_neighbor(
+      const unsigned int i = leavers.cell[j + 8];
+      side_neighbors::prefetch_cell(grid.side_neighbor(
         i,
         side_neighbors::side_of(grid.cells[i].reference_point(
-          pool.get_location(handles[leavers.position[j + 8]]))));
-      if (guess == nullptr)
-        return;
-      const char *const bytes = reinterpret_cast<const char *>(guess);
-      for (std::size_t b = 0; b < sizeof(GridCell<dim>); b += 64)
-        __builtin_prefetch(bytes + b);
-      __builtin_prefetch(bytes + sizeof(GridCell<dim>) - 1);
+          pool.get_location(handles[leavers.position[j + 8]])))));
     }
 
     /** The moves, by position in the step's order: those G2P found itself

@@ -10,6 +10,7 @@
 
 #include <dealmpm/grid/background_grid.h>
 
+#include <cstddef>
 #include <functional>
 
 namespace dealmpm
@@ -105,6 +106,22 @@ namespace dealmpm
             (xi[d] > 1 && grid.side_neighbor(i, centre + stride) == nullptr))
           return true;
       return false;
+    }
+
+    /** Ask the cache for the whole of @p cell (every 64-byte line, and
+     * the last byte in case it straddles one more), if there is one: the
+     * flowing column's G2P and relocation stalled on reading the cell a
+     * leaver enters. */
+    template <int dim>
+    inline void
+    prefetch_cell(const GridCell<dim> *const cell)
+    {
+      if (cell == nullptr)
+        return;
+      const char *const bytes = reinterpret_cast<const char *>(cell);
+      for (std::size_t b = 0; b < sizeof(GridCell<dim>); b += 64)
+        __builtin_prefetch(bytes + b);
+      __builtin_prefetch(bytes + sizeof(GridCell<dim>) - 1);
     }
   } // namespace side_neighbors
 } // namespace dealmpm

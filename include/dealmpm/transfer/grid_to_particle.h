@@ -485,13 +485,7 @@ namespace dealmpm
       // for the cell they would enter (G2P of the flowing column stalled
       // on reading it, to->affine below).
       if (i + 1 < grid.cells.size())
-        if (const GridCell<dim> *const ahead = grid.side_neighbor(i + 1, side))
-          {
-            const char *const bytes = reinterpret_cast<const char *>(ahead);
-            for (std::size_t b = 0; b < sizeof(GridCell<dim>); b += 64)
-              __builtin_prefetch(bytes + b);
-            __builtin_prefetch(bytes + sizeof(GridCell<dim>) - 1);
-          }
+        side_neighbors::prefetch_cell(grid.side_neighbor(i + 1, side));
       const Point<dim> xi_new = to->reference_point(p.get_location());
       if (!GeometryInfo<dim>::is_inside_unit_cell(xi_new))
         return false;
