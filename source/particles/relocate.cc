@@ -209,10 +209,10 @@ namespace dealmpm
 
     /** The step's order after @p moves (by position in it), in
      * @p spare's arrays (which then get the old ones): each cell's
-     * particles that stayed, in their order (by id), then those that
-     * entered it, and a cell that gained particles ordered by id again.
-     * Only the moves and the cells that gained are looked at twice: a
-     * particle that stayed is copied, and its id is not read. */
+     * particles that stayed, in their order (by id), and those that
+     * entered it put among them by id (as order_by_id() would order the
+     * cell). A particle that stayed is copied, and its id is read only
+     * where one enters its cell after it. */
     template <int dim, typename Spare>
     void
     regroup(ParticleOrder<dim>                                 &order,
@@ -253,16 +253,18 @@ namespace dealmpm
               grouped[out++] = old[k];
           filled[i] = out;
         }
+      // Each that entered put among its cell's particles by id as it is
+      // added, its id read once: those before it are in id order already,
+      // and it is compared only with those it passes and one more.
       for (const auto &move : moves)
-        grouped[filled[move.to]++] = old[move.position];
-      for (const auto &move : moves)
-        if (filled[move.to] != none) // not ordered yet
-          {
-            order_by_id(pool,
-                        grouped.begin() + begin[move.to],
-                        grouped.begin() + begin[move.to + 1]);
-            filled[move.to] = none;
-          }
+        {
+          const auto   handle = old[move.position];
+          const auto   id     = pool.get_id(handle);
+          unsigned int k      = filled[move.to]++;
+          for (; k > begin[move.to] && id < pool.get_id(grouped[k - 1]); --k)
+            grouped[k] = grouped[k - 1];
+          grouped[k] = handle;
+        }
       order.adopt(grouped, begin);
     }
 
