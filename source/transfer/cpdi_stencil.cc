@@ -4,6 +4,7 @@
 #include <dealmpm/transfer/stencil_order.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 
 #include "node_accumulator.h"
@@ -245,11 +246,55 @@ namespace dealmpm
       std::uint64_t nodes = 0; // bit n: node n has a corner's value
     };
 
+    /** A point of dim coordinates as one vector (3D: a fourth lane, 0),
+     * and the mask a comparison of two gives. */
+    template <int dim>
+    struct PointLanes;
+    template <>
+    struct PointLanes<2>
+    {
+      using type = Lanes2;
+      using mask = long long __attribute__((vector_size(16)));
+    };
+    template <>
+    struct PointLanes<3>
+    {
+      using type = Lanes4;
+      using mask = long long __attribute__((vector_size(32)));
+    };
+
+    /** The lanes of @p v (3D: the fourth 0). */
+    template <int dim, typename Vector>
+    DEAL_II_ALWAYS_INLINE inline typename PointLanes<dim>::type
+    lanes_of(const Vector &v)
+    {
+      typename PointLanes<dim>::type lanes = {};
+      for (unsigned int d = 0; d < dim; ++d)
+        lanes[d] = v[d];
+      return lanes;
+    }
+
+    /** The lattice node of vertex 0 of each cell of a patch, by the
+     * cell's side index sum_d side_d 3^d: sum_d side_d 4^d. */
+    template <int dim>
+    constexpr std::array<unsigned char, Utilities::pow(3, dim)>
+    lattice_base_of_side()
+    {
+      std::array<unsigned char, Utilities::pow(3, dim)> base{};
+      for (unsigned int side = 0; side < base.size(); ++side)
+        for (unsigned int d = 0, s = side, b = 1; d < dim; ++d, s /= 3, b *= 4)
+          base[side] += (s % 3) * b;
+      return base;
+    }
+
     /**
      * Particle k's entries on the lattice @p block of its cell @p own (an
      * axis-aligned box): each corner's Q1 values in the lattice cell that
      * holds it, summed by lattice node, the nodes in lattice order. False
      * (nothing appended) when a corner lies outside the cells of its patch.
+     * A corner's coordinates are located as one vector: the same numbers
+     * as direction by direction (x + R s, then (x_c - origin) K_dd), with
+     * one comparison for all directions.
      */
     template <int dim>
     DEAL_II_ALWAYS_INLINE inline bool
@@ -263,43 +308,71 @@ namespace dealmpm
                       std::size_t          &e,
                       Stencil<dim>         &stencil)
     {
+      using V                          = typename PointLanes<dim>::type;
+      using Mask                       = typename PointLanes<dim>::mask;
       constexpr unsigned int n_corners = GridCell<dim>::n_vertices;
-      LatticeSums<dim>       sums;
+      static constexpr auto  base_of   = lattice_base_of_side<dim>();
+      // Columns of R and R^-T: x_c = x + sum_e s_e R e_e, g_c likewise.
+      V R_column[dim], Q_column[dim], K = {};
+      const V origin = lanes_of<dim>(own.origin);
+      for (unsigned int e = 0; e < dim; ++e)
+        {
+          R_column[e] = V{};
+          Q_column[e] = V{};
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              R_column[e][d] = R[d][e];
+              Q_column[e][d] = R_inverse_transpose[d][e];
+            }
+          K[e] = own.inverse_jacobian[e][e];
+        }
+      const V x_lanes = lanes_of<dim>(x);
+      LatticeSums<dim> sums;
       sums.clear();
 #pragma GCC unroll 8
       for (unsigned int corner = 0; corner < n_corners; ++corner)
         {
-          Tensor<1, dim> sign;
-          for (unsigned int d = 0; d < dim; ++d)
-            sign[d] = ((corner >> d) & 1u) ? 1. : -1.;
-          const Point<dim> x_c  = x + R * sign;
-          unsigned int     base = 0; // the lattice node of its cell's vertex 0
-          unsigned int     side = 0; // its cell's side index in the patch
-          double           f[dim][2];
+          // s_e R e_e summed in increasing e, as R * s sums (s_e = +-1).
+          const auto signed_sum = [corner](const V(&column)[dim]) {
+            V sum = (corner & 1u) ? column[0] : -column[0];
+            for (unsigned int e = 1; e < dim; ++e)
+              sum += ((corner >> e) & 1u) ? column[e] : -column[e];
+            return sum;
+          };
+          const V t = (x_lanes + signed_sum(R_column) - origin) * K;
+          // NaN fails here too.
+          const Mask inside = (t >= -1.) & (t <= 2.);
+          // A corner on a face of its particle's cell (to round-off, as
+          // in locate()) counts as in that cell. A domain that fills
+          // part of its cell (at rest) then has only that cell's
+          // nodes, not the zero weights of a neighbour's as well, and
+          // at the grid's upper faces it needs no cell beyond them.
+          const Mask below = t < -face_tolerance;
+          const Mask above = t > 1. + face_tolerance;
+          const V    offset =
+            V(below & Mask(V{} - 1.)) + V(above & Mask(V{} + 1.));
+          const V      xi   = t - offset;
+          unsigned int side = 0;
+          bool         in   = true;
           for (unsigned int d = 0, stride = 1; d < dim; ++d, stride *= 3)
             {
-              const double t =
-                (x_c[d] - own.origin[d]) * own.inverse_jacobian[d][d];
-              if (!(t >= -1. && t <= 2.))
-                return false;
-              // A corner on a face of its particle's cell (to round-off, as
-              // in locate()) counts as in that cell. A domain that fills
-              // part of its cell (at rest) then has only that cell's
-              // nodes, not the zero weights of a neighbour's as well, and
-              // at the grid's upper faces it needs no cell beyond them.
-              const int offset =
-                t < -face_tolerance ? -1 : (t <= 1. + face_tolerance ? 0 : 1);
-              const double xi = t - offset;
-              f[d][0]         = 1. - xi;
-              f[d][1]         = xi;
-              base += (offset + 1) << (2 * d);
-              side += (offset + 1) * stride;
+              in = in && inside[d] != 0;
+              side += (1 + int(below[d]) - int(above[d])) * stride;
             }
-          if (!((present >> side) & 1u))
+          if (!in || !((present >> side) & 1u))
             return false;
-          sums.add_corner(base,
-                          f,
-                          R_inverse_transpose * sign / double(n_corners));
+          double f[dim][2];
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              f[d][0] = 1. - xi[d];
+              f[d][1] = xi[d];
+            }
+          // 1 / n_corners is a power of two: multiplying is dividing.
+          const V        g_lanes = signed_sum(Q_column) * (1. / n_corners);
+          Tensor<1, dim> g;
+          for (unsigned int d = 0; d < dim; ++d)
+            g[d] = g_lanes[d];
+          sums.add_corner(base_of[side], f, g);
         }
       stencil.begin[k] = e;
       make_room_for_entries(stencil, e + __builtin_popcountll(sums.nodes));
