@@ -230,8 +230,8 @@ namespace dealmpm
       DEAL_II_ALWAYS_INLINE void
       clear()
       {
-        const Lanes2 zero = {0., 0.};
-        for (unsigned int n = 0; n < n_nodes; n += 2)
+        const Lanes4 zero = {};
+        for (unsigned int n = 0; n < n_nodes; n += 4)
           {
             store_lanes(N + n, zero);
             for (unsigned int d = 0; d < dim; ++d)
@@ -272,6 +272,17 @@ namespace dealmpm
       for (unsigned int d = 0; d < dim; ++d)
         lanes[d] = v[d];
       return lanes;
+    }
+
+    /** 3^d by direction d: a patch cell's side index from its sides. */
+    template <int dim>
+    DEAL_II_ALWAYS_INLINE inline typename PointLanes<dim>::type
+    side_stride()
+    {
+      if constexpr (dim == 2)
+        return Lanes2{1., 3.};
+      else
+        return Lanes4{1., 3., 9., 0.};
     }
 
     /** The lattice node of vertex 0 of each cell of a patch, by the
@@ -351,15 +362,16 @@ namespace dealmpm
           const Mask above = t > 1. + face_tolerance;
           const V    offset =
             V(below & Mask(V{} - 1.)) + V(above & Mask(V{} + 1.));
-          const V      xi   = t - offset;
-          unsigned int side = 0;
-          bool         in   = true;
-          for (unsigned int d = 0, stride = 1; d < dim; ++d, stride *= 3)
-            {
-              in = in && inside[d] != 0;
-              side += (1 + int(below[d]) - int(above[d])) * stride;
-            }
-          if (!in || !((present >> side) & 1u))
+          const V xi = t - offset;
+          // The cell's side index sum_d (offset_d + 1) 3^d, summed as
+          // doubles (exact), 32 more for each coordinate out of range.
+          const V side_terms = (offset + 1.) * side_stride<dim>() +
+                               V(~inside & Mask(V{} + 32.));
+          double side_sum = side_terms[0];
+          for (unsigned int d = 1; d < dim; ++d)
+            side_sum += side_terms[d];
+          const unsigned int side = side_sum;
+          if (side >= base_of.size() || !((present >> side) & 1u))
             return false;
           double f[dim][2];
           for (unsigned int d = 0; d < dim; ++d)
