@@ -188,11 +188,11 @@ namespace dealmpm
     /**
      * One domain's sums on the 4^dim lattice around its cell: of
      * N_v(x_c) / 2^dim (N) and of N_v(x_c) R^{-T} s_c / 2^dim (G) over its
-     * corners c, by lattice node. A corner's 2^dim values are rows of two
-     * along x (products of its 1D factors), so each is added as one vector
-     * to a row of four nodes: no per-node bookkeeping. The sums are zeroed
-     * once per particle (clear()); the nodes some corner reached are a
-     * bit mask.
+     * corners c, by lattice node; the nodes some corner reached are a bit
+     * mask. start() readies them for a particle, append() hands them to the
+     * stencil, discard() drops them. In 2D a corner's values are rows of
+     * two along x (products of its 1D factors), each added as one vector
+     * to a row of four nodes, and all sums are zeroed for each particle.
      */
     template <int dim>
     struct LatticeSums
@@ -200,7 +200,7 @@ namespace dealmpm
       static constexpr unsigned int n_nodes   = Utilities::pow(4, dim);
       static constexpr unsigned int n_corners = GridCell<dim>::n_vertices;
       // The lattice nodes of a cell, relative to its vertex 0.
-      static constexpr std::uint64_t cell_nodes = dim == 2 ? 0x33 : 0x330033;
+      static constexpr std::uint64_t cell_nodes = 0x33;
 
       /** The corner in the cell whose vertex 0 is lattice node @p base, at
        * 1D factors @p f (f[d] = {1 - xi_d, xi_d}), with @p g its
@@ -211,13 +211,10 @@ namespace dealmpm
                  const Tensor<1, dim> &g)
       {
         const Lanes2 f_x = {f[0][0], f[0][1]};
-        for (unsigned int r = 0; r < n_corners / 2; ++r)
+        for (unsigned int b = 0; b < 2; ++b)
           {
-            const unsigned int b = r & 1u, n = base + 4 * b + 16 * (r >> 1);
-            // Products in q1_values' order: (f_0 f_1) f_2.
-            Lanes2 w = f_x * f[1][b];
-            if constexpr (dim == 3)
-              w = w * f[2][r >> 1];
+            const unsigned int n = base + 4 * b;
+            const Lanes2       w = f_x * f[1][b];
             // 1 / n_corners is a power of two: multiplying is dividing.
             store_lanes(N + n,
                         load_lanes<Lanes2>(N + n) + w * (1. / n_corners));
@@ -228,7 +225,7 @@ namespace dealmpm
       }
 
       DEAL_II_ALWAYS_INLINE void
-      clear()
+      start()
       {
         const Lanes4 zero = {};
         for (unsigned int n = 0; n < n_nodes; n += 4)
@@ -237,12 +234,105 @@ namespace dealmpm
             for (unsigned int d = 0; d < dim; ++d)
               store_lanes(G[d] + n, zero);
           }
+        nodes = 0;
+      }
+
+      DEAL_II_ALWAYS_INLINE void
+      discard()
+      {}
+
+      /** The sums as entries e, ... of @p stencil, the nodes in lattice
+       * order (@p block: the lattice's nodes). */
+      DEAL_II_ALWAYS_INLINE void
+      append(const unsigned int *block, std::size_t &e, Stencil<dim> &stencil)
+      {
+        make_room_for_entries(stencil, e + __builtin_popcountll(nodes));
+        for (std::uint64_t left = nodes; left != 0; left &= left - 1, ++e)
+          {
+            const unsigned int n = __builtin_ctzll(left);
+            stencil.node[e]      = block[n];
+            stencil.N[e]         = N[n];
+            for (unsigned int d = 0; d < dim; ++d)
+              stencil.grad_N[e][d] = G[d][n];
+          }
       }
 
       // Aligned to cache lines: the stencil stage of the 2D CPDI column
       // took 3.5 s instead of 3.9 s (pairs then cross no line).
       alignas(64) double N[n_nodes];
       alignas(64) double G[dim][n_nodes];
+      std::uint64_t nodes = 0; // bit n: node n has a corner's value
+    };
+
+    /**
+     * The 3D sums by node, (N, G) as one vector of four: a corner's vertex
+     * is one product and one sum of vectors (by rows along x it was four
+     * pairs). The sums stay zero between particles: append() and discard()
+     * zero the nodes they used, 27 at most where clearing all took 64
+     * vectors.
+     */
+    template <>
+    struct LatticeSums<3>
+    {
+      static constexpr unsigned int  n_nodes    = 64;
+      static constexpr unsigned int  n_corners  = 8;
+      static constexpr std::uint64_t cell_nodes = 0x330033;
+
+      LatticeSums()
+      {
+        for (unsigned int n = 0; n < n_nodes; ++n)
+          store_lanes(S[n], Lanes4{});
+      }
+
+      DEAL_II_ALWAYS_INLINE void
+      add_corner(const unsigned int base,
+                 const double (&f)[3][2],
+                 const Tensor<1, 3> &g)
+      {
+        // 1 / n_corners is a power of two: multiplying is dividing.
+        const Lanes4 scale = {1. / n_corners, g[0], g[1], g[2]};
+        for (unsigned int c = 0; c < 2; ++c)
+          for (unsigned int b = 0; b < 2; ++b)
+            for (unsigned int a = 0; a < 2; ++a)
+              {
+                // Products in q1_values' order: (f_0 f_1) f_2.
+                const double w = f[0][a] * f[1][b] * f[2][c];
+                double      *s = S[base + a + 4 * b + 16 * c];
+                store_lanes(s, load_lanes<Lanes4>(s) + w * scale);
+              }
+        nodes |= cell_nodes << base;
+      }
+
+      DEAL_II_ALWAYS_INLINE void
+      start()
+      {
+        nodes = 0;
+      }
+
+      DEAL_II_ALWAYS_INLINE void
+      discard()
+      {
+        for (std::uint64_t left = nodes; left != 0; left &= left - 1)
+          store_lanes(S[__builtin_ctzll(left)], Lanes4{});
+      }
+
+      DEAL_II_ALWAYS_INLINE void
+      append(const unsigned int *block, std::size_t &e, Stencil<3> &stencil)
+      {
+        make_room_for_entries(stencil, e + __builtin_popcountll(nodes));
+        for (std::uint64_t left = nodes; left != 0; left &= left - 1, ++e)
+          {
+            const unsigned int n = __builtin_ctzll(left);
+            const Lanes4       s = load_lanes<Lanes4>(S[n]);
+            stencil.node[e]      = block[n];
+            stencil.N[e]         = s[0];
+            for (unsigned int d = 0; d < 3; ++d)
+              stencil.grad_N[e][d] = s[1 + d];
+            store_lanes(S[n], Lanes4{});
+          }
+      }
+
+      alignas(64) double S[n_nodes][4];
       std::uint64_t nodes = 0; // bit n: node n has a corner's value
     };
 
@@ -316,6 +406,7 @@ namespace dealmpm
                       const Tensor<2, dim> &R,
                       const Tensor<2, dim> &R_inverse_transpose,
                       const std::size_t     k,
+                      LatticeSums<dim>     &sums,
                       std::size_t          &e,
                       Stencil<dim>         &stencil)
     {
@@ -338,8 +429,7 @@ namespace dealmpm
           K[e] = own.inverse_jacobian[e][e];
         }
       const V x_lanes = lanes_of<dim>(x);
-      LatticeSums<dim> sums;
-      sums.clear();
+      sums.start();
 #pragma GCC unroll 8
       for (unsigned int corner = 0; corner < n_corners; ++corner)
         {
@@ -372,7 +462,10 @@ namespace dealmpm
             side_sum += side_terms[d];
           const unsigned int side = side_sum;
           if (side >= base_of.size() || !((present >> side) & 1u))
-            return false;
+            {
+              sums.discard();
+              return false;
+            }
           double f[dim][2];
           for (unsigned int d = 0; d < dim; ++d)
             {
@@ -387,16 +480,7 @@ namespace dealmpm
           sums.add_corner(base_of[side], f, g);
         }
       stencil.begin[k] = e;
-      make_room_for_entries(stencil, e + __builtin_popcountll(sums.nodes));
-      for (std::uint64_t nodes = sums.nodes; nodes != 0;
-           nodes &= nodes - 1, ++e)
-        {
-          const unsigned int n = __builtin_ctzll(nodes);
-          stencil.node[e]      = block[n];
-          stencil.N[e]         = sums.N[n];
-          for (unsigned int d = 0; d < dim; ++d)
-            stencil.grad_N[e][d] = sums.G[d][n];
-        }
+      sums.append(block, e, stencil);
       return true;
     }
 
@@ -418,6 +502,7 @@ namespace dealmpm
 
       NodeAccumulator<dim> gathered;
       CornerSums<dim>      sums;
+      LatticeSums<dim>     lattice_sums;
       const std::size_t    n_visited = for_each_particle_in_stencil_order(
         grid,
         particles,
@@ -438,6 +523,7 @@ namespace dealmpm
                                                       R,
                                                       R_inverse_transpose,
                                                       k,
+                                                      lattice_sums,
                                                       e,
                                                       stencil))
               return;
