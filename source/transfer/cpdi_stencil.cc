@@ -213,13 +213,15 @@ namespace dealmpm
         const Lanes2 f_x = {f[0][0], f[0][1]};
         for (unsigned int b = 0; b < 2; ++b)
           {
-            const unsigned int n = base + 4 * b;
-            const Lanes2       w = f_x * f[1][b];
+            const Lanes2 w = f_x * f[1][b];
             // 1 / n_corners is a power of two: multiplying is dividing.
-            store_lanes(N + n,
-                        load_lanes<Lanes2>(N + n) + w * (1. / n_corners));
+            double *const n = N + base + 4 * b;
+            store_lanes(n, load_lanes<Lanes2>(n) + w * (1. / n_corners));
             for (unsigned int d = 0; d < dim; ++d)
-              store_lanes(G[d] + n, load_lanes<Lanes2>(G[d] + n) + w * g[d]);
+              {
+                double *const g_d = G[d] + base + 4 * b;
+                store_lanes(g_d, load_lanes<Lanes2>(g_d) + w * g[d]);
+              }
           }
         nodes |= cell_nodes << base;
       }
@@ -291,13 +293,16 @@ namespace dealmpm
       {
         // 1 / n_corners is a power of two: multiplying is dividing.
         const Lanes4 scale = {1. / n_corners, g[0], g[1], g[2]};
+        // The vertices at constant distances from vertex 0's sums (an
+        // index base + a + ... is recomputed for each: unsigned sums).
+        double *const s0 = S[base];
         for (unsigned int c = 0; c < 2; ++c)
           for (unsigned int b = 0; b < 2; ++b)
             for (unsigned int a = 0; a < 2; ++a)
               {
                 // Products in q1_values' order: (f_0 f_1) f_2.
                 const double w = f[0][a] * f[1][b] * f[2][c];
-                double      *s = S[base + a + 4 * b + 16 * c];
+                double      *s = s0 + 4 * (a + 4 * b + 16 * c);
                 store_lanes(s, load_lanes<Lanes4>(s) + w * scale);
               }
         nodes |= cell_nodes << base;
