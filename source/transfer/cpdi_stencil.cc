@@ -202,18 +202,21 @@ namespace dealmpm
       // The lattice nodes of a cell, relative to its vertex 0.
       static constexpr std::uint64_t cell_nodes = 0x33;
 
-      /** The corner in the cell whose vertex 0 is lattice node @p base, at
-       * 1D factors @p f (f[d] = {1 - xi_d, xi_d}), with @p g its
-       * R^{-T} s_c / 2^dim. */
+      /** The corner at unit-cell point @p xi of the cell whose vertex 0
+       * is lattice node @p base, with @p g its R^{-T} s_c / 2^dim. */
       DEAL_II_ALWAYS_INLINE void
-      add_corner(const unsigned int base,
-                 const double (&f)[dim][2],
-                 const Tensor<1, dim> &g)
+      add_corner(const unsigned int base, const Lanes2 &xi, const Lanes2 &g)
       {
-        const Lanes2 f_x = {f[0][0], f[0][1]};
+        static_assert(dim == 2, "the rows of two are the 2D sums");
+        using Index         = long long __attribute__((vector_size(16)));
+        const Lanes2 one_xi = 1. - xi;
+        const Lanes2 f_x    = __builtin_shuffle(one_xi, xi, Index{0, 2});
+        // (1 - xi_1, 1 - xi_1) and (xi_1, xi_1)
+        const Lanes2 f_y[2] = {__builtin_shuffle(one_xi, Index{1, 1}),
+                               __builtin_shuffle(xi, Index{1, 1})};
         for (unsigned int b = 0; b < 2; ++b)
           {
-            const Lanes2 w = f_x * f[1][b];
+            const Lanes2 w = f_x * f_y[b];
             // 1 / n_corners is a power of two: multiplying is dividing.
             double *const n = N + base + 4 * b;
             store_lanes(n, load_lanes<Lanes2>(n) + w * (1. / n_corners));
@@ -286,25 +289,34 @@ namespace dealmpm
           store_lanes(S[n], Lanes4{});
       }
 
+      /** As LatticeSums<2>::add_corner(), @p xi and @p g with a fourth
+       * lane. The 8 weights are two vectors, (f_0 f_1) f_2 by vertex (the
+       * products of q1_values()), each handed to its node's sums as a
+       * broadcast lane. */
       DEAL_II_ALWAYS_INLINE void
-      add_corner(const unsigned int base,
-                 const double (&f)[3][2],
-                 const Tensor<1, 3> &g)
+      add_corner(const unsigned int base, const Lanes4 &xi, const Lanes4 &g)
       {
+        using Index         = long long __attribute__((vector_size(32)));
+        const Lanes4 one_xi = 1. - xi;
+        // (1 - xi_0, xi_0, 1 - xi_0, xi_0) (1 - xi_1, 1 - xi_1, xi_1, xi_1)
+        const Lanes4 f01 = __builtin_shuffle(one_xi, xi, Index{0, 4, 0, 4}) *
+                           __builtin_shuffle(one_xi, xi, Index{1, 1, 5, 5});
+        const Lanes4 w[2] = {f01 * one_xi[2], f01 * xi[2]};
         // 1 / n_corners is a power of two: multiplying is dividing.
-        const Lanes4 scale = {1. / n_corners, g[0], g[1], g[2]};
+        const Lanes4 scale = __builtin_shuffle(g,
+                                               Lanes4{} + 1. / n_corners,
+                                               Index{4, 0, 1, 2});
         // The vertices at constant distances from vertex 0's sums (an
         // index base + a + ... is recomputed for each: unsigned sums).
         double *const s0 = S[base];
         for (unsigned int c = 0; c < 2; ++c)
-          for (unsigned int b = 0; b < 2; ++b)
-            for (unsigned int a = 0; a < 2; ++a)
-              {
-                // Products in q1_values' order: (f_0 f_1) f_2.
-                const double w = f[0][a] * f[1][b] * f[2][c];
-                double      *s = s0 + 4 * (a + 4 * b + 16 * c);
-                store_lanes(s, load_lanes<Lanes4>(s) + w * scale);
-              }
+          for (unsigned int v = 0; v < 4; ++v)
+            {
+              const Lanes4 w_v =
+                __builtin_shuffle(w[c], Index{v, v, v, v} + Index{});
+              double *s = s0 + 4 * ((v & 1u) + 4 * (v >> 1) + 16 * c);
+              store_lanes(s, load_lanes<Lanes4>(s) + w_v * scale);
+            }
         nodes |= cell_nodes << base;
       }
 
@@ -471,18 +483,9 @@ namespace dealmpm
               sums.discard();
               return false;
             }
-          double f[dim][2];
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              f[d][0] = 1. - xi[d];
-              f[d][1] = xi[d];
-            }
           // 1 / n_corners is a power of two: multiplying is dividing.
-          const V        g_lanes = signed_sum(Q_column) * (1. / n_corners);
-          Tensor<1, dim> g;
-          for (unsigned int d = 0; d < dim; ++d)
-            g[d] = g_lanes[d];
-          sums.add_corner(base_of[side], f, g);
+          const V g = signed_sum(Q_column) * (1. / n_corners);
+          sums.add_corner(base_of[side], xi, g);
         }
       stencil.begin[k] = e;
       sums.append(block, e, stencil);
