@@ -185,18 +185,40 @@ namespace dealmpm
                         "cpGIMP";
     }
 
+    /** The lattice nodes a domain's corners reached: bit n for node n. */
+    struct UsedNodes
+    {
+      std::uint64_t nodes = 0;
+
+      DEAL_II_ALWAYS_INLINE void
+      start()
+      {
+        nodes = 0;
+      }
+
+      /** f(n) for each node n used, in lattice order. */
+      template <typename Function>
+      DEAL_II_ALWAYS_INLINE void
+      each(Function &&f) const
+      {
+        for (std::uint64_t left = nodes; left != 0; left &= left - 1)
+          f(static_cast<unsigned int>(__builtin_ctzll(left)));
+      }
+    };
+
     /**
      * One domain's sums on the 4^dim lattice around its cell: of
      * N_v(x_c) / 2^dim (N) and of N_v(x_c) R^{-T} s_c / 2^dim (G) over its
      * corners c, by lattice node; the nodes some corner reached are a bit
-     * mask. start() readies them for a particle, append() hands them to the
-     * stencil, discard() drops them; both zero the nodes used, so that the
-     * sums are zero between particles. In 2D a corner's values are rows of
-     * two along x (products of its 1D factors), each added as one vector
-     * to a row of four nodes.
+     * mask. append_sums() hands them to the stencil, discard_sums() drops
+     * them; both zero the nodes used (take()), so that the sums are zero
+     * between particles: clearing all 48 sums for each particle became
+     * three `rep stos`, whose start-up costs more. In 2D a corner's values
+     * are rows of two along x (products of its 1D factors), each added as
+     * one vector to a row of four nodes.
      */
     template <int dim>
-    struct LatticeSums
+    struct LatticeSums : UsedNodes
     {
       static constexpr unsigned int n_nodes   = Utilities::pow(4, dim);
       static constexpr unsigned int n_corners = GridCell<dim>::n_vertices;
@@ -237,43 +259,16 @@ namespace dealmpm
           std::fill(std::begin(G[d]), std::end(G[d]), 0.);
       }
 
+      /** Node @p n's sums into @p N_n and @p grad_N, and zeroed. */
       DEAL_II_ALWAYS_INLINE void
-      start()
+      take(const unsigned int n, double &N_n, Tensor<1, dim> &grad_N)
       {
-        nodes = 0;
-      }
-
-      /** Zero the nodes used. Clearing all 48 sums for each particle
-       * became three `rep stos`, whose start-up costs more than this. */
-      DEAL_II_ALWAYS_INLINE void
-      discard()
-      {
-        for (std::uint64_t left = nodes; left != 0; left &= left - 1)
+        N_n  = N[n];
+        N[n] = 0;
+        for (unsigned int d = 0; d < dim; ++d)
           {
-            const unsigned int n = __builtin_ctzll(left);
-            N[n]                 = 0;
-            for (unsigned int d = 0; d < dim; ++d)
-              G[d][n] = 0;
-          }
-      }
-
-      /** The sums as entries e, ... of @p stencil, the nodes in lattice
-       * order (@p block: the lattice's nodes), and zeroed. */
-      DEAL_II_ALWAYS_INLINE void
-      append(const unsigned int *block, std::size_t &e, Stencil<dim> &stencil)
-      {
-        make_room_for_entries(stencil, e + __builtin_popcountll(nodes));
-        for (std::uint64_t left = nodes; left != 0; left &= left - 1, ++e)
-          {
-            const unsigned int n = __builtin_ctzll(left);
-            stencil.node[e]      = block[n];
-            stencil.N[e]         = N[n];
-            N[n]                 = 0;
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                stencil.grad_N[e][d] = G[d][n];
-                G[d][n]              = 0;
-              }
+            grad_N[d] = G[d][n];
+            G[d][n]   = 0;
           }
       }
 
@@ -281,18 +276,16 @@ namespace dealmpm
       // took 3.5 s instead of 3.9 s (pairs then cross no line).
       alignas(64) double N[n_nodes];
       alignas(64) double G[dim][n_nodes];
-      std::uint64_t nodes = 0; // bit n: node n has a corner's value
     };
 
     /**
      * The 3D sums by node, (N, G) as one vector of four: a corner's vertex
      * is one product and one sum of vectors (by rows along x it was four
-     * pairs). The sums stay zero between particles: append() and discard()
-     * zero the nodes they used, 27 at most where clearing all took 64
-     * vectors.
+     * pairs). The sums stay zero between particles as in 2D: 27 nodes at
+     * most are zeroed where clearing all took 64 vectors.
      */
     template <>
-    struct LatticeSums<3>
+    struct LatticeSums<3> : UsedNodes
     {
       static constexpr unsigned int  n_nodes    = 64;
       static constexpr unsigned int  n_corners  = 8;
@@ -318,9 +311,8 @@ namespace dealmpm
                            __builtin_shuffle(one_xi, xi, Index{1, 1, 5, 5});
         const Lanes4 w[2] = {f01 * one_xi[2], f01 * xi[2]};
         // 1 / n_corners is a power of two: multiplying is dividing.
-        const Lanes4 scale = __builtin_shuffle(g,
-                                               Lanes4{} + 1. / n_corners,
-                                               Index{4, 0, 1, 2});
+        const Lanes4 scale =
+          __builtin_shuffle(g, Lanes4{} + 1. / n_corners, Index{4, 0, 1, 2});
         // The vertices at constant distances from vertex 0's sums (an
         // index base + a + ... is recomputed for each: unsigned sums).
         double *const s0 = S[base];
@@ -336,37 +328,45 @@ namespace dealmpm
       }
 
       DEAL_II_ALWAYS_INLINE void
-      start()
+      take(const unsigned int n, double &N_n, Tensor<1, 3> &grad_N)
       {
-        nodes = 0;
-      }
-
-      DEAL_II_ALWAYS_INLINE void
-      discard()
-      {
-        for (std::uint64_t left = nodes; left != 0; left &= left - 1)
-          store_lanes(S[__builtin_ctzll(left)], Lanes4{});
-      }
-
-      DEAL_II_ALWAYS_INLINE void
-      append(const unsigned int *block, std::size_t &e, Stencil<3> &stencil)
-      {
-        make_room_for_entries(stencil, e + __builtin_popcountll(nodes));
-        for (std::uint64_t left = nodes; left != 0; left &= left - 1, ++e)
-          {
-            const unsigned int n = __builtin_ctzll(left);
-            const Lanes4       s = load_lanes<Lanes4>(S[n]);
-            stencil.node[e]      = block[n];
-            stencil.N[e]         = s[0];
-            for (unsigned int d = 0; d < 3; ++d)
-              stencil.grad_N[e][d] = s[1 + d];
-            store_lanes(S[n], Lanes4{});
-          }
+        const Lanes4 sums = load_lanes<Lanes4>(S[n]);
+        N_n               = sums[0];
+        for (unsigned int d = 0; d < 3; ++d)
+          grad_N[d] = sums[1 + d];
+        store_lanes(S[n], Lanes4{});
       }
 
       alignas(64) double S[n_nodes][4];
-      std::uint64_t nodes = 0; // bit n: node n has a corner's value
     };
+
+    /** Drops the sums of the nodes @p sums used. */
+    template <int dim>
+    DEAL_II_ALWAYS_INLINE inline void
+    discard_sums(LatticeSums<dim> &sums)
+    {
+      double         N;
+      Tensor<1, dim> grad_N;
+      sums.each([&](const unsigned int n)
+                  DEAL_II_ALWAYS_INLINE { sums.take(n, N, grad_N); });
+    }
+
+    /** @p sums as entries e, ... of @p stencil, the nodes in lattice order
+     * (@p block: the lattice's nodes). */
+    template <int dim>
+    DEAL_II_ALWAYS_INLINE inline void
+    append_sums(LatticeSums<dim>   &sums,
+                const unsigned int *block,
+                std::size_t        &e,
+                Stencil<dim>       &stencil)
+    {
+      make_room_for_entries(stencil, e + __builtin_popcountll(sums.nodes));
+      sums.each([&](const unsigned int n) DEAL_II_ALWAYS_INLINE {
+        stencil.node[e] = block[n];
+        sums.take(n, stencil.N[e], stencil.grad_N[e]);
+        ++e;
+      });
+    }
 
     /** A point of dim coordinates as one vector (3D: a fourth lane, 0),
      * and the mask a comparison of two gives. */
@@ -447,7 +447,7 @@ namespace dealmpm
       constexpr unsigned int n_corners = GridCell<dim>::n_vertices;
       static constexpr auto  base_of   = lattice_base_of_side<dim>();
       // Columns of R and R^-T: x_c = x + sum_e s_e R e_e, g_c likewise.
-      V R_column[dim], Q_column[dim], K = {};
+      V       R_column[dim], Q_column[dim], K = {};
       const V origin = lanes_of<dim>(own.origin);
       for (unsigned int e = 0; e < dim; ++e)
         {
@@ -487,15 +487,15 @@ namespace dealmpm
           const V xi = t - offset;
           // The cell's side index sum_d (offset_d + 1) 3^d, summed as
           // doubles (exact), 32 more for each coordinate out of range.
-          const V side_terms = (offset + 1.) * side_stride<dim>() +
-                               V(~inside & Mask(V{} + 32.));
+          const V side_terms =
+            (offset + 1.) * side_stride<dim>() + V(~inside & Mask(V{} + 32.));
           double side_sum = side_terms[0];
           for (unsigned int d = 1; d < dim; ++d)
             side_sum += side_terms[d];
           const unsigned int side = side_sum;
           if (side >= base_of.size() || !((present >> side) & 1u))
             {
-              sums.discard();
+              discard_sums(sums);
               return false;
             }
           // 1 / n_corners is a power of two: multiplying is dividing.
@@ -503,7 +503,7 @@ namespace dealmpm
           sums.add_corner(base_of[side], xi, g);
         }
       stencil.begin[k] = e;
-      sums.append(block, e, stencil);
+      append_sums(sums, block, e, stencil);
       return true;
     }
 

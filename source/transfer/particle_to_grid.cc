@@ -274,7 +274,7 @@ namespace dealmpm
       constexpr unsigned int stride = InterleavedNodes<dim>::stride;
       // Lanes: 3D (m, m v) and the force with a fourth (padding) lane;
       // 2D the momentum and the force as pairs.
-      using Pair = std::conditional_t<dim == 3, Lanes4, Lanes2>;
+      using Pair  = std::conditional_t<dim == 3, Lanes4, Lanes2>;
       Pair unit_v = {}, P_column[dim] = {};
       for (unsigned int d = 0; d < dim; ++d)
         {

@@ -122,6 +122,36 @@ namespace dealmpm
     template <int dim, typename Weights>
     constexpr bool by_rows = std::is_same_v<Weights, WindowWeights<dim>>;
 
+    /** Adds a gather's vector sums over a node block (VelocityArrays::
+     * block) into v_grid, dv and L: v in the first dim lanes of @p values,
+     * dv in its next two (2D) or its fourth and @p rests (3D), L's column
+     * b in @p column[b]. */
+    template <bool motion, bool move, bool deformation, int dim>
+    DEAL_II_ALWAYS_INLINE inline void
+    add_lane_sums(const Lanes4 &values,
+                  const Lanes2 &rests,
+                  const Lanes4 (&column)[dim],
+                  Tensor<1, dim> &v_grid,
+                  Tensor<1, dim> &dv,
+                  Tensor<2, dim> &L)
+    {
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          if (move)
+            v_grid[d] += values[d];
+          if constexpr (motion)
+            {
+              if constexpr (dim == 2)
+                dv[d] += values[dim + d];
+              else // dv_x in the fourth lane, dv_y and dv_z a pair
+                dv[d] += d == 0 ? values[3] : rests[d - 1];
+            }
+          if (deformation)
+            for (unsigned int b = 0; b < dim; ++b)
+              L[d][b] += column[b][d];
+        }
+    }
+
     /** The rows' sums of gather_by_rows() from the velocity and its
      * increment interleaved by node (VelocityArrays::block): a node's
      * first four values (v, then dv, in 2D; v and dv_x in 3D) are one
@@ -154,9 +184,8 @@ namespace dealmpm
       // Over the rows: v12 times the values (v, dv), times the slopes
       // (L's first column), s12 and s2 times the values (its second and
       // third), v12 times 3D's dv_y, dv_z.
-      Lanes4                  values = {}, column0 = {}, column1 = {};
-      [[maybe_unused]] Lanes4 column2 = {};
-      [[maybe_unused]] Lanes2 rests   = {};
+      Lanes4                  values = {}, column[dim] = {};
+      [[maybe_unused]] Lanes2 rests = {};
       weights.rows(k,
                    p,
                    cell,
@@ -184,31 +213,14 @@ namespace dealmpm
                        rests += v12 * rest;
                      if (deformation)
                        {
-                         column0 += v12 * slope;
-                         column1 += s12 * value;
+                         column[0] += v12 * slope;
+                         column[1] += s12 * value;
                          if constexpr (dim == 3)
-                           column2 += s2 * value;
+                           column[2] += s2 * value;
                        }
                    });
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          if (move)
-            v_grid[d] += values[d];
-          if constexpr (motion)
-            {
-              if constexpr (dim == 2)
-                dv[d] += values[dim + d];
-              else // dv_x in the fourth lane, dv_y and dv_z a pair
-                dv[d] += d == 0 ? values[3] : rests[d - 1];
-            }
-          if (deformation)
-            {
-              L[d][0] += column0[d];
-              L[d][1] += column1[d];
-              if constexpr (dim == 3)
-                L[d][2] += column2[d];
-            }
-        }
+      add_lane_sums<motion, move, deformation>(
+        values, rests, column, v_grid, dv, L);
     }
 
     /** gather()'s v_grid, dv and L from stored weights (entries of
@@ -237,7 +249,7 @@ namespace dealmpm
       [[maybe_unused]] Lanes2 rests       = {};
       for (unsigned int e = stencil.begin[k]; e < stencil.begin[k + 1]; ++e)
         {
-          const double *x = block + std::size_t(stencil.node[e]) * stride;
+          const double *x     = block + std::size_t(stencil.node[e]) * stride;
           const Lanes4  first = load_lanes<Lanes4>(x);
           const double  N     = stencil.N[e];
           if (move || motion)
@@ -248,21 +260,8 @@ namespace dealmpm
             for (unsigned int b = 0; b < dim; ++b)
               column[b] += first * stencil.grad_N[e][b];
         }
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          if (move)
-            v_grid[d] += values[d];
-          if constexpr (motion)
-            {
-              if constexpr (dim == 2)
-                dv[d] += values[dim + d];
-              else // dv_x in the fourth lane, dv_y and dv_z a pair
-                dv[d] += d == 0 ? values[3] : rests[d - 1];
-            }
-          if (deformation)
-            for (unsigned int b = 0; b < dim; ++b)
-              L[d][b] += column[b][d];
-        }
+      add_lane_sums<motion, move, deformation>(
+        values, rests, column, v_grid, dv, L);
     }
 
     /** gather()'s v_grid, dv and L for windowed weights computed where
