@@ -1,4 +1,3 @@
-#include <dealmpm/base/lanes.h>
 #include <dealmpm/grid/nodal_exchange.h>
 #include <dealmpm/transfer/affine_transfer.h>
 #include <dealmpm/transfer/box_q1.h>
@@ -255,56 +254,42 @@ namespace dealmpm
       return x_p;
     }
 
-    /** Particle @p k's stored entries added into the InterleavedNodes
-     * @p block as vectors: the mass and momentum m N (1, v) one product
-     * and sum, the force P grad N the columns of P (@p P[d][j]) times
-     * grad N's components, summed in increasing j as node by node. The
-     * same numbers as InterleavedNodes::add_mass_and_momentum() and
-     * add_force(); the 3D CPDI column's P2G took about 38 instructions an
-     * entry that way. */
-    template <int dim, bool mass_and_momentum, bool internal_force>
-    DEAL_II_ALWAYS_INLINE inline void
-    add_entries_to_block(const Stencil<dim>   &stencil,
-                         const std::size_t     k,
-                         const double          m,
-                         const Tensor<1, dim> &v,
-                         const double (&P)[dim][dim],
-                         double *const block)
+    /** Particle @p k into @p to as vectors, through windowed weights by
+     * rows or stored ones into an interleaved block; false (nothing
+     * added) for other weights and targets, which go node by node. */
+    template <int  dim,
+              bool mass_and_momentum,
+              bool internal_force,
+              typename Weights,
+              typename Particle,
+              typename To>
+    DEAL_II_ALWAYS_INLINE inline bool
+    add_as_vectors(const Weights        &weights,
+                   const Stencil<dim>   &stencil,
+                   const std::size_t     k,
+                   const Particle       &p,
+                   const GridCell<dim>  &c,
+                   const double          m,
+                   const Tensor<1, dim> &v,
+                   const double (&P)[dim][dim],
+                   const To &to)
     {
-      constexpr unsigned int stride = InterleavedNodes<dim>::stride;
-      // Lanes: 3D (m, m v) and the force with a fourth (padding) lane;
-      // 2D the momentum and the force as pairs.
-      using Pair  = std::conditional_t<dim == 3, Lanes4, Lanes2>;
-      Pair unit_v = {}, P_column[dim] = {};
-      for (unsigned int d = 0; d < dim; ++d)
+      if constexpr (std::is_same_v<Weights, WindowWeights<dim>>)
         {
-          unit_v[d + (dim == 3)] = v[d];
-          for (unsigned int j = 0; j < dim; ++j)
-            P_column[j][d] = P[d][j];
+          p2g_rows::add_by_rows<dim, mass_and_momentum, internal_force>(
+            weights, k, p, c, m, v, P, to);
+          return true;
         }
-      if constexpr (dim == 3)
-        unit_v[0] = 1.;
-      for (unsigned int e = stencil.begin[k]; e < stencil.begin[k + 1]; ++e)
+      else if constexpr (std::is_same_v<Weights, StoredWeights<dim>> &&
+                         To::interleaved)
         {
-          double *const x = block + std::size_t(stencil.node[e]) * stride;
-          if (mass_and_momentum)
-            {
-              const double mN = m * stencil.N[e];
-              if constexpr (dim == 2)
-                x[0] += mN;
-              double *const momentum = x + (dim == 2);
-              store_lanes(momentum, load_lanes<Pair>(momentum) + mN * unit_v);
-            }
-          if (internal_force)
-            {
-              const Tensor<1, dim> &grad_N = stencil.grad_N[e];
-              Pair                  fi     = P_column[0] * grad_N[0];
-              for (unsigned int j = 1; j < dim; ++j)
-                fi += P_column[j] * grad_N[j];
-              double *const force = x + 1 + dim;
-              store_lanes(force, load_lanes<Pair>(force) + fi);
-            }
+          p2g_rows::
+            add_entries_to_block<dim, mass_and_momentum, internal_force>(
+              stencil, k, m, v, P, to.block);
+          return true;
         }
+      else
+        return false;
     }
 
     /** The kernel, compiled once per choice of quantities so that the usual
@@ -346,28 +331,18 @@ namespace dealmpm
             x_p = affine_origin(grid, stencil, weights, k, p, c, f, C);
           // Once per particle, as a plain array (deal.II's symmetric
           // tensor times a vector goes through accessor objects).
-          double force_per_gradient_component[dim][dim] = {};
+          double force_per_grad[dim][dim] = {};
           if (internal_force)
             {
               const auto P = force_per_gradient<total_lagrangian, dim>(props);
               for (unsigned int i = 0; i < dim; ++i)
                 for (unsigned int j = 0; j < dim; ++j)
-                  force_per_gradient_component[i][j] = P[i][j];
+                  force_per_grad[i][j] = P[i][j];
             }
-          if constexpr (std::is_same_v<Weights, WindowWeights<dim>> &&
-                        !Targets::per_body && !affine)
-            {
-              p2g_rows::add_by_rows<dim, mass_and_momentum, internal_force>(
-                weights, k, p, c, m, v, force_per_gradient_component, to);
+          if constexpr (!Targets::per_body && !affine)
+            if (add_as_vectors<dim, mass_and_momentum, internal_force>(
+                  weights, stencil, k, p, c, m, v, force_per_grad, to))
               return;
-            }
-          if constexpr (std::is_same_v<Weights, StoredWeights<dim>> &&
-                        Targets::interleaved && !Targets::per_body && !affine)
-            {
-              add_entries_to_block<dim, mass_and_momentum, internal_force>(
-                stencil, k, m, v, force_per_gradient_component, to.block);
-              return;
-            }
           weights(k,
                   p,
                   c,
@@ -389,7 +364,7 @@ namespace dealmpm
                         double fi[dim];
                         for (unsigned int d = 0; d < dim; ++d)
                           {
-                            const double *P = force_per_gradient_component[d];
+                            const double *P = force_per_grad[d];
                             fi[d]           = P[0] * grad_N[0];
                             for (unsigned int j = 1; j < dim; ++j)
                               fi[d] += P[j] * grad_N[j];

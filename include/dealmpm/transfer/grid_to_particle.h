@@ -264,6 +264,20 @@ namespace dealmpm
         values, rests, column, v_grid, dv, L);
     }
 
+    /** The velocity block (VelocityArrays::block) that stored weights
+     * read as vectors (gather_entries_from_block()), or nullptr: other
+     * weights, contact's body fields and light nodes read node by node. */
+    template <int dim, typename Weights, typename Arrays>
+    DEAL_II_ALWAYS_INLINE inline const double *
+    stored_block(const Arrays &from)
+    {
+      if constexpr (std::is_same_v<Weights, StoredWeights<dim>> &&
+                    std::is_same_v<Arrays, VelocityArrays<dim>>)
+        return from.block;
+      else
+        return nullptr;
+    }
+
     /** gather()'s v_grid, dv and L for windowed weights computed where
      * used, a row of nodes along x at a time (WindowWeights::rows()):
      * the row's sums with x's weights, then scaled by the other
@@ -379,22 +393,16 @@ namespace dealmpm
             gather_by_rows<motion, move, deformation>(
               weights, k, p, cell, from, v_grid, dv, L);
         }
+      else if (const double *block = stored_block<dim, Weights>(from);
+               block != nullptr && !(motion && affine))
+        gather_entries_from_block<motion, move, deformation>(
+          stencil, k, block, v_grid, dv, L);
       else
         {
           // APIC measures x_i - x_p from the stencil's positions (the
           // particle's own in the updated Lagrangian sweeps, which have not
           // moved it yet; its reference one in total Lagrangian), or, with
           // weights computed where used, from the particle's position.
-          if constexpr (std::is_same_v<Weights, StoredWeights<dim>> &&
-                        std::is_same_v<Arrays, VelocityArrays<dim>>)
-            if (from.block != nullptr && !(motion && affine))
-              {
-                gather_entries_from_block<motion, move, deformation>(
-                  stencil, k, from.block, v_grid, dv, L);
-                if constexpr (motion && deformation && Arrays::may_be_light)
-                  lend_light_nodes(grid, weights, k, p, cell, from, dv, L);
-                return;
-              }
           Point<dim> x_affine;
           if constexpr (computed_where_used<dim, Weights>)
             x_affine = p.get_location();
