@@ -209,20 +209,67 @@ namespace dealmpm
     /**
      * One domain's sums on the 4^dim lattice around its cell: of
      * N_v(x_c) / 2^dim (N) and of N_v(x_c) R^{-T} s_c / 2^dim (G) over its
-     * corners c, by lattice node; the nodes some corner reached are a bit
-     * mask. append_sums() hands them to the stencil, discard_sums() drops
-     * them; both zero the nodes used (take()), so that the sums are zero
-     * between particles: clearing all 48 sums for each particle became
-     * three `rep stos`, whose start-up costs more. In 2D a corner's values
-     * are rows of two along x (products of its 1D factors), each added as
-     * one vector to a row of four nodes.
+     * corners c, by lattice node, (N, G) as one vector of four (in 2D the
+     * fourth lane unused); the nodes some corner reached are a bit mask.
+     * append_sums() hands them to the stencil, discard_sums() drops them;
+     * both zero the nodes used (take()), so that the sums are zero between
+     * particles: clearing all of them for each particle became `rep stos`,
+     * whose start-up costs more (3D: 27 nodes at most are zeroed where
+     * clearing all took 64 vectors).
      */
     template <int dim>
-    struct LatticeSums : UsedNodes
+    struct NodeSums : UsedNodes
     {
       static constexpr unsigned int n_nodes   = Utilities::pow(4, dim);
       static constexpr unsigned int n_corners = GridCell<dim>::n_vertices;
-      // The lattice nodes of a cell, relative to its vertex 0.
+
+      NodeSums()
+      {
+        for (unsigned int n = 0; n < n_nodes; ++n)
+          store_lanes(S[n], Lanes4{});
+      }
+
+      /** Node @p n's sums into @p N_n and @p grad_N, and zeroed. */
+      DEAL_II_ALWAYS_INLINE void
+      take(const unsigned int n, double &N_n, Tensor<1, dim> &grad_N)
+      {
+        const Lanes4 sums = load_lanes<Lanes4>(S[n]);
+        N_n               = sums[0];
+        for (unsigned int d = 0; d < dim; ++d)
+          grad_N[d] = sums[1 + d];
+        store_lanes(S[n], Lanes4{});
+      }
+
+    protected:
+      /** Adds lane @p v of the weights @p w times @p scale (1 / n_corners,
+       * g) to the sums at @p s. */
+      DEAL_II_ALWAYS_INLINE static void
+      add_vertex(double            *s,
+                 const unsigned int v,
+                 const Lanes4      &w,
+                 const Lanes4      &scale)
+      {
+        using Index      = long long __attribute__((vector_size(32)));
+        const Lanes4 w_v = __builtin_shuffle(w, Index{v, v, v, v} + Index{});
+        store_lanes(s, load_lanes<Lanes4>(s) + w_v * scale);
+      }
+
+    public:
+      alignas(64) double S[n_nodes][4];
+    };
+
+    /** A corner's weights into its cell's nodes of NodeSums: the 2^dim
+     * weights are products of the corner's 1D factors (those of
+     * q1_values()), each broadcast into its vertex's sums. */
+    template <int dim>
+    struct LatticeSums;
+
+    /** Summed by rows of two along x (three pairs a row) the 2D CPDI
+     * column cost 1,028.0 instructions a particle-step instead of 985.0
+     * (callgrind). */
+    template <>
+    struct LatticeSums<2> : NodeSums<2>
+    {
       static constexpr std::uint64_t cell_nodes = 0x33;
 
       /** The corner at unit-cell point @p xi of the cell whose vertex 0
@@ -230,77 +277,31 @@ namespace dealmpm
       DEAL_II_ALWAYS_INLINE void
       add_corner(const unsigned int base, const Lanes2 &xi, const Lanes2 &g)
       {
-        static_assert(dim == 2, "the rows of two are the 2D sums");
-        using Index         = long long __attribute__((vector_size(16)));
         const Lanes2 one_xi = 1. - xi;
-        const Lanes2 f_x    = __builtin_shuffle(one_xi, xi, Index{0, 2});
-        // (1 - xi_1, 1 - xi_1) and (xi_1, xi_1)
-        const Lanes2 f_y[2] = {__builtin_shuffle(one_xi, Index{1, 1}),
-                               __builtin_shuffle(xi, Index{1, 1})};
-        for (unsigned int b = 0; b < 2; ++b)
-          {
-            const Lanes2 w = f_x * f_y[b];
-            // 1 / n_corners is a power of two: multiplying is dividing.
-            double *const n = N + base + 4 * b;
-            store_lanes(n, load_lanes<Lanes2>(n) + w * (1. / n_corners));
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                double *const g_d = G[d] + base + 4 * b;
-                store_lanes(g_d, load_lanes<Lanes2>(g_d) + w * g[d]);
-              }
-          }
+        // (1 - xi_0, xi_0, 1 - xi_0, xi_0) (1 - xi_1, 1 - xi_1, xi_1, xi_1)
+        const Lanes4 w = __builtin_shufflevector(one_xi, xi, 0, 2, 0, 2) *
+                         __builtin_shufflevector(one_xi, xi, 1, 1, 3, 3);
+        // 1 / n_corners is a power of two: multiplying is dividing.
+        const Lanes2 quarter = {1. / n_corners, 0.};
+        const Lanes4 scale   = __builtin_shufflevector(quarter, g, 0, 2, 3, 1);
+        // The vertices at constant distances from vertex 0's sums (an
+        // index base + a + ... is recomputed for each: unsigned sums).
+        double *const s0 = S[base];
+        for (unsigned int v = 0; v < 4; ++v)
+          add_vertex(s0 + 4 * ((v & 1u) + 4 * (v >> 1)), v, w, scale);
         nodes |= cell_nodes << base;
       }
-
-      LatticeSums()
-      {
-        std::fill(std::begin(N), std::end(N), 0.);
-        for (unsigned int d = 0; d < dim; ++d)
-          std::fill(std::begin(G[d]), std::end(G[d]), 0.);
-      }
-
-      /** Node @p n's sums into @p N_n and @p grad_N, and zeroed. */
-      DEAL_II_ALWAYS_INLINE void
-      take(const unsigned int n, double &N_n, Tensor<1, dim> &grad_N)
-      {
-        N_n  = N[n];
-        N[n] = 0;
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            grad_N[d] = G[d][n];
-            G[d][n]   = 0;
-          }
-      }
-
-      // Aligned to cache lines: the stencil stage of the 2D CPDI column
-      // took 3.5 s instead of 3.9 s (pairs then cross no line).
-      alignas(64) double N[n_nodes];
-      alignas(64) double G[dim][n_nodes];
     };
 
-    /**
-     * The 3D sums by node, (N, G) as one vector of four: a corner's vertex
-     * is one product and one sum of vectors (by rows along x it was four
-     * pairs). The sums stay zero between particles as in 2D: 27 nodes at
-     * most are zeroed where clearing all took 64 vectors.
-     */
+    /** By rows along x (four pairs a row) the 3D sums cost more than by
+     * node. */
     template <>
-    struct LatticeSums<3> : UsedNodes
+    struct LatticeSums<3> : NodeSums<3>
     {
-      static constexpr unsigned int  n_nodes    = 64;
-      static constexpr unsigned int  n_corners  = 8;
       static constexpr std::uint64_t cell_nodes = 0x330033;
 
-      LatticeSums()
-      {
-        for (unsigned int n = 0; n < n_nodes; ++n)
-          store_lanes(S[n], Lanes4{});
-      }
-
       /** As LatticeSums<2>::add_corner(), @p xi and @p g with a fourth
-       * lane. The 8 weights are two vectors, (f_0 f_1) f_2 by vertex (the
-       * products of q1_values()), each handed to its node's sums as a
-       * broadcast lane. */
+       * lane. The 8 weights are two vectors, (f_0 f_1) f_2 by vertex. */
       DEAL_II_ALWAYS_INLINE void
       add_corner(const unsigned int base, const Lanes4 &xi, const Lanes4 &g)
       {
@@ -310,34 +311,17 @@ namespace dealmpm
         const Lanes4 f01 = __builtin_shuffle(one_xi, xi, Index{0, 4, 0, 4}) *
                            __builtin_shuffle(one_xi, xi, Index{1, 1, 5, 5});
         const Lanes4 w[2] = {f01 * one_xi[2], f01 * xi[2]};
-        // 1 / n_corners is a power of two: multiplying is dividing.
         const Lanes4 scale =
           __builtin_shuffle(g, Lanes4{} + 1. / n_corners, Index{4, 0, 1, 2});
-        // The vertices at constant distances from vertex 0's sums (an
-        // index base + a + ... is recomputed for each: unsigned sums).
         double *const s0 = S[base];
         for (unsigned int c = 0; c < 2; ++c)
           for (unsigned int v = 0; v < 4; ++v)
-            {
-              const Lanes4 w_v =
-                __builtin_shuffle(w[c], Index{v, v, v, v} + Index{});
-              double *s = s0 + 4 * ((v & 1u) + 4 * (v >> 1) + 16 * c);
-              store_lanes(s, load_lanes<Lanes4>(s) + w_v * scale);
-            }
+            add_vertex(s0 + 4 * ((v & 1u) + 4 * (v >> 1) + 16 * c),
+                       v,
+                       w[c],
+                       scale);
         nodes |= cell_nodes << base;
       }
-
-      DEAL_II_ALWAYS_INLINE void
-      take(const unsigned int n, double &N_n, Tensor<1, 3> &grad_N)
-      {
-        const Lanes4 sums = load_lanes<Lanes4>(S[n]);
-        N_n               = sums[0];
-        for (unsigned int d = 0; d < 3; ++d)
-          grad_N[d] = sums[1 + d];
-        store_lanes(S[n], Lanes4{});
-      }
-
-      alignas(64) double S[n_nodes][4];
     };
 
     /** Drops the sums of the nodes @p sums used. */
