@@ -5,8 +5,10 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 
+#include "cpdi_within_cell.h"
 #include "node_accumulator.h"
 #include "stencil_entries.h"
 
@@ -492,6 +494,63 @@ namespace dealmpm
       return true;
     }
 
+    /** Lattice node of vertex @p v of a lattice cell from its vertex 0. */
+    constexpr unsigned int
+    lattice_offset(const unsigned int v)
+    {
+      return (v & 1u) + 4 * ((v >> 1) & 1u) + 16 * (v >> 2);
+    }
+
+    /**
+     * Particle k's entries on the lattice @p block of its cell @p own (a
+     * box) when all its domain's corners lie in that cell (to round-off,
+     * as in append_on_lattice()) and its R is invertible; false otherwise.
+     */
+    template <int dim>
+    DEAL_II_ALWAYS_INLINE inline bool
+    append_within_own_cell(const unsigned int   *block,
+                           const GridCell<dim>  &own,
+                           const Point<dim>     &x,
+                           const Tensor<2, dim> &R,
+                           const Tensor<2, dim> &R_inverse_transpose,
+                           const std::size_t     k,
+                           std::size_t          &e,
+                           Stencil<dim>         &stencil)
+    {
+      constexpr unsigned int n_vertices = GridCell<dim>::n_vertices;
+      Point<dim>             xi;
+      Tensor<2, dim>         R_unit;
+      Tensor<1, dim>         K;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          K[d]         = own.inverse_jacobian[d][d];
+          xi[d]        = (x[d] - own.origin[d]) * K[d];
+          R_unit[d]    = R[d] * K[d];
+          double reach = 0;
+          for (unsigned int j = 0; j < dim; ++j)
+            reach += std::abs(R_unit[d][j]);
+          // NaN fails here too.
+          if (!(xi[d] - reach >= -face_tolerance &&
+                xi[d] + reach <= 1. + face_tolerance))
+            return false;
+        }
+      double         N[n_vertices];
+      Tensor<1, dim> grad_N[n_vertices];
+      sums_within_cell<dim>(xi, R_unit, R_inverse_transpose, K, N, grad_N);
+      static constexpr unsigned int own_base =
+        lattice_base_of_side<dim>()[Utilities::pow(3, dim) / 2];
+      stencil.begin[k] = e;
+      make_room_for_entries(stencil, e + n_vertices);
+#pragma GCC unroll 8
+      for (unsigned int v = 0; v < n_vertices; ++v, ++e)
+        {
+          stencil.node[e]   = block[own_base + lattice_offset(v)];
+          stencil.N[e]      = N[v];
+          stencil.grad_N[e] = grad_N[v];
+        }
+      return true;
+    }
+
     template <int dim, bool boxes>
     void
     compute(const BackgroundGrid<dim> &grid,
@@ -520,10 +579,15 @@ namespace dealmpm
             const Point<dim>     x = p.get_location();
             const Tensor<2, dim> R =
               domain_half_edges<dim>(p.get_properties(), f);
+            const bool           invertible = determinant(R) > 0;
             const Tensor<2, dim> R_inverse_transpose =
-              determinant(R) > 0 ? transpose(invert(R)) : Tensor<2, dim>();
+              invertible ? transpose(invert(R)) : Tensor<2, dim>();
             const unsigned int *block =
               boxes && lattice ? lattice->of(i) : nullptr;
+            if (block != nullptr && invertible &&
+                append_within_own_cell(
+                  block, own, x, R, R_inverse_transpose, k, e, stencil))
+              return;
             if (block != nullptr && append_on_lattice(block,
                                                       lattice->cells_present(i),
                                                       own,
