@@ -407,6 +407,35 @@ namespace dealmpm
       return base;
     }
 
+    /** A domain on its cell's lattice, as vectors: the columns of R (x_c
+     * = x + sum_e s_e R e_e), x, and the cell's origin and diagonal inverse
+     * Jacobian K (3D: fourth lanes 0). */
+    template <int dim>
+    struct DomainLanes
+    {
+      using V = typename PointLanes<dim>::type;
+
+      DEAL_II_ALWAYS_INLINE
+      DomainLanes(const GridCell<dim>  &own,
+                  const Point<dim>     &location,
+                  const Tensor<2, dim> &R)
+        : x(lanes_of<dim>(location))
+        , origin(lanes_of<dim>(own.origin))
+        , K{}
+      {
+        for (unsigned int e = 0; e < dim; ++e)
+          {
+            R_column[e] = V{};
+            for (unsigned int d = 0; d < dim; ++d)
+              R_column[e][d] = R[d][e];
+            K[e] = own.inverse_jacobian[e][e];
+          }
+      }
+
+      V R_column[dim];
+      V x, origin, K;
+    };
+
     /**
      * Particle k's entries on the lattice @p block of its cell @p own (an
      * axis-aligned box): each corner's Q1 values in the lattice cell that
@@ -418,36 +447,29 @@ namespace dealmpm
      */
     template <int dim>
     DEAL_II_ALWAYS_INLINE inline bool
-    append_on_lattice(const unsigned int   *block,
-                      const std::uint32_t   present,
-                      const GridCell<dim>  &own,
-                      const Point<dim>     &x,
-                      const Tensor<2, dim> &R,
-                      const Tensor<2, dim> &R_inverse_transpose,
-                      const std::size_t     k,
-                      LatticeSums<dim>     &sums,
-                      std::size_t          &e,
-                      Stencil<dim>         &stencil)
+    append_on_lattice(const unsigned int     *block,
+                      const std::uint32_t     present,
+                      const DomainLanes<dim> &domain,
+                      const Tensor<2, dim>   &R_inverse_transpose,
+                      const std::size_t       k,
+                      LatticeSums<dim>       &sums,
+                      std::size_t            &e,
+                      Stencil<dim>           &stencil)
     {
       using V                          = typename PointLanes<dim>::type;
       using Mask                       = typename PointLanes<dim>::mask;
       constexpr unsigned int n_corners = GridCell<dim>::n_vertices;
       static constexpr auto  base_of   = lattice_base_of_side<dim>();
-      // Columns of R and R^-T: x_c = x + sum_e s_e R e_e, g_c likewise.
-      V       R_column[dim], Q_column[dim], K = {};
-      const V origin = lanes_of<dim>(own.origin);
+      const V(&R_column)[dim]          = domain.R_column;
+      // Columns of R^-T: g_c = sum_e s_e R^-T e_e / 2^dim.
+      V Q_column[dim];
       for (unsigned int e = 0; e < dim; ++e)
         {
-          R_column[e] = V{};
           Q_column[e] = V{};
           for (unsigned int d = 0; d < dim; ++d)
-            {
-              R_column[e][d] = R[d][e];
-              Q_column[e][d] = R_inverse_transpose[d][e];
-            }
-          K[e] = own.inverse_jacobian[e][e];
+            Q_column[e][d] = R_inverse_transpose[d][e];
         }
-      const V x_lanes = lanes_of<dim>(x);
+      const V &K = domain.K, &origin = domain.origin, &x_lanes = domain.x;
       sums.start();
 #pragma GCC unroll 8
       for (unsigned int corner = 0; corner < n_corners; ++corner)
@@ -508,31 +530,40 @@ namespace dealmpm
      */
     template <int dim>
     DEAL_II_ALWAYS_INLINE inline bool
-    append_within_own_cell(const unsigned int   *block,
-                           const GridCell<dim>  &own,
-                           const Point<dim>     &x,
-                           const Tensor<2, dim> &R,
-                           const Tensor<2, dim> &R_inverse_transpose,
-                           const std::size_t     k,
-                           std::size_t          &e,
-                           Stencil<dim>         &stencil)
+    append_within_own_cell(const unsigned int     *block,
+                           const DomainLanes<dim> &domain,
+                           const Tensor<2, dim>   &R,
+                           const Tensor<2, dim>   &R_inverse_transpose,
+                           const std::size_t       k,
+                           std::size_t            &e,
+                           Stencil<dim>           &stencil)
     {
+      using V                           = typename PointLanes<dim>::type;
+      using Mask                        = typename PointLanes<dim>::mask;
       constexpr unsigned int n_vertices = GridCell<dim>::n_vertices;
-      Point<dim>             xi;
-      Tensor<2, dim>         R_unit;
-      Tensor<1, dim>         K;
+      // |v|: v without its sign bits.
+      const auto magnitude = [](const V &v) {
+        return V(Mask(v) & (Mask{} + 0x7fffffffffffffffLL));
+      };
+      const V centre = (domain.x - domain.origin) * domain.K;
+      V       reach  = magnitude(domain.R_column[0]);
+      for (unsigned int j = 1; j < dim; ++j)
+        reach += magnitude(domain.R_column[j]);
+      reach *= domain.K;
+      // NaN fails here too.
+      const Mask inside = (centre - reach >= -face_tolerance) &
+                          (centre + reach <= 1. + face_tolerance);
+      for (unsigned int d = 0; d < dim; ++d)
+        if (!inside[d])
+          return false;
+      Point<dim>     xi;
+      Tensor<2, dim> R_unit;
+      Tensor<1, dim> K;
       for (unsigned int d = 0; d < dim; ++d)
         {
-          K[d]         = own.inverse_jacobian[d][d];
-          xi[d]        = (x[d] - own.origin[d]) * K[d];
-          R_unit[d]    = R[d] * K[d];
-          double reach = 0;
-          for (unsigned int j = 0; j < dim; ++j)
-            reach += std::abs(R_unit[d][j]);
-          // NaN fails here too.
-          if (!(xi[d] - reach >= -face_tolerance &&
-                xi[d] + reach <= 1. + face_tolerance))
-            return false;
+          xi[d]     = centre[d];
+          K[d]      = domain.K[d];
+          R_unit[d] = R[d] * K[d];
         }
       double         N[n_vertices];
       Tensor<1, dim> grad_N[n_vertices];
@@ -584,21 +615,23 @@ namespace dealmpm
               invertible ? transpose(invert(R)) : Tensor<2, dim>();
             const unsigned int *block =
               boxes && lattice ? lattice->of(i) : nullptr;
-            if (block != nullptr && invertible &&
-                append_within_own_cell(
-                  block, own, x, R, R_inverse_transpose, k, e, stencil))
-              return;
-            if (block != nullptr && append_on_lattice(block,
-                                                      lattice->cells_present(i),
-                                                      own,
-                                                      x,
-                                                      R,
-                                                      R_inverse_transpose,
-                                                      k,
-                                                      lattice_sums,
-                                                      e,
-                                                      stencil))
-              return;
+            if (block != nullptr)
+              {
+                const DomainLanes<dim> domain(own, x, R);
+                if (invertible &&
+                    append_within_own_cell(
+                      block, domain, R, R_inverse_transpose, k, e, stencil))
+                  return;
+                if (append_on_lattice(block,
+                                      lattice->cells_present(i),
+                                      domain,
+                                      R_inverse_transpose,
+                                      k,
+                                      lattice_sums,
+                                      e,
+                                      stencil))
+                  return;
+              }
             sums.clear();
             for (unsigned int corner = 0; corner < n_corners; ++corner)
               {
