@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <cstdint>
 
 #include "cpdi_within_cell.h"
@@ -524,9 +523,11 @@ namespace dealmpm
     }
 
     /**
-     * Particle k's entries on the lattice @p block of its cell @p own (a
-     * box) when all its domain's corners lie in that cell (to round-off,
-     * as in append_on_lattice()) and its R is invertible; false otherwise.
+     * Particle k's entries on the lattice @p block of its cell (a box) when
+     * all its domain's corners lie in that cell (to round-off, as in
+     * append_on_lattice()), in closed form; false otherwise. For an
+     * invertible R only (the caller's test): CPDI's gradient is zero where
+     * R is not, and the corner path gives that.
      */
     template <int dim>
     DEAL_II_ALWAYS_INLINE inline bool
